@@ -1,0 +1,17 @@
+// somicage: the editor when started without a command, the headless command line otherwise.
+#include <cstring>
+#include <string>
+
+#include "cli/cli.h"
+#ifdef SOMICAGE_HAVE_EDITOR
+#include "editor/editor.h"
+#endif
+
+int main(int argc, char** argv) {
+  if (argc > 1 && somicage::isCliCommand(argv[1])) return somicage::runCli(argc, argv);
+#ifdef SOMICAGE_HAVE_EDITOR
+  return somicage::runEditor(argc, argv);
+#else
+  return somicage::runCli(argc, argv);  // built without the editor: the CLI explains the commands
+#endif
+}

@@ -1,0 +1,47 @@
+#include "cage.h"
+
+#include <Eigen/Geometry>
+
+#include "errors.h"
+
+namespace somicage {
+
+Cage makePolygonCage(const Eigen::MatrixXd& loop) {
+  SOMICAGE_ASSERT(loop.cols() == 2, "a polygon loop has 2 columns");
+  Cage cage;
+  cage.vertices = loop;
+  const int n = static_cast<int>(loop.rows());
+  cage.faces.resize(n, 2);
+  for (int k = 0; k < n; ++k) cage.faces.row(k) << k, (k + 1) % n;
+  return cage;
+}
+
+// Unnormalised normal: the cross product (3D, twice the area) or the rotated edge (2D, the length).
+static Eigen::VectorXd scaledNormal(const Cage& cage, const Eigen::MatrixXd& V, int j) {
+  if (cage.dim() == 3) {
+    const Eigen::Vector3d v0 = V.row(cage.faces(j, 0)), v1 = V.row(cage.faces(j, 1)), v2 = V.row(cage.faces(j, 2));
+    return (v1 - v0).cross(v2 - v0);
+  }
+  const Eigen::Vector2d e = V.row(cage.faces(j, 1)) - V.row(cage.faces(j, 0));
+  return Eigen::Vector2d(e.y(), -e.x());
+}
+
+Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices) {
+  Eigen::MatrixXd N(cage.numFaces(), cage.dim());
+  for (int j = 0; j < cage.numFaces(); ++j) N.row(j) = scaledNormal(cage, vertices, j).normalized();
+  return N;
+}
+
+Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices) {
+  Eigen::VectorXd A(cage.numFaces());
+  const double scale = cage.dim() == 3 ? 0.5 : 1.0;
+  for (int j = 0; j < cage.numFaces(); ++j) A(j) = scale * scaledNormal(cage, vertices, j).norm();
+  return A;
+}
+
+double cageDiameter(const Eigen::MatrixXd& vertices) {
+  if (vertices.rows() == 0) return 0.0;
+  return (vertices.colwise().maxCoeff() - vertices.colwise().minCoeff()).norm();
+}
+
+}  // namespace somicage

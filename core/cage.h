@@ -1,0 +1,31 @@
+// The cage: a closed triangle mesh in 3D or a simple polygon in 2D.
+#pragma once
+
+#include <Eigen/Core>
+
+namespace somicage {
+
+// vertices: #V by d (d = 2 or 3).
+// faces:    #F by d vertex indices.
+//   3D: triangles, counter-clockwise seen from outside, so (v1-v0)x(v2-v0) points outward.
+//   2D: edges (v_k, v_{k+1}) of a counter-clockwise polygon; the outward edge normal is (e_y, -e_x)/|e|.
+struct Cage {
+  Eigen::MatrixXd vertices;
+  Eigen::MatrixXi faces;
+
+  int dim() const { return static_cast<int>(vertices.cols()); }
+  int numVertices() const { return static_cast<int>(vertices.rows()); }
+  int numFaces() const { return static_cast<int>(faces.rows()); }
+};
+
+// A 2D cage from a polygon given as a counter-clockwise vertex loop (#V by 2).
+Cage makePolygonCage(const Eigen::MatrixXd& loop);
+
+// Unit outward normals of the faces (#F by d), and their areas (3D) or lengths (2D) (#F).
+Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices);
+Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices);
+
+// Largest distance between two cage vertices (bounding-box diagonal, cheap and scale-faithful).
+double cageDiameter(const Eigen::MatrixXd& vertices);
+
+}  // namespace somicage

@@ -1,0 +1,59 @@
+// One interface for every cage deformation method: precompute once from the rest cage and the points,
+// then deform() for every posed cage and parameter set (cheap, called every frame).
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+#include <string>
+
+#include "cage.h"
+#include "progress.h"
+#include "somigliana_coordinates.h"
+
+namespace somicage {
+
+enum class Method { Somigliana, Green, MeanValue };
+
+std::string methodName(Method method);                    // "somigliana", "green", "mvc"
+Method parseMethod(const std::string& name);              // throws InputError on an unknown name
+
+// Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
+struct DeformParams {
+  double blend = 0.0;             // t in [0, 1]: 0 = global variant, 1 = local variant (Fig. 4)
+  double nu = 0.0;                // Poisson ratio in (-1, 0.5), or +-infinity
+  double gamma = 0.0;             // bulging scale >= 0 (section 4.4)
+  bool tractionCorrection = true;  // Eq. 15
+};
+
+// Throws InputError naming the parameter when a value is out of range or NaN.
+void validateDeformParams(const DeformParams& params);
+
+struct PrecomputeOptions {
+  IntegrationOptions integration;  // Somigliana only
+  int threads = 0;                 // 0 = the OpenMP default
+};
+
+class CageDeformer {
+ public:
+  virtual ~CageDeformer() = default;
+
+  virtual Method method() const = 0;
+  virtual int dim() const = 0;
+  virtual int numPoints() const = 0;
+
+  // posedVertices: #V by d, same order as the rest cage. out: #P by d deformed points (resized if needed).
+  virtual void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& out) const = 0;
+
+  Eigen::MatrixXd deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const {
+    Eigen::MatrixXd out;
+    deform(posedVertices, params, out);
+    return out;
+  }
+};
+
+// Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.
+std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
+                                           const PrecomputeOptions& options = {},
+                                           const ProgressCallback& progress = noProgress);
+
+}  // namespace somicage

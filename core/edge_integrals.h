@@ -1,0 +1,28 @@
+// Exact integrals over one straight cage edge of the kernels that 2D Somigliana coordinates need
+// (paper Eqs. 3, 4, 8 with d = 2).
+//
+// Conventions: edge p0 -> p1 of a counter-clockwise polygon, outward unit normal n = (e_y, -e_x)/|e|;
+// query point x; r = y - x, R = |r|; phi_0 = 1 at p0, phi_1 = 1 at p1 (linear hats along the edge).
+#pragma once
+
+#include <Eigen/Core>
+
+namespace somicage {
+
+struct EdgeIntegrals {
+  double S = 0;           // int ln(1/R)
+  Eigen::Matrix2d M;      // int r r^T / R^2 (symmetric)
+  double D[2];            // int phi_k (n.r) / R^2
+  double A[2];            // int phi_k (n_x r_y - n_y r_x) / R^2: the entry (0,1) of int phi_k (n r^T - r n^T)/R^2
+  Eigen::Matrix2d B[2];   // int phi_k (n.r) r r^T / R^4 (symmetric)
+  double angle = 0;       // int h / R^2 with h = n.(x - p0): signed angle subtended by the edge, -pi just inside it
+};
+
+// Closed form, double precision, valid for any x not on the edge.
+void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out);
+
+// Same outputs by composite Gauss-Legendre quadrature (segments x points per segment); for tests and baselines.
+void integrateEdgeGauss(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x,
+                        int segments, int pointsPerSegment, EdgeIntegrals& out);
+
+}  // namespace somicage

@@ -1,0 +1,177 @@
+#include "somigliana_coordinates.h"
+
+#include <omp.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "edge_integrals.h"
+#include "errors.h"
+#include "kelvin_kernels.h"
+#include "triangle_integrals.h"
+#include "triangle_quadrature.h"
+
+namespace somicage {
+
+NuCoefficients nuCoefficients(int dim, double nu) {
+  const double a = kelvinA(dim);
+  if (std::isinf(nu)) return {a, 0.0, a, 0.0};  // docs/method.md: evaluate the limit, never a huge nu
+  return {a * (1 - 2 * nu) / (2 * (1 - nu)), dim * a / (2 * (1 - nu)), a * (3 - 4 * nu) / (4 * (1 - nu)),
+          a / (4 * (1 - nu))};
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Assembly of T_i and K_j n_j from the stored terms
+// ---------------------------------------------------------------------------------------------------------------
+
+Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinate(int p, int i, double nu) const {
+  const NuCoefficients c = nuCoefficients(dim, nu);
+  const double* t = values.row(p).data() + vertexOffset(i);
+  if (dim == 3) {
+    Eigen::Matrix3d A, B;
+    A << 0, -t[3], t[2], t[3], 0, -t[1], -t[2], t[1], 0;  // omega x w
+    B << t[4], t[7], t[8], t[7], t[5], t[9], t[8], t[9], t[6];
+    return c.alpha * (t[0] * Eigen::Matrix3d::Identity() + A) + c.beta * B;
+  }
+  Eigen::Matrix2d A, B;
+  A << 0, t[1], -t[1], 0;
+  B << t[2], t[4], t[4], t[3];
+  return c.alpha * (t[0] * Eigen::Matrix2d::Identity() + A) + c.beta * B;
+}
+
+Eigen::VectorXd SomiglianaCoordinates::faceCoordinateTimesNormal(int p, int j, double nu) const {
+  const NuCoefficients c = nuCoefficients(dim, nu);
+  const double* t = values.row(p).data() + faceOffset(j);
+  const Eigen::Map<const Eigen::VectorXd> q(t + 1, dim);
+  return c.k1 * t[0] * restNormals.row(j).transpose() + c.k2 * q;
+}
+
+Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinateSum(int p, double nu) const {
+  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(dim, dim);
+  for (int i = 0; i < numVertices; ++i) sum += vertexCoordinate(p, i, nu);
+  return sum;
+}
+
+Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
+  Eigen::VectorXd residual(coords.numPoints());
+  const Eigen::MatrixXd I = Eigen::MatrixXd::Identity(coords.dim, coords.dim);
+  for (int p = 0; p < coords.numPoints(); ++p)
+    residual(p) = (coords.vertexCoordinateSum(p, 0.0) - I).cwiseAbs().maxCoeff();
+  return residual;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Integration
+// ---------------------------------------------------------------------------------------------------------------
+
+namespace {
+
+// Adds one triangle's integrals to the row of point x (3D layout, see vertexTermCount).
+void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], int faceOffset,
+                        double* row, double& solidAngleSum) {
+  for (int k = 0; k < 3; ++k) {
+    double* t = row + corners[k] * vertexTermCount(3);
+    const Eigen::Vector3d omega = I.V[k].cross(n);  // (n V^T - V n^T) w = (V x n) x w
+    const Eigen::Matrix3d& B = I.B[k];
+    t[0] += I.D[k];
+    t[1] += omega.x(), t[2] += omega.y(), t[3] += omega.z();
+    t[4] += B(0, 0), t[5] += B(1, 1), t[6] += B(2, 2), t[7] += B(0, 1), t[8] += B(0, 2), t[9] += B(1, 2);
+  }
+  double* f = row + faceOffset;
+  const Eigen::Vector3d q = I.M * n;
+  f[0] += I.S, f[1] += q.x(), f[2] += q.y(), f[3] += q.z();
+  solidAngleSum += I.solidAngle;
+}
+
+void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int ends[2], int faceOffset, double* row,
+                    double& angleSum) {
+  for (int k = 0; k < 2; ++k) {
+    double* t = row + ends[k] * vertexTermCount(2);
+    t[0] += I.D[k];
+    t[1] += I.A[k];
+    t[2] += I.B[k](0, 0), t[3] += I.B[k](1, 1), t[4] += I.B[k](0, 1);
+  }
+  double* f = row + faceOffset;
+  const Eigen::Vector2d q = I.M * n;
+  f[0] += I.S, f[1] += q.x(), f[2] += q.y();
+  angleSum += I.angle;
+}
+
+}  // namespace
+
+SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
+                                                   const IntegrationOptions& options,
+                                                   const ProgressCallback& progress) {
+  const int dim = cage.dim();
+  SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
+  SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");
+  SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
+
+  SomiglianaCoordinates coords;
+  coords.dim = dim;
+  coords.numVertices = cage.numVertices();
+  coords.numFaces = cage.numFaces();
+  coords.restNormals = faceNormals(cage, cage.vertices);
+  const int numPoints = static_cast<int>(points.rows());
+  const int columns = coords.numVertices * vertexTermCount(dim) + coords.numFaces * faceTermCount(dim);
+  coords.values = RowMatrixXd::Zero(numPoints, columns);
+  coords.winding = Eigen::VectorXd::Zero(numPoints);
+
+  std::vector<TriangleFrame> frames;
+  if (dim == 3) {
+    frames.reserve(cage.numFaces());
+    for (int j = 0; j < cage.numFaces(); ++j)
+      frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
+                                         cage.vertices.row(cage.faces(j, 2))));
+  }
+  const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+
+  // Points are processed in blocks so that progress and cancellation are checked on the calling thread.
+  // Every point is integrated independently, so the result does not depend on the thread count.
+  const int blockSize = 256;
+  for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
+    if (!progress(static_cast<double>(blockStart) / std::max(numPoints, 1))) throw Cancelled();
+    const int blockEnd = std::min(numPoints, blockStart + blockSize);
+#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
+    for (int p = blockStart; p < blockEnd; ++p) {
+      double* row = coords.values.row(p).data();
+      double angleSum = 0;
+      if (dim == 3) {
+        const Eigen::Vector3d x = points.row(p);
+        TriangleIntegrals I;
+        for (int j = 0; j < cage.numFaces(); ++j) {
+          if (frames[j].degenerate) continue;
+          const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
+          if (gauss)
+            integrateTriangleGauss(cage.vertices.row(corners[0]), cage.vertices.row(corners[1]),
+                                   cage.vertices.row(corners[2]), x, options.gaussPointsPerSide, I);
+          else
+            integrateTriangle(frames[j], x, I);
+          accumulateTriangle(I, frames[j].n, corners, coords.faceOffset(j), row, angleSum);
+        }
+        coords.winding(p) = -angleSum / (4 * M_PI);
+      } else {
+        const Eigen::Vector2d x = points.row(p);
+        EdgeIntegrals I;
+        for (int j = 0; j < cage.numFaces(); ++j) {
+          const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
+          const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
+          if (p0 == p1) continue;  // zero-length edges contribute nothing
+          if (gauss)
+            integrateEdgeGauss(p0, p1, x, 1, options.gaussPointsPerSide, I);
+          else
+            integrateEdge(p0, p1, x, I);
+          accumulateEdge(I, coords.restNormals.row(j), ends, coords.faceOffset(j), row, angleSum);
+        }
+        coords.winding(p) = -angleSum / (2 * M_PI);
+      }
+    }
+  }
+  progress(1.0);
+  return coords;
+}
+
+}  // namespace somicage

@@ -1,0 +1,73 @@
+// Somigliana coordinates T_i(x), K_j(x) (paper Eq. 8) of a set of points inside a cage, stored as
+// nu-independent integrals so that a change of the Poisson ratio never integrates again (paper section 5).
+//
+// With a = 1/(2^{d-1} pi) and mu = 1 (docs/method.md):
+//   T_i = alpha(nu) (D_i I + A_i) + beta(nu) B_i,        alpha = a(1-2nu)/(2(1-nu)),  beta = d a/(2(1-nu))
+//   K_j n_j = k1(nu) S_j n_j + k2(nu) q_j,                k1 = a(3-4nu)/(4(1-nu)),     k2 = a/(4(1-nu))
+// where, with r = y - x, phi_i the hat of vertex i and psi_j the indicator of face j,
+//   D_i = int phi_i (n.r)/r^d,  A_i = int phi_i (n r^T - r n^T)/r^d,  B_i = int phi_i (n.r) r r^T/r^{d+2},
+//   S_j = int psi_j 1/r (3D) or int psi_j ln(1/r) (2D),  q_j = (int psi_j r r^T/r^d) n_j.
+// nu = +-infinity is the limit alpha = k1 = a, beta = k2 = 0.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "cage.h"
+#include "progress.h"
+
+namespace somicage {
+
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// How the triangle integrals are evaluated (3D). The closed form is exact; Gauss is the paper's baseline.
+struct IntegrationOptions {
+  enum class Rule { ClosedForm, Gauss };
+  Rule rule = Rule::ClosedForm;
+  int gaussPointsPerSide = 50;  // N: 3 N^2 points per triangle (the paper uses N = 50, 7500 points)
+  int threads = 0;              // OpenMP threads; 0 = the OpenMP default
+};
+
+// Per-vertex and per-face term counts in a row of SomiglianaCoordinates::values.
+//   3D vertex (10): D, omega (3) with A w = omega x w, B (xx, yy, zz, xy, xz, yz);  face (4): S, q (3).
+//   2D vertex (5):  D, A01 (A = [[0, A01], [-A01, 0]]), B (xx, yy, xy);             face (3): S, q (2).
+constexpr int vertexTermCount(int dim) { return 1 + dim * dim; }
+constexpr int faceTermCount(int dim) { return 1 + dim; }
+
+struct NuCoefficients {
+  double alpha, beta, k1, k2;
+};
+NuCoefficients nuCoefficients(int dim, double nu);
+
+struct SomiglianaCoordinates {
+  int dim = 3;
+  int numVertices = 0;
+  int numFaces = 0;
+  // #P by (numVertices * vertexTermCount(dim) + numFaces * faceTermCount(dim)); vertex block first.
+  RowMatrixXd values;
+  // Unit outward normals n_j of the rest cage (#F by d), which K_j is applied to.
+  Eigen::MatrixXd restNormals;
+  // Generalised winding number of each point with respect to the cage: 1 inside, 0 outside (#P).
+  Eigen::VectorXd winding;
+
+  int numPoints() const { return static_cast<int>(values.rows()); }
+  int vertexOffset(int i) const { return i * vertexTermCount(dim); }
+  int faceOffset(int j) const { return numVertices * vertexTermCount(dim) + j * faceTermCount(dim); }
+
+  // Eq. 8a at nu: T_i(x_p), d by d.
+  Eigen::MatrixXd vertexCoordinate(int p, int i, double nu) const;
+  // Eq. 8b applied to the rest normal: K_j(x_p) n_j, a d-vector.
+  Eigen::VectorXd faceCoordinateTimesNormal(int p, int j, double nu) const;
+  // sum_i T_i(x_p) at nu; the identity for points strictly inside (Eq. 9).
+  Eigen::MatrixXd vertexCoordinateSum(int p, double nu) const;
+};
+
+// Integrates the coordinates of every point (#P by d) against the cage. Points on the cage are singular.
+// Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.
+SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
+                                                   const IntegrationOptions& options = {},
+                                                   const ProgressCallback& progress = noProgress);
+
+// Partition-of-unity residual of each point: the largest entry of |sum_i T_i(x) - I| at nu = 0 (#P).
+Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords);
+
+}  // namespace somicage
