@@ -1,0 +1,52 @@
+#include "deformer.h"
+
+#include <cmath>
+#include <string>
+
+#include "errors.h"
+#include "green_coordinates.h"
+#include "mean_value_coordinates.h"
+#include "somigliana_deformer.h"
+
+namespace somicage {
+
+std::string methodName(Method method) {
+  switch (method) {
+    case Method::Somigliana: return "somigliana";
+    case Method::Green: return "green";
+    case Method::MeanValue: return "mvc";
+  }
+  return "unknown";
+}
+
+Method parseMethod(const std::string& name) {
+  if (name == "somigliana") return Method::Somigliana;
+  if (name == "green") return Method::Green;
+  if (name == "mvc") return Method::MeanValue;
+  throw InputError("--method", -1, "unknown method '" + name + "'", "use somigliana, green or mvc");
+}
+
+void validateDeformParams(const DeformParams& params) {
+  if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= -1 || params.nu >= 0.5)))
+    throw InputError("nu", -1, "Poisson ratio " + std::to_string(params.nu) + " is out of range",
+                     "use a value in (-1, 0.5), or inf / -inf for the limit");
+  if (!(params.gamma >= 0) || std::isinf(params.gamma))
+    throw InputError("gamma", -1, "bulging scale " + std::to_string(params.gamma) + " is invalid",
+                     "use a finite value >= 0");
+  if (!(params.blend >= 0 && params.blend <= 1))
+    throw InputError("blend", -1, "blend " + std::to_string(params.blend) + " is outside [0, 1]",
+                     "use 0 for the global variant, 1 for the local variant, or a value in between");
+}
+
+std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
+                                           const PrecomputeOptions& options, const ProgressCallback& progress) {
+  switch (method) {
+    case Method::Somigliana: return makeSomiglianaDeformer(restCage, points, options, progress);
+    case Method::Green: return makeGreenDeformer(restCage, points, options, progress);
+    case Method::MeanValue: return makeMeanValueDeformer(restCage, points, options, progress);
+  }
+  SOMICAGE_ASSERT(false, "every method has a factory");
+  return nullptr;
+}
+
+}  // namespace somicage

@@ -1,0 +1,127 @@
+// The corotational Somigliana deformer (Eqs. 10-15): identity at rest and similarity invariance for every variant,
+// nu, gamma and traction setting, in 2D and 3D.
+#include "somigliana_deformer.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "errors.h"
+#include "test_shapes.h"
+
+namespace somicage {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+struct Scene {
+  Cage cage;
+  Eigen::MatrixXd points;
+};
+
+Scene scene3() { return {test::makeBumpySphere(1), test::randomBallPoints(60, 0.6, 9)}; }
+Scene scene2() { return {test::makeStarPolygon(6), test::randomDiscPoints(60, 0.4, 9)}; }
+
+std::vector<DeformParams> parameterGrid() {
+  std::vector<DeformParams> grid;
+  for (double blend : {0.0, 0.5, 1.0})
+    for (double nu : {-0.5, 0.0, 0.3, 0.45, kInf})
+      for (double gamma : {0.0, 2.0})
+        for (bool fix : {true, false}) grid.push_back({blend, nu, gamma, fix});
+  return grid;
+}
+
+std::string describe(const DeformParams& p) {
+  return "blend " + std::to_string(p.blend) + " nu " + std::to_string(p.nu) + " gamma " + std::to_string(p.gamma) +
+         (p.tractionCorrection ? " fix" : " nofix");
+}
+
+class SomiglianaDeformerTest : public ::testing::TestWithParam<int> {
+ protected:
+  Scene scene() const { return GetParam() == 3 ? scene3() : scene2(); }
+};
+
+TEST_P(SomiglianaDeformerTest, RestPoseIsTheIdentity) {
+  // At rest every rotation is I and s_j = c, so Eq. 11 reduces to Eq. 7: round-off, asserted at 1e-8 diameters.
+  const Scene s = scene();
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const double diameter = cageDiameter(s.cage.vertices);
+  for (const DeformParams& params : parameterGrid()) {
+    const Eigen::MatrixXd out = deformer->deform(s.cage.vertices, params);
+    EXPECT_LT((out - s.points).rowwise().norm().maxCoeff(), 1e-8 * diameter) << describe(params);
+  }
+}
+
+TEST_P(SomiglianaDeformerTest, SimilarityInvariance) {
+  // Deforming by (similarity o pose) equals the similarity applied to the deformed pose (section 4.3); 1e-9 of
+  // the posed cage's diameter (the operations are exact up to round-off in the SVDs and the 3 by 3 solves).
+  const Scene s = scene();
+  const int d = s.cage.dim();
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
+  for (unsigned seed : {1u, 2u}) {
+    const test::TestSimilarity similarity = test::randomSimilarity(d, seed);
+    const Eigen::MatrixXd moved = similarity.apply(pose);
+    const double diameter = cageDiameter(moved);
+    for (const DeformParams& params : parameterGrid()) {
+      const Eigen::MatrixXd expected = similarity.apply(deformer->deform(pose, params));
+      const Eigen::MatrixXd actual = deformer->deform(moved, params);
+      EXPECT_LT((actual - expected).rowwise().norm().maxCoeff(), 1e-9 * diameter) << describe(params);
+    }
+  }
+}
+
+TEST_P(SomiglianaDeformerTest, SimilarityPoseMovesPointsBySimilarity) {
+  // A pose that is itself a similarity of the rest cage moves every interior point by that similarity.
+  const Scene s = scene();
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const test::TestSimilarity similarity = test::randomSimilarity(s.cage.dim(), 8);
+  const Eigen::MatrixXd moved = similarity.apply(s.cage.vertices);
+  for (const DeformParams& params : parameterGrid()) {
+    const Eigen::MatrixXd out = deformer->deform(moved, params);
+    EXPECT_LT((out - similarity.apply(s.points)).rowwise().norm().maxCoeff(), 1e-8 * cageDiameter(moved))
+        << describe(params);
+  }
+}
+
+TEST_P(SomiglianaDeformerTest, ParametersChangeTheResult) {
+  // Guards the tests above against a deformer that ignores its parameters: on a real pose, nu, gamma and the
+  // variant each move points by more than 1e-4 diameters.
+  const Scene s = scene();
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
+  const double diameter = cageDiameter(pose);
+  const Eigen::MatrixXd base = deformer->deform(pose, {0.0, 0.0, 0.0, true});
+  auto moved = [&](const DeformParams& p) { return (deformer->deform(pose, p) - base).rowwise().norm().maxCoeff(); };
+  EXPECT_GT(moved({0.0, 0.4, 0.0, true}), 1e-4 * diameter) << "nu";
+  EXPECT_GT(moved({0.0, 0.0, 3.0, true}), 1e-4 * diameter) << "gamma";
+  EXPECT_GT(moved({1.0, 0.0, 0.0, true}), 1e-4 * diameter) << "local variant";
+}
+
+TEST_P(SomiglianaDeformerTest, ResultDoesNotDependOnThreadCount) {
+  const Scene s = scene();
+  PrecomputeOptions one, two;
+  one.threads = 1;
+  two.threads = 2;
+  const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
+  const DeformParams params{0.5, 0.3, 1.0, true};
+  const Eigen::MatrixXd a = makeSomiglianaDeformer(s.cage, s.points, one, noProgress)->deform(pose, params);
+  const Eigen::MatrixXd b = makeSomiglianaDeformer(s.cage, s.points, two, noProgress)->deform(pose, params);
+  EXPECT_TRUE((a.array() == b.array()).all()) << "bitwise equal";
+}
+
+INSTANTIATE_TEST_SUITE_P(Dimensions, SomiglianaDeformerTest, ::testing::Values(2, 3),
+                         [](const auto& info) { return info.param == 3 ? "3D" : "2D"; });
+
+TEST(SomiglianaDeformer, RejectsInvalidParameters) {
+  const Scene s = scene2();
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  for (const DeformParams& bad : {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true},
+                                  DeformParams{0, kNaN, 0, true}, DeformParams{0, 0, -1, true},
+                                  DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true}})
+    EXPECT_THROW(deformer->deform(s.cage.vertices, bad), InputError) << describe(bad);
+}
+
+}  // namespace
+}  // namespace somicage

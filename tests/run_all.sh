@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# Builds everything with warnings as errors and runs every test, then builds the core once more under
+# AddressSanitizer + UndefinedBehaviorSanitizer and runs the core tests again. This is the README's test
+# command and what CI runs.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash third_party/install-deps.sh
+jobs=$(nproc)
+
+echo "== build (Release, -Werror)"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOMICAGE_WERROR=ON >/dev/null
+cmake --build build -j"$jobs"
+echo "== tests"
+ctest --test-dir build --output-on-failure -j"$jobs"
+
+echo "== core tests under ASan + UBSan"
+cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON -DSOMICAGE_SANITIZE=ON \
+  -DSOMICAGE_BUILD_EDITOR=OFF >/dev/null
+cmake --build build-sanitize -j"$jobs" --target somicage_core_tests
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+  ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L core

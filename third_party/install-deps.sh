@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs the Debian packages SomiCage builds and tests with. Idempotent: installs only what is missing.
+# SomiCage vendors no third-party code; everything comes from these packages (the glad loader is generated
+# at build time by python3-glad).
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev libtinyobjloader-dev libgtest-dev  # core and tests
+  libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor
+  xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "install-deps: installing ${missing[*]}" >&2
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root or install sudo" >&2; exit 1; }
+  sudo="sudo"
+fi
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
