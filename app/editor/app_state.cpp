@@ -1,0 +1,348 @@
+#include "app_state.h"
+
+#include <omp.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "errors.h"
+#include "obj_io.h"
+
+namespace somicage::editor {
+
+std::vector<Method> AppState::viewMethods() const {
+  if (compare && compareMethods.size() >= 2) return compareMethods;
+  return {method};
+}
+
+const char* methodDisplayName(Method method) {
+  switch (method) {
+    case Method::Somigliana: return "Somigliana";
+    case Method::Green: return "Green";
+    case Method::MeanValue: return "Mean value";
+  }
+  return "?";
+}
+
+std::string viewLabel(const AppState& state, Method method) {
+  std::string label = methodDisplayName(method);
+  char buf[160];
+  if (method == Method::Somigliana) {
+    const double nu = state.params.nu;
+    char nuText[32];
+    if (std::isinf(nu)) {
+      std::snprintf(nuText, sizeof nuText, "%sinf", nu < 0 ? "-" : "");
+    } else {
+      std::snprintf(nuText, sizeof nuText, "%.2f", nu);
+    }
+    const char* variant = state.params.blend <= 0.0 ? "global" : state.params.blend >= 1.0 ? "local" : "blend";
+    std::snprintf(buf, sizeof buf, "  nu=%s  gamma=%.2f  %s", nuText, state.params.gamma, variant);
+    label += buf;
+    if (variant[0] == 'b') {
+      std::snprintf(buf, sizeof buf, " %.2f", state.params.blend);
+      label += buf;
+    }
+    if (!state.params.tractionCorrection) label += "  no traction fix";
+  }
+  if (!hasDeformer(state, method)) label += "  (precomputing...)";
+  return label;
+}
+
+// ---- scene requests ----
+
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
+  PrecomputeRequest request;
+  request.scene = std::move(scene);
+  request.methods = state.viewMethods();
+  state.loadingScene = true;
+  state.worker.start(std::move(request));
+}
+
+void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
+                       const std::string& posedPath) {
+  PrecomputeRequest request;
+  request.loadScene = [meshPath, cagePath]() { return loadScene(meshPath, cagePath); };
+  request.methods = state.viewMethods();
+  state.loadingScene = true;
+  state.pendingPosedPath = posedPath;
+  state.worker.start(std::move(request));
+}
+
+void requestDemo(AppState& state, int dim) { requestScene(state, std::make_shared<const Scene>(makeDemoScene(dim))); }
+
+bool hasDeformer(const AppState& state, Method method) { return state.deformers.count(method) > 0; }
+
+void ensureDeformers(AppState& state) {
+  if (!state.scene || state.loadingScene) return;
+  std::vector<Method> missing;
+  for (Method m : state.viewMethods()) {
+    if (!hasDeformer(state, m)) missing.push_back(m);
+  }
+  if (missing.empty()) return;
+  PrecomputeRequest request;
+  request.scene = state.scene;
+  request.methods = missing;
+  state.worker.start(std::move(request));
+}
+
+void installOutcome(AppState& state, PrecomputeOutcome outcome) {
+  const bool newScene = outcome.scene && outcome.scene != state.scene;
+  if (newScene) state.loadingScene = false;
+  if (outcome.cancelled) {
+    state.loadingScene = false;
+    state.statusMessage = "precomputation cancelled";
+    return;
+  }
+  if (!outcome.error.empty()) {
+    state.loadingScene = false;
+    state.errors.push_back(outcome.error);
+    return;
+  }
+  if (!outcome.scene) return;
+  state.stats.precomputeSeconds = outcome.seconds;
+  if (newScene) {
+    state.scene = outcome.scene;
+    ++state.sceneGeneration;
+    state.deformers.clear();
+    state.deformed.clear();
+    state.pose = state.scene->restCage.vertices;
+    state.selection.resize(state.scene->restCage.numVertices());
+    state.history.clear();
+    state.interaction = Interaction{};
+    state.camera.setMode2D(state.scene->dim() == 2);
+    frameRest(state);
+    state.frameRequested = !state.pendingCamera.has_value();
+    if (state.pendingCamera) state.camera.setState(*state.pendingCamera);
+    state.pendingCamera.reset();
+    if (state.pendingPose) {
+      if (state.pendingPose->rows() == state.pose.rows() && state.pendingPose->cols() == state.pose.cols()) {
+        state.pose = *state.pendingPose;
+      } else {
+        state.errors.push_back("the saved pose has " + std::to_string(state.pendingPose->rows()) +
+                               " vertices but the cage has " + std::to_string(state.pose.rows()) +
+                               "; the rest pose is shown instead");
+      }
+      state.pendingPose.reset();
+    }
+    if (!state.pendingPosedPath.empty()) {
+      try {
+        state.pose = loadPosedVertices(state.pendingPosedPath, state.scene->restCage);
+      } catch (const std::exception& e) {
+        state.errors.push_back(e.what());
+      }
+      state.pendingPosedPath.clear();
+    }
+    ++state.poseGeneration;
+    state.statusMessage = "loaded " + state.scene->name;
+  }
+  for (auto& [m, d] : outcome.deformers) state.deformers[m] = d;
+  state.deformDirty = true;
+}
+
+bool pollWorker(AppState& state) {
+  std::optional<PrecomputeOutcome> outcome = state.worker.poll();
+  if (!outcome) return false;
+  installOutcome(state, std::move(*outcome));
+  if (!state.worker.busy()) ensureDeformers(state);  // e.g. the views changed while loading
+  return true;
+}
+
+bool updateDeformation(AppState& state) {
+  if (!state.deformDirty || !state.scene) return false;
+  state.deformDirty = false;
+  state.stats.deformThreads = omp_get_max_threads();
+  bool changed = false;
+  const auto t0 = std::chrono::steady_clock::now();
+  for (Method m : state.viewMethods()) {
+    auto it = state.deformers.find(m);
+    if (it == state.deformers.end()) continue;
+    try {
+      it->second->deform(state.pose, state.params, state.deformed[m]);
+      changed = true;
+    } catch (const std::exception& e) {
+      state.errors.push_back(std::string("deformation failed: ") + e.what());
+    }
+  }
+  if (changed) {
+    state.stats.lastDeformMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    ++state.deformGeneration;
+  }
+  return changed;
+}
+
+const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
+  auto it = state.deformed.find(method);
+  if (it != state.deformed.end() && state.scene && it->second.rows() == state.scene->meshVertices.rows() &&
+      hasDeformer(state, method)) {
+    return it->second;
+  }
+  return state.scene->meshVertices;
+}
+
+// ---- edits ----
+
+EditSnapshot snapshot(const AppState& state, const std::string& label) { return {state.pose, state.params, label}; }
+
+void recordEdit(AppState& state, const std::string& label) { state.history.record(snapshot(state, label)); }
+
+void setPose(AppState& state, const Eigen::MatrixXd& pose) {
+  state.pose = pose;
+  ++state.poseGeneration;
+  state.deformDirty = true;
+}
+
+void resetPose(AppState& state) {
+  if (!state.scene) return;
+  recordEdit(state, "Reset pose");
+  setPose(state, state.scene->restCage.vertices);
+}
+
+void setParams(AppState& state, const DeformParams& params) {
+  state.params = params;
+  state.deformDirty = true;
+}
+
+void undo(AppState& state) {
+  if (!state.history.canUndo()) return;
+  const EditSnapshot s = state.history.undo(snapshot(state, ""));
+  state.statusMessage = "undo " + s.label;
+  setPose(state, s.pose);
+  setParams(state, s.params);
+}
+
+void redo(AppState& state) {
+  if (!state.history.canRedo()) return;
+  const EditSnapshot s = state.history.redo(snapshot(state, ""));
+  state.statusMessage = "redo " + state.history.nextUndoLabel();
+  setPose(state, s.pose);
+  setParams(state, s.params);
+}
+
+void setMethod(AppState& state, Method method) {
+  state.method = method;
+  state.deformDirty = true;
+  ensureDeformers(state);
+}
+
+void setCompare(AppState& state, bool on) {
+  state.compare = on;
+  state.deformDirty = true;
+  ensureDeformers(state);
+}
+
+void frameAll(AppState& state) {
+  if (!state.scene) return;
+  Eigen::Vector3d lo, hi, clo, chi;
+  bounds3(displayedPoints(state, state.viewMethods().front()), lo, hi);
+  bounds3(state.pose.rows() > 0 ? state.pose : state.scene->restCage.vertices, clo, chi);
+  state.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.viewAspect);
+}
+
+void frameRest(AppState& state) {
+  if (!state.scene) return;
+  Eigen::Vector3d lo, hi, clo, chi;
+  bounds3(state.scene->meshVertices, lo, hi);
+  bounds3(state.scene->restCage.vertices, clo, chi);
+  state.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.viewAspect);
+}
+
+// ---- sessions and files ----
+
+Session makeSession(const AppState& state) {
+  Session s;
+  if (state.scene) {
+    s.meshPath = state.scene->meshPath;
+    s.cagePath = state.scene->cagePath;
+    s.demoDim = state.scene->dim();
+  }
+  s.pose = state.pose;
+  s.method = state.method;
+  s.params = state.params;
+  s.compare = state.compare;
+  s.compareMethods = state.compareMethods;
+  s.camera = state.camera.state();
+  return s;
+}
+
+void applySession(AppState& state, const Session& s) {
+  state.method = s.method;
+  state.params = s.params;
+  state.compare = s.compare;
+  if (!s.compareMethods.empty()) state.compareMethods = s.compareMethods;
+  const bool sameScene = state.scene && !state.loadingScene && state.scene->meshPath == s.meshPath &&
+                         state.scene->cagePath == s.cagePath && (!s.meshPath.empty() || state.scene->dim() == s.demoDim);
+  if (sameScene) {
+    recordEdit(state, "Load session");
+    if (s.pose.rows() == state.pose.rows() && s.pose.cols() == state.pose.cols()) setPose(state, s.pose);
+    state.camera.setState(s.camera);
+    state.deformDirty = true;
+    ensureDeformers(state);
+    return;
+  }
+  if (s.pose.rows() > 0) state.pendingPose = s.pose;
+  state.pendingCamera = s.camera;
+  if (s.meshPath.empty()) {
+    requestDemo(state, s.demoDim);
+  } else {
+    requestSceneFiles(state, s.meshPath, s.cagePath);
+  }
+}
+
+void savePosedCage(AppState& state, const std::string& path) {
+  if (!state.scene) return;
+  try {
+    Cage posed = state.scene->restCage;
+    posed.vertices = state.pose;
+    saveObj(path, state.pose, cageTopology(posed));
+    state.statusMessage = "saved posed cage " + path;
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+  }
+}
+
+void loadPosedCage(AppState& state, const std::string& path) {
+  if (!state.scene) return;
+  try {
+    const Eigen::MatrixXd pose = loadPosedVertices(path, state.scene->restCage);
+    recordEdit(state, "Load pose");
+    setPose(state, pose);
+    state.statusMessage = "loaded pose " + path;
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+  }
+}
+
+void exportDeformedMesh(AppState& state, const std::string& path) {
+  if (!state.scene) return;
+  try {
+    PolygonMesh topology;
+    const Eigen::MatrixXi& f = state.scene->meshTriangles;
+    topology.faces.reserve(static_cast<std::size_t>(f.rows()));
+    for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
+    saveObj(path, displayedPoints(state, state.method), topology);
+    state.statusMessage = "exported the deformed mesh (" + std::string(methodDisplayName(state.method)) + ") to " + path;
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+  }
+}
+
+void saveSessionFile(AppState& state, const std::string& path) {
+  try {
+    saveSession(path, makeSession(state));
+    state.statusMessage = "saved session " + path;
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+  }
+}
+
+void loadSessionFile(AppState& state, const std::string& path) {
+  try {
+    applySession(state, loadSession(path));
+    state.statusMessage = "opened session " + path;
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+  }
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,160 @@
+// AppState: everything the editor knows, in one place (scene, pose, selection, method and parameters,
+// undo history, camera, precomputed deformers, the worker, statistics, pending errors). No globals, no GL,
+// no ImGui: the panels (panels.h) and the input handler (input.h) are functions of AppState&, and the
+// Renderer (editor_renderer.h) reads it.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "deformer.h"
+#include "history.h"
+#include "precompute_worker.h"
+#include "scene.h"
+#include "selection.h"
+#include "session.h"
+#include "transform.h"
+
+namespace somicage::editor {
+
+// Mouse interaction in the viewports.
+struct Interaction {
+  enum class Mode { Idle, Orbit, Pan, Box, HandleDrag, Modal };
+  Mode mode = Mode::Idle;
+  Eigen::Vector2d pressMouse = Eigen::Vector2d::Zero();  // window pixels
+  Eigen::Vector2d lastMouse = Eigen::Vector2d::Zero();
+  int view = 0;                                          // viewport the interaction started in
+  std::optional<TransformSession> transform;             // Modal (G/R/S) and HandleDrag
+  bool boxAdditive = false;
+};
+
+// The path prompts of the File menu (plain text fields: no native file dialogs).
+struct PathDialog {
+  enum class Kind { None, OpenFiles, LoadPose, SavePose, ExportMesh, SaveSession, LoadSession, Screenshot };
+  Kind kind = Kind::None;
+  bool justOpened = false;
+  std::string mesh, cage, posed;  // OpenFiles
+  std::string path;               // every other kind
+};
+
+struct Stats {
+  double precomputeSeconds = 0.0;
+  double lastDeformMs = 0.0;
+  double fps = 0.0;
+  int deformThreads = 1;
+};
+
+struct AppState {
+  // ---- scene ----
+  std::shared_ptr<const Scene> scene;
+  std::uint64_t sceneGeneration = 0;  // bumps when the scene (topology) changes
+  Eigen::MatrixXd pose;               // #V by d posed cage
+  std::uint64_t poseGeneration = 0;   // bumps when pose or selection changes (cage upload)
+  Selection selection;
+
+  // ---- method and parameters ----
+  Method method = Method::Somigliana;
+  DeformParams params;
+  bool compare = false;
+  std::vector<Method> compareMethods{Method::Somigliana, Method::Green, Method::MeanValue};
+
+  // ---- deformation ----
+  DeformerSet deformers;                         // for `scene`
+  std::map<Method, Eigen::MatrixXd> deformed;    // latest deformed points per method
+  std::uint64_t deformGeneration = 0;            // bumps when `deformed` changes (position upload)
+  bool deformDirty = true;
+
+  // ---- editing ----
+  UndoHistory history;
+  OrbitCamera camera;
+  Interaction interaction;
+
+  // ---- background work ----
+  PrecomputeWorker worker;
+  bool loadingScene = false;                 // the running request replaces the scene
+  std::optional<Eigen::MatrixXd> pendingPose;   // applied when the loading scene arrives
+  std::optional<CameraState> pendingCamera;
+  std::string pendingPosedPath;              // loaded against the new cage when it arrives
+
+  // ---- status and messages ----
+  Stats stats;
+  std::vector<std::string> errors;  // shown one at a time in a modal
+  std::string statusMessage;        // last action ("saved ...")
+  std::string glRenderer;           // for the status bar
+
+  // ---- UI flags and requests handled by the frame loop ----
+  PathDialog dialog;
+  bool hideUi = false;
+  bool showCage = true;
+  bool showMesh = true;
+  int wireframe = -1;  // -1: automatic (on in 2D), 0 off, 1 on
+  std::string screenshotRequest;  // non-empty: write the next frame to this PNG
+  bool quitRequested = false;
+  double viewAspect = 1.6;  // width / height of the first viewport, set by the frame loop
+  bool frameRequested = false;  // frame the rest scene once the viewports are known
+
+  // Methods shown, one per viewport.
+  std::vector<Method> viewMethods() const;
+  int dim() const { return scene ? scene->dim() : 3; }
+};
+
+// ---- controller functions (pure logic, used by the panels, the input handler and tests) ----
+
+// Starts loading/precomputing a new scene on the worker. The current scene stays usable until it arrives.
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene);
+void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
+                       const std::string& posedPath = "");
+void requestDemo(AppState& state, int dim);
+
+// Starts precomputing the deformers the views need but do not have yet (no-op when nothing is missing or a
+// scene is loading).
+void ensureDeformers(AppState& state);
+
+// Takes a finished worker outcome, if any, and installs it. Errors go to state.errors. Returns true when
+// something was installed.
+bool pollWorker(AppState& state);
+// Installs an outcome (also used by the screenshot path after waiting).
+void installOutcome(AppState& state, PrecomputeOutcome outcome);
+
+// Calls deform() for every view whose result is stale. Returns true when positions changed.
+bool updateDeformation(AppState& state);
+
+// The points shown in a view: deformed when available, else the rest mesh.
+const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method);
+bool hasDeformer(const AppState& state, Method method);
+
+// Edits, each recorded for undo.
+EditSnapshot snapshot(const AppState& state, const std::string& label);
+void recordEdit(AppState& state, const std::string& label);  // call before changing pose/params
+void setPose(AppState& state, const Eigen::MatrixXd& pose);  // no history; marks dirty
+void resetPose(AppState& state);                              // recorded
+void undo(AppState& state);
+void redo(AppState& state);
+void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
+void setMethod(AppState& state, Method method);
+void setCompare(AppState& state, bool on);
+
+// Frames the current pose and the displayed mesh (F); frameRest frames the rest cage and mesh.
+void frameAll(AppState& state);
+void frameRest(AppState& state);
+
+// Sessions and files (errors go to state.errors, never thrown).
+Session makeSession(const AppState& state);
+void applySession(AppState& state, const Session& session);
+void savePosedCage(AppState& state, const std::string& path);
+void loadPosedCage(AppState& state, const std::string& path);
+void exportDeformedMesh(AppState& state, const std::string& path);
+void saveSessionFile(AppState& state, const std::string& path);
+void loadSessionFile(AppState& state, const std::string& path);
+
+// "Somigliana  nu=0.30 gamma=1.00 global" etc.
+std::string viewLabel(const AppState& state, Method method);
+const char* methodDisplayName(Method method);
+
+}  // namespace somicage::editor

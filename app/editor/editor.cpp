@@ -1,0 +1,242 @@
+#include "editor.h"
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "app_state.h"
+#include "editor_options.h"
+#include "editor_renderer.h"
+#include "errors.h"
+#include "gl_context.h"
+#include "input.h"
+#include "layout.h"
+#include "panels.h"
+#include "screenshot.h"
+
+namespace somicage {
+
+namespace {
+
+using namespace editor;
+
+void glfwErrorCallback(int code, const char* description) {
+  std::fprintf(stderr, "somicage: GLFW error %d: %s\n", code, description);
+}
+
+// Applies the command-line choices that do not depend on the scene.
+void applyOptions(AppState& state, const EditorOptions& o) {
+  if (o.method) state.method = *o.method;
+  if (o.nu) state.params.nu = *o.nu;
+  if (o.gamma) state.params.gamma = *o.gamma;
+  if (o.blend) state.params.blend = *o.blend;
+  if (o.tractionCorrection) state.params.tractionCorrection = *o.tractionCorrection;
+  if (!o.compare.empty()) {
+    state.compare = true;
+    state.compareMethods = o.compare;
+  }
+  state.hideUi = o.hideUi;
+}
+
+void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) {
+  const std::string title = state.scene ? "SomiCage - " + state.scene->name : "SomiCage";
+  if (title != shown) {
+    glfwSetWindowTitle(window, title.c_str());
+    shown = title;
+  }
+}
+
+// One frame: events, worker results, UI, deformation, drawing, optional screenshot, swap.
+void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title) {
+  glfwPollEvents();
+  pollWorker(state);
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const ImGuiIO& io = ImGui::GetIO();
+
+  const double top = state.hideUi ? 0.0 : menuBarHeight();
+  const double left = state.hideUi ? 0.0 : kPanelWidth;
+  const double bottom = state.hideUi ? 0.0 : statusBarHeight();
+  const std::vector<ViewRect> views =
+      layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
+  state.viewAspect = views.front().width / views.front().height;
+  if (state.frameRequested) {
+    frameRest(state);
+    state.frameRequested = false;
+  }
+  if (!state.hideUi) {
+    drawMainMenu(state);
+    drawControlPanel(state);
+    drawStatusBar(state);
+    drawViewLabels(state, views);
+    drawPathDialog(state);
+  }
+  drawErrorModal(state);
+  handleInput(state, views);
+
+  updateDeformation(state);
+  renderer.sync(state);
+  ImGui::Render();
+
+  int fbWidth = 0, fbHeight = 0;
+  glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
+  const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
+  renderer.draw(state, views, fbWidth, fbHeight, scale);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+
+  if (!state.screenshotRequest.empty()) {
+    const std::string path = state.screenshotRequest;
+    state.screenshotRequest.clear();
+    try {
+      writePng(path, fbWidth, fbHeight, render::readPixelsRgba(fbWidth, fbHeight));
+      state.statusMessage = "saved screenshot " + path;
+    } catch (const std::exception& e) {
+      state.errors.push_back(e.what());
+    }
+  }
+  glfwSwapBuffers(window);
+  updateTitle(window, state, title);
+}
+
+// Waits until the worker has delivered every deformer the views need (or failed).
+bool waitForScene(AppState& state) {
+  for (int round = 0; round < 8; ++round) {
+    std::optional<PrecomputeOutcome> outcome = state.worker.wait();
+    if (outcome) installOutcome(state, std::move(*outcome));
+    if (!state.errors.empty()) return false;
+    if (!state.scene) return false;
+    ensureDeformers(state);
+    if (!state.worker.busy()) return true;
+  }
+  return false;
+}
+
+int runWindow(const EditorOptions& options) {
+  glfwSetErrorCallback(glfwErrorCallback);
+  if (!glfwInit()) {
+    std::fprintf(stderr,
+                 "somicage: cannot open a window (no display?). Run it on a desktop, or headless with\n"
+                 "  xvfb-run -a -s \"-screen 0 1600x900x24\" somicage ...\n"
+                 "For batch work without a window see 'somicage help'.\n");
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "SomiCage", nullptr, nullptr);
+  if (!window) {
+    std::fprintf(stderr, "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
+                         "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  const bool headless = !options.screenshotPath.empty();
+  glfwSwapInterval(headless ? 0 : 1);
+
+  int rc = 0;
+  std::string glRenderer;
+  try {
+    const render::GlInfo info = render::initOpenGl(glfwGetProcAddress);
+    glRenderer = info.renderer + " (OpenGL " + info.version + ")";
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "somicage: %s\n", e.what());
+    glfwDestroyWindow(window);
+    glfwTerminate();
+    return 1;
+  }
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+  ImGui::StyleColorsDark();
+  ImGui::GetStyle().WindowRounding = 0.0f;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+
+  try {
+    // AppState first, Renderer second: the Renderer (GL objects) is destroyed first, while the context lives.
+    AppState state;
+    Renderer renderer;
+    state.glRenderer = glRenderer;
+    applyOptions(state, options);
+    if (!options.sessionPath.empty()) {
+      loadSessionFile(state, options.sessionPath);
+    } else if (!options.meshPath.empty()) {
+      requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
+    } else {
+      requestDemo(state, options.demoDim);
+    }
+    std::string title;
+
+    if (headless) {
+      if (!waitForScene(state)) {
+        for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+        rc = 2;
+      } else {
+        // A few frames let ImGui settle its layout before the capture.
+        for (int i = 0; i < 4; ++i) {
+          if (i == 3) state.screenshotRequest = options.screenshotPath;
+          frame(window, state, renderer, title);
+        }
+        if (!state.errors.empty()) {
+          for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+          rc = 1;
+        } else {
+          std::printf("wrote %s\n", options.screenshotPath.c_str());
+        }
+      }
+    } else {
+      auto last = std::chrono::steady_clock::now();
+      while (!glfwWindowShouldClose(window) && !state.quitRequested) {
+        frame(window, state, renderer, title);
+        const auto now = std::chrono::steady_clock::now();
+        const double dt = std::chrono::duration<double>(now - last).count();
+        last = now;
+        if (dt > 0) state.stats.fps = state.stats.fps > 0 ? 0.9 * state.stats.fps + 0.1 / dt : 1.0 / dt;
+      }
+      state.worker.cancel();
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "somicage: %s\n", e.what());
+    rc = 1;
+  }
+
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return rc;
+}
+
+}  // namespace
+
+int runEditor(int argc, char** argv) {
+  EditorOptions options;
+  try {
+    options = parseEditorArgs(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "somicage: %s\n", e.what());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(editorUsage().c_str(), stdout);
+    return 0;
+  }
+  return runWindow(options);
+}
+
+}  // namespace somicage

@@ -1,0 +1,11 @@
+// The interactive editor (GLFW + OpenGL + ImGui).
+#pragma once
+
+namespace somicage {
+
+// somicage [MESH.obj CAGE.obj [POSED.obj]] [options]: opens the editor (the built-in demo without files),
+// or with --screenshot renders one frame to a PNG and exits. Returns the process exit code: 0 ok,
+// 1 failure (no display, GL too old, precompute failed), 2 bad command line or input files.
+int runEditor(int argc, char** argv);
+
+}  // namespace somicage

@@ -1,0 +1,139 @@
+#include "editor_options.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "errors.h"
+
+namespace somicage::editor {
+
+double parseNumber(const std::string& text, const std::string& option) {
+  if (text == "inf" || text == "+inf" || text == "infinity" || text == "+infinity")
+    return std::numeric_limits<double>::infinity();
+  if (text == "-inf" || text == "-infinity") return -std::numeric_limits<double>::infinity();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || std::isnan(x)) {
+    throw InputError(option, -1, "'" + text + "' is not a number", "write e.g. 0.3, -0.5 or inf");
+  }
+  return x;
+}
+
+EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
+  EditorOptions o;
+  std::vector<std::string> positional;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw InputError(a, -1, "missing value", "see somicage --help");
+      return args[++i];
+    };
+    if (a == "-h" || a == "--help") {
+      o.help = true;
+    } else if (a == "--method") {
+      o.method = parseMethod(value());
+    } else if (a == "--nu") {
+      o.nu = parseNumber(value(), a);
+    } else if (a == "--gamma") {
+      o.gamma = parseNumber(value(), a);
+    } else if (a == "--blend") {
+      o.blend = parseNumber(value(), a);
+    } else if (a == "--local") {
+      o.blend = 1.0;
+    } else if (a == "--global") {
+      o.blend = 0.0;
+    } else if (a == "--traction-fix") {
+      const std::string& v = value();
+      if (v != "on" && v != "off") throw InputError(a, -1, "expected on or off, got '" + v + "'", "--traction-fix on");
+      o.tractionCorrection = v == "on";
+    } else if (a == "--compare") {
+      const std::string list = value();
+      std::size_t start = 0;
+      while (start <= list.size()) {
+        const std::size_t comma = list.find(',', start);
+        const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        try {
+          o.compare.push_back(parseMethod(name));
+        } catch (const InputError&) {
+          throw InputError(a, -1, "unknown method '" + name + "'", "use a comma list of somigliana, green, mvc");
+        }
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+      }
+      if (o.compare.size() < 2 || o.compare.size() > 3)
+        throw InputError(a, -1, "compare needs 2 or 3 methods", "e.g. --compare somigliana,green,mvc");
+    } else if (a == "--screenshot") {
+      o.screenshotPath = value();
+    } else if (a == "--session") {
+      o.sessionPath = value();
+    } else if (a == "--demo") {
+      const std::string& v = value();
+      if (v != "2d" && v != "3d") throw InputError(a, -1, "expected 2d or 3d, got '" + v + "'", "--demo 2d");
+      o.demoDim = v == "2d" ? 2 : 3;
+    } else if (a == "--size") {
+      const std::string& v = value();
+      const std::size_t x = v.find('x');
+      int w = 0, h = 0;
+      if (x != std::string::npos) {
+        w = std::atoi(v.substr(0, x).c_str());
+        h = std::atoi(v.substr(x + 1).c_str());
+      }
+      if (w < 64 || h < 64 || w > 16384 || h > 16384)
+        throw InputError(a, -1, "expected WIDTHxHEIGHT between 64 and 16384, got '" + v + "'", "--size 1600x900");
+      o.width = w;
+      o.height = h;
+    } else if (a == "--hide-ui") {
+      o.hideUi = true;
+    } else if (a.size() > 1 && a[0] == '-') {
+      throw InputError(a, -1, "unknown option", "see somicage --help");
+    } else {
+      positional.push_back(a);
+    }
+  }
+  if (positional.size() == 1 || positional.size() > 3) {
+    throw InputError("command line", -1, "expected MESH CAGE [POSED], got " + std::to_string(positional.size()) + " file(s)",
+                     "give no files for the demo, or a mesh and its cage (and optionally a posed cage)");
+  }
+  if (positional.size() >= 2) {
+    o.meshPath = positional[0];
+    o.cagePath = positional[1];
+  }
+  if (positional.size() == 3) o.posedPath = positional[2];
+  if (o.nu) {
+    DeformParams p;
+    p.nu = *o.nu;
+    try {
+      validateDeformParams(p);
+    } catch (const InputError& e) {
+      throw InputError("--nu", -1, e.problem(), e.hint());
+    }
+  }
+  if (o.gamma && (!(*o.gamma >= 0) || std::isinf(*o.gamma)))
+    throw InputError("--gamma", -1, "must be finite and >= 0", "e.g. --gamma 1");
+  if (o.blend && !(*o.blend >= 0 && *o.blend <= 1))
+    throw InputError("--blend", -1, "must be in [0, 1]", "0 = global variant, 1 = local variant");
+  return o;
+}
+
+std::string editorUsage() {
+  return "usage: somicage [MESH.obj CAGE.obj [POSED.obj]] [options]\n"
+         "       somicage deform|check|bench|help ...   (command line tools, see 'somicage help')\n"
+         "\n"
+         "With no files the built-in demo opens.\n"
+         "  --demo 2d|3d              which demo (default 3d)\n"
+         "  --session FILE.json       open a saved session\n"
+         "  --method NAME             somigliana (default), green or mvc\n"
+         "  --nu X                    Poisson ratio in (-1, 0.5), or inf / -inf\n"
+         "  --gamma X                 bulging scale >= 0\n"
+         "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
+         "  --traction-fix on|off     traction correction (Eq. 15)\n"
+         "  --compare a,b[,c]         side-by-side views, e.g. somigliana,green,mvc\n"
+         "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
+         "  --size WxH                window size (default 1600x900)\n"
+         "  --hide-ui                 viewports only, no panels\n";
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,34 @@
+// The editor's command line: somicage [MESH CAGE [POSED]] [options]. Pure, no GL.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deformer.h"
+
+namespace somicage::editor {
+
+struct EditorOptions {
+  std::string meshPath, cagePath, posedPath;  // empty mesh and cage: the built-in demo
+  std::string sessionPath;                    // --session FILE
+  int demoDim = 3;                            // --demo 2d|3d
+  std::optional<Method> method;               // --method
+  std::optional<double> nu, gamma, blend;     // --nu (inf allowed), --gamma, --blend
+  std::optional<bool> tractionCorrection;     // --traction-fix on|off
+  std::vector<Method> compare;                // --compare a,b[,c]; empty = one view
+  std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
+  int width = 1600, height = 900;             // --size WxH
+  bool hideUi = false;                        // --hide-ui: only the viewports (for clean screenshots)
+  bool help = false;                          // -h / --help
+};
+
+// args excludes the program name. Throws InputError naming the option on a bad value or unknown option.
+EditorOptions parseEditorArgs(const std::vector<std::string>& args);
+
+// "inf", "+inf", "infinity", "-inf" or a number; throws InputError(option, ...) otherwise.
+double parseNumber(const std::string& text, const std::string& option);
+
+std::string editorUsage();
+
+}  // namespace somicage::editor

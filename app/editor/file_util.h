@@ -1,0 +1,16 @@
+// Whole-file reads and atomic writes (temporary file in the same folder, flushed, then renamed over the
+// target), so that a crash or a full disk never leaves a half-written session or screenshot.
+#pragma once
+
+#include <string>
+
+namespace somicage::editor {
+
+// Throws InputError(path, -1, reason, hint) when the file cannot be read.
+std::string readTextFile(const std::string& path);
+
+// Throws InputError with the system's reason; on failure the temporary file is removed and an existing
+// file at `path` is left as it was.
+void writeFileAtomic(const std::string& path, const std::string& bytes);
+
+}  // namespace somicage::editor

@@ -1,0 +1,25 @@
+// The ImGui panels, each a function of AppState& (ImGui 1.86). They only read and edit the state; the frame
+// loop (editor.cpp) acts on the requests they leave in it (screenshots, quitting).
+#pragma once
+
+#include <vector>
+
+#include "app_state.h"
+#include "layout.h"
+
+namespace somicage::editor {
+
+constexpr double kPanelWidth = 340.0;
+
+// Heights in pixels of the main menu bar and the status bar (valid inside a frame).
+double menuBarHeight();
+double statusBarHeight();
+
+void drawMainMenu(AppState& state);
+void drawControlPanel(AppState& state);
+void drawStatusBar(AppState& state);
+void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views);
+void drawPathDialog(AppState& state);
+void drawErrorModal(AppState& state);
+
+}  // namespace somicage::editor

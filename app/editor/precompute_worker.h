@@ -1,0 +1,71 @@
+// Runs scene loading and makeDeformer() on a worker thread, with progress and cancellation, so the UI stays
+// responsive and keeps showing the old scene until the new one is ready. No GL.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "deformer.h"
+#include "scene.h"
+
+namespace somicage::editor {
+
+using DeformerSet = std::map<Method, std::shared_ptr<const CageDeformer>>;
+
+struct PrecomputeRequest {
+  // Either a ready scene, or a loader run on the worker (file loading can take a while too).
+  std::shared_ptr<const Scene> scene;
+  std::function<Scene()> loadScene;
+  std::vector<Method> methods;  // deformers to build, in this order
+  PrecomputeOptions options;
+};
+
+struct PrecomputeOutcome {
+  std::uint64_t id = 0;                // as returned by start()
+  std::shared_ptr<const Scene> scene;  // the scene the deformers belong to (null if loading failed)
+  DeformerSet deformers;
+  double seconds = 0.0;                // wall time of the whole request
+  bool cancelled = false;
+  std::string error;                   // non-empty on failure (InputError text, bad_alloc, ...)
+};
+
+class PrecomputeWorker {
+ public:
+  PrecomputeWorker() = default;
+  ~PrecomputeWorker();  // cancels and joins
+  PrecomputeWorker(const PrecomputeWorker&) = delete;
+  PrecomputeWorker& operator=(const PrecomputeWorker&) = delete;
+
+  // Cancels (and joins) any running request, then starts this one. Returns its id.
+  std::uint64_t start(PrecomputeRequest request);
+  void cancel();                 // asks the running request to stop; it finishes with cancelled = true
+  bool busy() const { return busy_.load(); }
+  double progress() const { return progress_.load(); }  // 0..1 over all methods of the request
+  std::string stage() const;     // e.g. "Loading files", "Somigliana 2/3"
+  // The outcome of the last finished request, once; empty while running or when already taken.
+  std::optional<PrecomputeOutcome> poll();
+  // Blocks until the running request finishes and returns its outcome (empty when nothing ran).
+  std::optional<PrecomputeOutcome> wait();
+
+ private:
+  void run(PrecomputeRequest request, std::uint64_t id);
+  void setStage(std::string s);
+
+  std::thread thread_;
+  std::atomic<bool> busy_{false}, cancel_{false};
+  std::atomic<double> progress_{0.0};
+  mutable std::mutex mutex_;
+  std::string stage_;
+  std::optional<PrecomputeOutcome> outcome_;
+  std::uint64_t nextId_ = 1;
+};
+
+}  // namespace somicage::editor

@@ -1,0 +1,157 @@
+#include "scene.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <vector>
+
+#include "obj_io.h"
+
+namespace somicage::editor {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// ---- 3D demo: capped cylinder along x inside a segmented box ----
+Scene demo3D() {
+  const int around = 48, along = 96;
+  const double halfLength = 2.0, radius = 0.5;
+  const int ringCount = along + 1;
+  Eigen::MatrixXd v(ringCount * around + 2, 3);
+  for (int i = 0; i < ringCount; ++i) {
+    const double x = -halfLength + 2.0 * halfLength * i / along;
+    for (int j = 0; j < around; ++j) {
+      const double t = 2.0 * kPi * j / around;
+      v.row(i * around + j) << x, radius * std::cos(t), radius * std::sin(t);
+    }
+  }
+  const int capLeft = ringCount * around, capRight = capLeft + 1;
+  v.row(capLeft) << -halfLength, 0, 0;
+  v.row(capRight) << halfLength, 0, 0;
+  std::vector<Eigen::Vector3i> tris;
+  for (int i = 0; i < along; ++i) {
+    for (int j = 0; j < around; ++j) {
+      const int a = i * around + j, b = i * around + (j + 1) % around;
+      const int c = a + around, d = b + around;
+      tris.emplace_back(a, d, c);
+      tris.emplace_back(a, b, d);
+    }
+  }
+  for (int j = 0; j < around; ++j) {
+    const int jn = (j + 1) % around;
+    tris.emplace_back(capLeft, jn, j);
+    tris.emplace_back(capRight, along * around + j, along * around + jn);
+  }
+  Scene s;
+  s.name = "demo (3D bar)";
+  s.meshVertices = v;
+  s.meshTriangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
+  for (std::size_t f = 0; f < tris.size(); ++f) s.meshTriangles.row(static_cast<Eigen::Index>(f)) = tris[f].transpose();
+  orientOutward(s.meshVertices, s.meshTriangles);
+
+  // Cage: square rings of 4 corners at 5 stations along x.
+  const int stations = 5;
+  const double cx = 2.35, cy = 0.75;
+  Eigen::MatrixXd cv(stations * 4, 3);
+  const double corners[4][2] = {{-cy, -cy}, {cy, -cy}, {cy, cy}, {-cy, cy}};
+  for (int k = 0; k < stations; ++k) {
+    const double x = -cx + 2.0 * cx * k / (stations - 1);
+    for (int c = 0; c < 4; ++c) cv.row(k * 4 + c) << x, corners[c][0], corners[c][1];
+  }
+  std::vector<Eigen::Vector3i> cf;
+  for (int k = 0; k + 1 < stations; ++k) {
+    for (int c = 0; c < 4; ++c) {
+      const int a = k * 4 + c, b = k * 4 + (c + 1) % 4, e = a + 4, d = b + 4;
+      cf.emplace_back(a, b, d);
+      cf.emplace_back(a, d, e);
+    }
+  }
+  const int last = (stations - 1) * 4;
+  cf.emplace_back(0, 2, 1);
+  cf.emplace_back(0, 3, 2);
+  cf.emplace_back(last + 0, last + 1, last + 2);
+  cf.emplace_back(last + 0, last + 2, last + 3);
+  s.restCage.vertices = cv;
+  s.restCage.faces.resize(static_cast<Eigen::Index>(cf.size()), 3);
+  for (std::size_t f = 0; f < cf.size(); ++f) s.restCage.faces.row(static_cast<Eigen::Index>(f)) = cf[f].transpose();
+  orientOutward(s.restCage.vertices, s.restCage.faces);
+  return s;
+}
+
+// ---- 2D demo: a dense strip inside a polygon ----
+Scene demo2D() {
+  const int nx = 96, ny = 24;
+  const double hx = 2.0, hy = 0.5;
+  Eigen::MatrixXd v((nx + 1) * (ny + 1), 2);
+  for (int j = 0; j <= ny; ++j) {
+    for (int i = 0; i <= nx; ++i) v.row(j * (nx + 1) + i) << -hx + 2 * hx * i / nx, -hy + 2 * hy * j / ny;
+  }
+  Eigen::MatrixXi f(2 * nx * ny, 3);
+  int k = 0;
+  for (int j = 0; j < ny; ++j) {
+    for (int i = 0; i < nx; ++i) {
+      const int a = j * (nx + 1) + i, b = a + 1, c = a + nx + 1, d = c + 1;
+      f.row(k++) << a, b, d;
+      f.row(k++) << a, d, c;
+    }
+  }
+  Scene s;
+  s.name = "demo (2D strip)";
+  s.meshVertices = v;
+  s.meshTriangles = f;
+  const int perSide = 5;
+  const double cx = 2.3, cy = 0.8;
+  Eigen::MatrixXd loop(2 * perSide, 2);
+  for (int i = 0; i < perSide; ++i) {
+    const double x = -cx + 2 * cx * i / (perSide - 1);
+    loop.row(i) << x, -cy;                 // bottom, left to right
+    loop.row(2 * perSide - 1 - i) << x, cy;  // top, right to left
+  }
+  s.restCage = makePolygonCage(loop);
+  return s;
+}
+
+}  // namespace
+
+double signedVolume(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles) {
+  double volume = 0.0;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const Eigen::Vector3d a = vertices.row(triangles(f, 0)).transpose();
+    const Eigen::Vector3d b = vertices.row(triangles(f, 1)).transpose();
+    const Eigen::Vector3d c = vertices.row(triangles(f, 2)).transpose();
+    volume += a.dot(b.cross(c)) / 6.0;
+  }
+  return volume;
+}
+
+void orientOutward(const Eigen::MatrixXd& vertices, Eigen::MatrixXi& triangles) {
+  if (vertices.cols() != 3 || triangles.cols() != 3) return;
+  if (signedVolume(vertices, triangles) < 0) triangles.col(1).swap(triangles.col(2));
+}
+
+Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
+
+Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
+  Scene s;
+  s.restCage = loadCage(cagePath);
+  const PolygonMesh mesh = loadMesh(meshPath);
+  s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
+  s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());
+  s.meshPath = meshPath;
+  s.cagePath = cagePath;
+  const std::size_t slash = meshPath.find_last_of('/');
+  s.name = slash == std::string::npos ? meshPath : meshPath.substr(slash + 1);
+  return s;
+}
+
+void bounds3(const Eigen::MatrixXd& points, Eigen::Vector3d& lo, Eigen::Vector3d& hi) {
+  lo.setZero();
+  hi.setZero();
+  if (points.rows() == 0) return;
+  for (Eigen::Index c = 0; c < std::min<Eigen::Index>(points.cols(), 3); ++c) {
+    lo[c] = points.col(c).minCoeff();
+    hi[c] = points.col(c).maxCoeff();
+  }
+}
+
+}  // namespace somicage::editor

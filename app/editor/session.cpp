@@ -1,0 +1,168 @@
+#include "session.h"
+
+#include <cmath>
+#include <limits>
+
+#include "errors.h"
+#include "file_util.h"
+#include "json.h"
+
+namespace somicage::editor {
+
+namespace {
+
+JsonValue numberOrInfinity(double x) {
+  if (std::isinf(x)) return JsonValue::string(x > 0 ? "inf" : "-inf");
+  return JsonValue::number(x);
+}
+
+JsonValue vec3(const Eigen::Vector3d& v) {
+  JsonValue a = JsonValue::array();
+  for (int i = 0; i < 3; ++i) a.push(JsonValue::number(v[i]));
+  return a;
+}
+
+struct Reader {
+  const std::string& source;
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw InputError(source, -1, what, "fix the session file, or save it again from the editor");
+  }
+  const JsonValue& get(const JsonValue& obj, const std::string& key) const {
+    const JsonValue* v = obj.find(key);
+    if (!v) fail("missing field \"" + key + "\"");
+    return *v;
+  }
+  double number(const JsonValue& obj, const std::string& key) const {
+    const JsonValue& v = get(obj, key);
+    if (v.isString()) {
+      if (v.asString() == "inf") return std::numeric_limits<double>::infinity();
+      if (v.asString() == "-inf") return -std::numeric_limits<double>::infinity();
+    }
+    if (!v.isNumber()) fail("field \"" + key + "\" must be a number");
+    return v.asNumber();
+  }
+  bool boolean(const JsonValue& obj, const std::string& key) const {
+    const JsonValue& v = get(obj, key);
+    if (v.type() != JsonValue::Type::Bool) fail("field \"" + key + "\" must be true or false");
+    return v.asBool();
+  }
+  std::string string(const JsonValue& obj, const std::string& key) const {
+    const JsonValue& v = get(obj, key);
+    if (!v.isString()) fail("field \"" + key + "\" must be a string");
+    return v.asString();
+  }
+  Method method(const std::string& name) const {
+    try {
+      return parseMethod(name);
+    } catch (const InputError&) {
+      fail("unknown method \"" + name + "\" (expected somigliana, green or mvc)");
+    }
+  }
+  Eigen::Vector3d vec3(const JsonValue& obj, const std::string& key) const {
+    const JsonValue& v = get(obj, key);
+    if (!v.isArray() || v.items().size() != 3) fail("field \"" + key + "\" must be an array of 3 numbers");
+    Eigen::Vector3d out;
+    for (int i = 0; i < 3; ++i) {
+      if (!v.items()[static_cast<std::size_t>(i)].isNumber()) fail("field \"" + key + "\" must hold numbers");
+      out[i] = v.items()[static_cast<std::size_t>(i)].asNumber();
+    }
+    return out;
+  }
+};
+
+}  // namespace
+
+std::string sessionToJson(const Session& s) {
+  JsonValue root = JsonValue::object();
+  root.set("format", JsonValue::string("somicage-session"));
+  root.set("version", JsonValue::number(1));
+  root.set("mesh", JsonValue::string(s.meshPath));
+  root.set("cage", JsonValue::string(s.cagePath));
+  root.set("demoDim", JsonValue::number(s.demoDim));
+  JsonValue pose = JsonValue::array();
+  for (Eigen::Index i = 0; i < s.pose.rows(); ++i) {
+    JsonValue row = JsonValue::array();
+    for (Eigen::Index c = 0; c < s.pose.cols(); ++c) row.push(JsonValue::number(s.pose(i, c)));
+    pose.push(std::move(row));
+  }
+  root.set("pose", std::move(pose));
+  root.set("method", JsonValue::string(methodName(s.method)));
+  JsonValue params = JsonValue::object();
+  params.set("blend", JsonValue::number(s.params.blend));
+  params.set("nu", numberOrInfinity(s.params.nu));
+  params.set("gamma", JsonValue::number(s.params.gamma));
+  params.set("tractionCorrection", JsonValue::boolean(s.params.tractionCorrection));
+  root.set("params", std::move(params));
+  root.set("compare", JsonValue::boolean(s.compare));
+  JsonValue methods = JsonValue::array();
+  for (Method m : s.compareMethods) methods.push(JsonValue::string(methodName(m)));
+  root.set("compareMethods", std::move(methods));
+  JsonValue camera = JsonValue::object();
+  camera.set("target", vec3(s.camera.target));
+  camera.set("distance", JsonValue::number(s.camera.distance));
+  camera.set("yaw", JsonValue::number(s.camera.yaw));
+  camera.set("pitch", JsonValue::number(s.camera.pitch));
+  root.set("camera", std::move(camera));
+  return root.dump(2);
+}
+
+Session sessionFromJson(const std::string& text, const std::string& source) {
+  const JsonValue root = parseJson(text, source);
+  const Reader r{source};
+  if (!root.isObject()) r.fail("a session file must hold a JSON object");
+  if (r.string(root, "format") != "somicage-session") r.fail("not a SomiCage session (\"format\" differs)");
+  if (r.number(root, "version") != 1) r.fail("unsupported session version (this build reads version 1)");
+  Session s;
+  s.meshPath = r.string(root, "mesh");
+  s.cagePath = r.string(root, "cage");
+  s.demoDim = static_cast<int>(r.number(root, "demoDim"));
+  if (s.demoDim != 2 && s.demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
+  const JsonValue& pose = r.get(root, "pose");
+  if (!pose.isArray()) r.fail("\"pose\" must be an array of rows");
+  if (!pose.items().empty()) {
+    const std::size_t cols = pose.items()[0].items().size();
+    if (cols != 2 && cols != 3) r.fail("\"pose\" rows must have 2 or 3 numbers");
+    s.pose.resize(static_cast<Eigen::Index>(pose.items().size()), static_cast<Eigen::Index>(cols));
+    for (std::size_t i = 0; i < pose.items().size(); ++i) {
+      const JsonValue& row = pose.items()[i];
+      if (!row.isArray() || row.items().size() != cols) r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
+      for (std::size_t c = 0; c < cols; ++c) {
+        if (!row.items()[c].isNumber()) r.fail("\"pose\" row " + std::to_string(i) + " holds a non-number");
+        s.pose(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = row.items()[c].asNumber();
+      }
+    }
+  }
+  s.method = r.method(r.string(root, "method"));
+  const JsonValue& params = r.get(root, "params");
+  s.params.blend = r.number(params, "blend");
+  s.params.nu = r.number(params, "nu");
+  s.params.gamma = r.number(params, "gamma");
+  s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
+  try {
+    validateDeformParams(s.params);
+  } catch (const InputError& e) {
+    r.fail(std::string("bad parameters: ") + e.what());
+  }
+  s.compare = r.boolean(root, "compare");
+  const JsonValue& methods = r.get(root, "compareMethods");
+  if (!methods.isArray()) r.fail("\"compareMethods\" must be an array of method names");
+  s.compareMethods.clear();
+  for (const JsonValue& m : methods.items()) {
+    if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
+    s.compareMethods.push_back(r.method(m.asString()));
+  }
+  const JsonValue& camera = r.get(root, "camera");
+  s.camera.target = r.vec3(camera, "target");
+  s.camera.distance = r.number(camera, "distance");
+  s.camera.yaw = r.number(camera, "yaw");
+  s.camera.pitch = r.number(camera, "pitch");
+  if (!(s.camera.distance > 0) || !std::isfinite(s.camera.distance)) r.fail("camera \"distance\" must be positive");
+  return s;
+}
+
+void saveSession(const std::string& path, const Session& session) { writeFileAtomic(path, sessionToJson(session)); }
+
+Session loadSession(const std::string& path) { return sessionFromJson(readTextFile(path), path); }
+
+}  // namespace somicage::editor

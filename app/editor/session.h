@@ -1,0 +1,33 @@
+// A saved editing session (JSON): which files, the cage pose, the method and its parameters, the view.
+// Pure, no GL.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "camera.h"
+#include "deformer.h"
+
+namespace somicage::editor {
+
+struct Session {
+  std::string meshPath, cagePath;  // both empty: the built-in demo of dimension demoDim
+  int demoDim = 3;
+  Eigen::MatrixXd pose;            // #V by d posed cage vertices; empty = the rest pose
+  Method method = Method::Somigliana;
+  DeformParams params;
+  bool compare = false;
+  std::vector<Method> compareMethods{Method::Somigliana, Method::Green, Method::MeanValue};
+  CameraState camera;
+};
+
+// JSON text with "format": "somicage-session", "version": 1. nu = +-infinity is written as "inf" / "-inf".
+std::string sessionToJson(const Session& session);
+// Throws InputError naming `source` on a syntax error, a missing or mistyped field, or an unknown method.
+Session sessionFromJson(const std::string& text, const std::string& source);
+
+void saveSession(const std::string& path, const Session& session);  // atomic
+Session loadSession(const std::string& path);
+
+}  // namespace somicage::editor

@@ -1,0 +1,165 @@
+#include "transform.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <cstdio>
+
+namespace somicage::editor {
+
+namespace {
+
+Eigen::Vector3d axisVector(Axis axis) {
+  switch (axis) {
+    case Axis::X: return Eigen::Vector3d::UnitX();
+    case Axis::Y: return Eigen::Vector3d::UnitY();
+    case Axis::Z: return Eigen::Vector3d::UnitZ();
+    case Axis::None: break;
+  }
+  return Eigen::Vector3d::Zero();
+}
+
+Eigen::Vector3d row3(const Eigen::MatrixXd& m, Eigen::Index i) {
+  Eigen::Vector3d p = Eigen::Vector3d::Zero();
+  for (Eigen::Index c = 0; c < std::min<Eigen::Index>(m.cols(), 3); ++c) p[c] = m(i, c);
+  return p;
+}
+
+Axis effectiveAxis(const TransformSession& s) {
+  return (s.original.cols() == 2 && s.axis == Axis::Z) ? Axis::None : s.axis;
+}
+
+Eigen::Vector2d pivotOnScreen(const TransformSession& s, const OrbitCamera& camera) {
+  Eigen::Vector2d p = 0.5 * s.viewportSize;
+  camera.project(s.pivot, s.viewportSize.x(), s.viewportSize.y(), p);
+  return p;
+}
+
+// World translation for a grab.
+Eigen::Vector3d grabTranslation(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+  const Eigen::Vector2d delta = mouse - s.startMouse;
+  const double wpp = camera.worldPerPixel(s.pivot, s.viewportSize.y());
+  const Eigen::Vector3d free = (delta.x() * camera.right() - delta.y() * camera.up()) * wpp;
+  const Axis axis = effectiveAxis(s);
+  if (axis == Axis::None) return free;
+  // Constrained: move along the axis by the mouse motion projected on the axis' screen direction.
+  const Eigen::Vector3d a = axisVector(axis);
+  const Eigen::Vector2d screenAxis(a.dot(camera.right()), -a.dot(camera.up()));  // pixels per (world / wpp)
+  const double len2 = screenAxis.squaredNorm();
+  if (len2 < 1e-4) return a * a.dot(free);  // axis points at the eye: fall back to the view-plane component
+  return a * (delta.dot(screenAxis) / len2 * wpp);
+}
+
+double rotationAngle(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+  const Eigen::Vector2d c = pivotOnScreen(s, camera);
+  return screenAngle(s.startMouse - c, mouse - c);
+}
+
+double scaleFactor(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+  const Eigen::Vector2d c = pivotOnScreen(s, camera);
+  const double r0 = (s.startMouse - c).norm();
+  return r0 < 1e-9 ? 1.0 : (mouse - c).norm() / r0;
+}
+
+}  // namespace
+
+const char* transformName(TransformKind kind) {
+  switch (kind) {
+    case TransformKind::Grab: return "Grab";
+    case TransformKind::Rotate: return "Rotate";
+    case TransformKind::Scale: return "Scale";
+  }
+  return "?";
+}
+
+const char* axisName(Axis axis) {
+  switch (axis) {
+    case Axis::X: return "X";
+    case Axis::Y: return "Y";
+    case Axis::Z: return "Z";
+    case Axis::None: break;
+  }
+  return "";
+}
+
+double screenAngle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  // Flip y so that counter-clockwise on screen is positive.
+  const double cross = a.x() * (-b.y()) - (-a.y()) * b.x();
+  const double dot = a.dot(b);
+  return std::atan2(cross, dot);
+}
+
+TransformSession beginTransform(TransformKind kind, const std::vector<int>& indices, const Eigen::MatrixXd& positions,
+                                const Eigen::Vector2d& mouse, const Eigen::Vector2d& viewportSize) {
+  TransformSession s;
+  s.kind = kind;
+  s.indices = indices;
+  s.original = positions;
+  s.startMouse = mouse;
+  s.viewportSize = viewportSize;
+  s.pivot.setZero();
+  for (int i : indices) s.pivot += row3(positions, i);
+  if (!indices.empty()) s.pivot /= static_cast<double>(indices.size());
+  return s;
+}
+
+Eigen::MatrixXd applyTransform(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+  Eigen::MatrixXd out = s.original;
+  const int dim = static_cast<int>(s.original.cols());
+  const Axis axis = effectiveAxis(s);
+  Eigen::Matrix3d linear = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  switch (s.kind) {
+    case TransformKind::Grab:
+      translation = grabTranslation(s, camera, mouse);
+      break;
+    case TransformKind::Rotate: {
+      const double angle = rotationAngle(s, camera, mouse);
+      const Eigen::Vector3d toViewer = -camera.forward();
+      Eigen::Vector3d a = (dim == 2) ? Eigen::Vector3d::UnitZ() : (axis == Axis::None ? toViewer : axisVector(axis));
+      // Counter-clockwise on screen is a positive rotation about the axis pointing at the viewer.
+      if (a.dot(toViewer) < 0) a = -a;
+      linear = Eigen::AngleAxisd(angle, a).toRotationMatrix();
+      break;
+    }
+    case TransformKind::Scale: {
+      const double f = scaleFactor(s, camera, mouse);
+      if (axis == Axis::None) {
+        linear = f * Eigen::Matrix3d::Identity();
+      } else {
+        const Eigen::Vector3d a = axisVector(axis);
+        linear += (f - 1.0) * a * a.transpose();
+      }
+      if (dim == 2) linear(2, 2) = 1.0;
+      break;
+    }
+  }
+  for (int i : s.indices) {
+    if (i < 0 || i >= out.rows()) continue;
+    const Eigen::Vector3d p = s.pivot + linear * (row3(s.original, i) - s.pivot) + translation;
+    for (int c = 0; c < dim; ++c) out(i, c) = p[c];
+  }
+  return out;
+}
+
+std::string describeTransform(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+  char buf[160];
+  const Axis axis = effectiveAxis(s);
+  const char* sep = axis == Axis::None ? "" : " ";
+  switch (s.kind) {
+    case TransformKind::Grab: {
+      const Eigen::Vector3d t = grabTranslation(s, camera, mouse);
+      std::snprintf(buf, sizeof buf, "Grab%s%s: (%.4g, %.4g, %.4g)", sep, axisName(axis), t.x(), t.y(), t.z());
+      break;
+    }
+    case TransformKind::Rotate:
+      std::snprintf(buf, sizeof buf, "Rotate%s%s: %.1f deg", sep, axisName(axis),
+                    rotationAngle(s, camera, mouse) * 180.0 / 3.14159265358979323846);
+      break;
+    case TransformKind::Scale:
+      std::snprintf(buf, sizeof buf, "Scale%s%s: %.3f", sep, axisName(axis), scaleFactor(s, camera, mouse));
+      break;
+  }
+  return std::string(buf) + "   [X/Y/Z constrain, Enter/left-click confirm, Esc/right-click cancel]";
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,87 @@
+#include "mesh_renderer.h"
+
+#include <stdexcept>
+
+#include "gl_objects.h"
+#include "mesh_normals.h"
+
+namespace somicage::render {
+
+struct MeshRenderer::Impl {
+  GlProgram program{"mesh.vert", "mesh.frag"};
+  GlProgram wire{"flat.vert", "flat.frag"};
+  GlVertexArray vao;
+  GlBuffer positions, normals, indices;
+  Eigen::MatrixXi triangles;
+  int vertexCount = 0;
+  GLsizei indexCount = 0;
+};
+
+MeshRenderer::MeshRenderer() : impl_(std::make_unique<Impl>()) {
+  impl_->vao.setFloatAttribute(0, impl_->positions, 3);
+  impl_->vao.setFloatAttribute(1, impl_->normals, 3);
+}
+MeshRenderer::~MeshRenderer() = default;
+MeshRenderer::MeshRenderer(MeshRenderer&&) noexcept = default;
+MeshRenderer& MeshRenderer::operator=(MeshRenderer&&) noexcept = default;
+
+void MeshRenderer::setTopology(const Eigen::MatrixXi& triangles) {
+  if (triangles.size() > 0 && triangles.cols() != 3) throw std::invalid_argument("MeshRenderer: faces must be #F by 3");
+  impl_->triangles = triangles;
+  const Eigen::Matrix<unsigned int, Eigen::Dynamic, 3, Eigen::RowMajor> idx = triangles.cast<unsigned int>();
+  impl_->vao.bind();
+  impl_->indices.upload(GL_ELEMENT_ARRAY_BUFFER, idx.data(), sizeof(unsigned int) * static_cast<std::size_t>(idx.size()),
+                        GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  impl_->indexCount = static_cast<GLsizei>(idx.size());
+}
+
+void MeshRenderer::setPositions(const Eigen::MatrixXd& positions) {
+  const RowMatrixX3f p = toFloat3(positions);
+  const RowMatrixX3f n = vertexNormals(positions, impl_->triangles);
+  const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(p.size());
+  impl_->positions.upload(GL_ARRAY_BUFFER, p.data(), bytes, GL_DYNAMIC_DRAW);
+  impl_->normals.upload(GL_ARRAY_BUFFER, n.data(), bytes, GL_DYNAMIC_DRAW);
+  impl_->vertexCount = static_cast<int>(positions.rows());
+}
+
+void MeshRenderer::draw(const ViewMatrices& view, const MeshStyle& style) const {
+  if (impl_->indexCount == 0 || impl_->vertexCount == 0) return;
+  const Impl& m = *impl_;
+  m.program.use();
+  glUniformMatrix4fv(m.program.uniform("uView"), 1, GL_FALSE, view.view.data());
+  glUniformMatrix4fv(m.program.uniform("uProjection"), 1, GL_FALSE, view.projection.data());
+  glUniform3fv(m.program.uniform("uColor"), 1, style.color.data());
+  glUniform1i(m.program.uniform("uOrthographic"), view.orthographic ? 1 : 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  m.vao.bind();
+  glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+  if (style.wireframe) {
+    m.wire.use();
+    glUniformMatrix4fv(m.wire.uniform("uView"), 1, GL_FALSE, view.view.data());
+    glUniformMatrix4fv(m.wire.uniform("uProjection"), 1, GL_FALSE, view.projection.data());
+    glUniform1f(m.wire.uniform("uDepthOffset"), 2e-5f);
+    glUniform4fv(m.wire.uniform("uColor"), 1, style.wireColor.data());
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_LEQUAL);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+  glBindVertexArray(0);
+  SOMICAGE_GL_CHECK("MeshRenderer::draw");
+}
+
+int MeshRenderer::numVertices() const { return impl_->vertexCount; }
+int MeshRenderer::numTriangles() const { return static_cast<int>(impl_->triangles.rows()); }
+
+}  // namespace somicage::render

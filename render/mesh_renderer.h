@@ -1,0 +1,41 @@
+// Draws a shaded triangle mesh whose positions change every frame. No GL types in this header.
+// Create, use and destroy only while the GL context that initOpenGl() loaded is current.
+#pragma once
+
+#include <Eigen/Core>
+#include <memory>
+
+#include "view_matrices.h"
+
+namespace somicage::render {
+
+struct MeshStyle {
+  Eigen::Vector3f color{0.80f, 0.66f, 0.48f};
+  bool wireframe = false;  // triangle edges over the shading
+  Eigen::Vector4f wireColor{0.15f, 0.12f, 0.10f, 0.22f};
+};
+
+class MeshRenderer {
+ public:
+  MeshRenderer();
+  ~MeshRenderer();
+  MeshRenderer(const MeshRenderer&) = delete;
+  MeshRenderer& operator=(const MeshRenderer&) = delete;
+  MeshRenderer(MeshRenderer&&) noexcept;
+  MeshRenderer& operator=(MeshRenderer&&) noexcept;
+
+  // triangles: #F by 3 indices into the positions; uploaded once per mesh.
+  void setTopology(const Eigen::MatrixXi& triangles);
+  // positions: #V by 2 or 3. Uploads positions and smooth normals recomputed from them (topology untouched).
+  void setPositions(const Eigen::MatrixXd& positions);
+  void draw(const ViewMatrices& view, const MeshStyle& style) const;
+
+  int numVertices() const;
+  int numTriangles() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace somicage::render

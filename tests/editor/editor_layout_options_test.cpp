@@ -1,0 +1,78 @@
+// Viewport layout (equal widths in the compare view) and the editor command line.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "editor_options.h"
+#include "errors.h"
+#include "layout.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+TEST(EditorLayout, CompareViewsHaveEqualWidthsAndFillTheArea) {
+  const std::vector<ViewRect> v = layoutViews(1600, 900, 340, 19, 25, 3);
+  ASSERT_EQ(v.size(), 3u);
+  EXPECT_EQ(v[0].x, 340);
+  EXPECT_LE(std::abs(v[0].width - v[2].width), 2.0);
+  EXPECT_EQ(v[0].width, v[1].width);
+  EXPECT_EQ(v[2].x + v[2].width, 1600);
+  for (const ViewRect& r : v) {
+    EXPECT_EQ(r.y, 19);
+    EXPECT_EQ(r.height, 900 - 19 - 25);
+  }
+  EXPECT_EQ(viewAt(v, Eigen::Vector2d(v[1].x + 1, 100)), 1);
+  EXPECT_EQ(viewAt(v, Eigen::Vector2d(10, 100)), -1);  // over the panel
+}
+
+TEST(EditorLayout, TinyWindowsStillGivePositiveSizes) {
+  for (const ViewRect& r : layoutViews(10, 10, 340, 19, 25, 3)) {
+    EXPECT_GE(r.width, 1);
+    EXPECT_GE(r.height, 1);
+  }
+}
+
+TEST(EditorOptions, FilesAndParameters) {
+  const EditorOptions o = parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma",
+                                           "1.5", "--compare", "somigliana,green,mvc", "--screenshot", "out.png",
+                                           "--size", "800x600", "--hide-ui", "--local"});
+  EXPECT_EQ(o.meshPath, "m.obj");
+  EXPECT_EQ(o.cagePath, "c.obj");
+  EXPECT_EQ(o.posedPath, "p.obj");
+  EXPECT_EQ(*o.method, Method::Green);
+  EXPECT_TRUE(std::isinf(*o.nu));
+  EXPECT_EQ(*o.gamma, 1.5);
+  EXPECT_EQ(*o.blend, 1.0);
+  EXPECT_EQ(o.compare.size(), 3u);
+  EXPECT_EQ(o.screenshotPath, "out.png");
+  EXPECT_EQ(o.width, 800);
+  EXPECT_EQ(o.height, 600);
+  EXPECT_TRUE(o.hideUi);
+}
+
+TEST(EditorOptions, DemoByDefault) {
+  const EditorOptions o = parseEditorArgs({"--screenshot", "x.png"});
+  EXPECT_TRUE(o.meshPath.empty());
+  EXPECT_EQ(o.demoDim, 3);
+  EXPECT_EQ(parseEditorArgs({"--demo", "2d"}).demoDim, 2);
+}
+
+TEST(EditorOptions, BadInputNamesTheOption) {
+  auto sourceOf = [](std::vector<std::string> args) {
+    try {
+      parseEditorArgs(args);
+    } catch (const InputError& e) {
+      return e.source();
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(sourceOf({"--nu", "0.7"}), "--nu");
+  EXPECT_EQ(sourceOf({"--nu", "abc"}), "--nu");
+  EXPECT_EQ(sourceOf({"--gamma", "-1"}), "--gamma");
+  EXPECT_EQ(sourceOf({"--compare", "green"}), "--compare");
+  EXPECT_EQ(sourceOf({"--compare", "green,foo"}), "--compare");
+  EXPECT_EQ(sourceOf({"--size", "12"}), "--size");
+  EXPECT_EQ(sourceOf({"--bogus"}), "--bogus");
+  EXPECT_EQ(sourceOf({"only_one.obj"}), "command line");
+  EXPECT_EQ(sourceOf({"--method"}), "--method");
+}

@@ -1,0 +1,103 @@
+// Session JSON: exact round trip (numbers written with %.17g), infinities, and errors that name the problem.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "errors.h"
+#include "json.h"
+#include "session.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+Session sample() {
+  Session s;
+  s.meshPath = "/models/a \"quoted\" mesh.obj";
+  s.cagePath = "/models/cage.obj";
+  s.pose.resize(3, 3);
+  s.pose << 0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-7, 1e8, 4, 5, 6;
+  s.method = Method::Green;
+  s.params.nu = -std::numeric_limits<double>::infinity();
+  s.params.gamma = 2.25;
+  s.params.blend = 0.125;
+  s.params.tractionCorrection = false;
+  s.compare = true;
+  s.compareMethods = {Method::Somigliana, Method::MeanValue};
+  s.camera.target = Eigen::Vector3d(0.1, -0.2, 0.3);
+  s.camera.distance = 7.5;
+  s.camera.yaw = -1.25;
+  s.camera.pitch = 0.5;
+  return s;
+}
+}  // namespace
+
+TEST(EditorSession, RoundTripIsExact) {
+  const Session a = sample();
+  const Session b = sessionFromJson(sessionToJson(a), "test");
+  EXPECT_EQ(b.meshPath, a.meshPath);
+  EXPECT_EQ(b.cagePath, a.cagePath);
+  EXPECT_EQ(b.pose, a.pose);
+  EXPECT_EQ(b.method, a.method);
+  EXPECT_TRUE(std::isinf(b.params.nu) && b.params.nu < 0);
+  EXPECT_EQ(b.params.gamma, a.params.gamma);
+  EXPECT_EQ(b.params.blend, a.params.blend);
+  EXPECT_EQ(b.params.tractionCorrection, a.params.tractionCorrection);
+  EXPECT_EQ(b.compare, a.compare);
+  EXPECT_EQ(b.compareMethods, a.compareMethods);
+  EXPECT_EQ(b.camera.target, a.camera.target);
+  EXPECT_EQ(b.camera.distance, a.camera.distance);
+  EXPECT_EQ(b.camera.yaw, a.camera.yaw);
+  EXPECT_EQ(b.camera.pitch, a.camera.pitch);
+}
+
+TEST(EditorSession, DemoSessionWithoutPoseRoundTrips) {
+  Session a;
+  a.demoDim = 2;
+  const Session b = sessionFromJson(sessionToJson(a), "test");
+  EXPECT_TRUE(b.meshPath.empty());
+  EXPECT_EQ(b.demoDim, 2);
+  EXPECT_EQ(b.pose.rows(), 0);
+}
+
+TEST(EditorSession, FileRoundTripIsAtomic) {
+  const std::string path = ::testing::TempDir() + "somicage_session_test.json";
+  saveSession(path, sample());
+  EXPECT_EQ(loadSession(path).pose, sample().pose);
+  std::remove(path.c_str());
+}
+
+TEST(EditorSession, SyntaxErrorsNameTheLine) {
+  try {
+    sessionFromJson("{\n  \"format\": \"somicage-session\",\n  \"version\" 1\n}", "broken.json");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "broken.json");
+    EXPECT_EQ(e.line(), 3);
+  }
+}
+
+TEST(EditorSession, BadFieldsAreRejectedWithTheirName) {
+  std::string text = sessionToJson(sample());
+  const std::string good = "\"method\": \"green\"";
+  ASSERT_NE(text.find(good), std::string::npos);
+  text.replace(text.find(good), good.size(), "\"method\": \"bogus\"");
+  try {
+    sessionFromJson(text, "s.json");
+    FAIL() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bogus"), std::string::npos);
+  }
+  EXPECT_THROW(sessionFromJson("{\"format\": \"other\"}", "s.json"), InputError);
+  EXPECT_THROW(sessionFromJson("[1, 2]", "s.json"), InputError);
+}
+
+TEST(EditorJson, StringsWithEscapesRoundTrip) {
+  JsonValue v = JsonValue::object();
+  v.set("s", JsonValue::string("tab\there \"q\" back\\slash\nnew\x01"));
+  const JsonValue w = parseJson(v.dump(2), "t");
+  EXPECT_EQ(w.find("s")->asString(), v.find("s")->asString());
+  EXPECT_EQ(parseJson("\"\\u00e9\"", "t").asString(), "\xc3\xa9");
+}

@@ -1,0 +1,141 @@
+// G/R/S transforms: exact results for known mouse motions, constraints, 2D, and reversibility.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "transform.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+const Eigen::Vector2d kViewport(800, 600);
+
+// Camera looking down -z at the origin: screen +x = world +x, screen -y = world +y.
+OrbitCamera frontCamera(bool twoD = false) {
+  OrbitCamera c;
+  c.setMode2D(twoD);
+  c.setState({Eigen::Vector3d::Zero(), 5.0, 0.0, 0.0});
+  return c;
+}
+
+Eigen::MatrixXd square3() {
+  Eigen::MatrixXd v(4, 3);
+  v << -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0;
+  return v;
+}
+
+Eigen::Vector2d screenOf(const OrbitCamera& c, const Eigen::Vector3d& p) {
+  Eigen::Vector2d s;
+  c.project(p, kViewport.x(), kViewport.y(), s);
+  return s;
+}
+
+}  // namespace
+
+TEST(EditorTransform, GrabFollowsTheMouseInTheViewPlane) {
+  const OrbitCamera c = frontCamera();
+  const Eigen::MatrixXd v = square3();
+  const Eigen::Vector2d start(400, 300);
+  const TransformSession t = beginTransform(TransformKind::Grab, {0, 1}, v, start, kViewport);
+  const double wpp = c.worldPerPixel(t.pivot, kViewport.y());
+  const Eigen::MatrixXd out = applyTransform(t, c, start + Eigen::Vector2d(40, -20));
+  EXPECT_NEAR(out(0, 0) - v(0, 0), 40 * wpp, 1e-12);
+  EXPECT_NEAR(out(0, 1) - v(0, 1), 20 * wpp, 1e-12);  // screen up = world +y
+  EXPECT_NEAR(out(1, 2), 0.0, 1e-12);
+  EXPECT_EQ(out.row(2), v.row(2));  // unselected vertices do not move
+  EXPECT_EQ(out.row(3), v.row(3));
+}
+
+TEST(EditorTransform, GrabConstrainedToAnAxisMovesOnlyAlongIt) {
+  const OrbitCamera c = frontCamera();
+  TransformSession t = beginTransform(TransformKind::Grab, {2}, square3(), Eigen::Vector2d(400, 300), kViewport);
+  t.axis = Axis::X;
+  const Eigen::MatrixXd out = applyTransform(t, c, Eigen::Vector2d(450, 250));
+  EXPECT_GT(out(2, 0), 1.0);
+  EXPECT_DOUBLE_EQ(out(2, 1), 1.0);
+  EXPECT_DOUBLE_EQ(out(2, 2), 0.0);
+  // Z points at the eye here: the motion falls back to the view-plane component along z, which is zero.
+  t.axis = Axis::Z;
+  const Eigen::MatrixXd outZ = applyTransform(t, c, Eigen::Vector2d(450, 250));
+  EXPECT_NEAR((outZ.row(2) - square3().row(2)).norm(), 0.0, 1e-12);
+}
+
+TEST(EditorTransform, RotateQuarterTurnCounterClockwiseOnScreen) {
+  const OrbitCamera c = frontCamera();
+  const Eigen::MatrixXd v = square3();
+  const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
+  const TransformSession t = beginTransform(TransformKind::Rotate, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(100, 0), kViewport);
+  // Mouse moves from the right of the pivot to above it: a quarter turn counter-clockwise.
+  const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(0, -100));
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  for (int i = 0; i < 4; ++i) EXPECT_LT((out.row(i).transpose() - r * v.row(i).transpose()).norm(), 1e-9) << i;
+}
+
+TEST(EditorTransform, RotateAboutAConstrainedAxis) {
+  const OrbitCamera c = frontCamera();
+  Eigen::MatrixXd v(2, 3);
+  v << 0, 1, 0, 0, -1, 0;
+  const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
+  TransformSession t = beginTransform(TransformKind::Rotate, {0, 1}, v, centre + Eigen::Vector2d(100, 0), kViewport);
+  t.axis = Axis::X;
+  const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(0, -100));
+  // Rotation about +x by 90 degrees takes (0, 1, 0) to (0, 0, 1).
+  EXPECT_LT((out.row(0) - Eigen::RowVector3d(0, 0, 1)).norm(), 1e-9);
+  EXPECT_LT((out.row(1) - Eigen::RowVector3d(0, 0, -1)).norm(), 1e-9);
+}
+
+TEST(EditorTransform, ScaleByTheDistanceRatio) {
+  const OrbitCamera c = frontCamera();
+  const Eigen::MatrixXd v = square3();
+  const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
+  TransformSession t = beginTransform(TransformKind::Scale, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(50, 0), kViewport);
+  const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(0, 100));  // twice as far
+  EXPECT_LT((out - 2.0 * v).norm(), 1e-9);
+  t.axis = Axis::Y;
+  const Eigen::MatrixXd outY = applyTransform(t, c, centre + Eigen::Vector2d(0, 100));
+  EXPECT_LT((outY.col(0) - v.col(0)).norm(), 1e-12);
+  EXPECT_LT((outY.col(1) - 2.0 * v.col(1)).norm(), 1e-9);
+}
+
+TEST(EditorTransform, MouseBackAtTheStartIsTheIdentity) {
+  const OrbitCamera c = frontCamera();
+  c.state();
+  const Eigen::MatrixXd v = square3();
+  for (TransformKind kind : {TransformKind::Grab, TransformKind::Rotate, TransformKind::Scale}) {
+    const Eigen::Vector2d start(470, 260);
+    const TransformSession t = beginTransform(kind, {0, 2}, v, start, kViewport);
+    applyTransform(t, c, Eigen::Vector2d(10, 10));
+    EXPECT_LT((applyTransform(t, c, start) - v).norm(), 1e-12) << transformName(kind);
+  }
+}
+
+TEST(EditorTransform, TwoDimensionalCagesStayTwoDimensional) {
+  const OrbitCamera c = frontCamera(true);
+  Eigen::MatrixXd v(3, 2);
+  v << 1, 0, 0, 1, -1, 0;
+  const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d(0, 1.0 / 3.0, 0));
+  TransformSession t = beginTransform(TransformKind::Rotate, {0, 1, 2}, v, centre + Eigen::Vector2d(100, 0), kViewport);
+  t.axis = Axis::Z;  // ignored in 2D (rotations are about z anyway)
+  const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(-100, 0));  // half turn
+  ASSERT_EQ(out.cols(), 2);
+  const Eigen::Vector2d pivot(0, 1.0 / 3.0);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_LT((out.row(i).transpose() - (2 * pivot - v.row(i).transpose())).norm(), 1e-9);
+  }
+}
+
+TEST(EditorTransform, ScreenAngleSign) {
+  EXPECT_NEAR(screenAngle(Eigen::Vector2d(1, 0), Eigen::Vector2d(0, -1)), kPi / 2, 1e-12);  // up on screen
+  EXPECT_NEAR(screenAngle(Eigen::Vector2d(1, 0), Eigen::Vector2d(0, 1)), -kPi / 2, 1e-12);
+}
+
+TEST(EditorTransform, DescriptionNamesKindAndAxis) {
+  const OrbitCamera c = frontCamera();
+  TransformSession t = beginTransform(TransformKind::Rotate, {0}, square3(), Eigen::Vector2d(500, 300), kViewport);
+  t.axis = Axis::Z;
+  EXPECT_EQ(describeTransform(t, c, Eigen::Vector2d(500, 300)).rfind("Rotate Z:", 0), 0u);
+}
