@@ -38,6 +38,11 @@ void validateDeformParams(const DeformParams& params) {
                      "use 0 for the global variant, 1 for the local variant, or a value in between");
 }
 
+void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params,
+                          Eigen::MatrixXd& out) const {
+  evaluateFrame(coordinates_, frameWeights(posedVertices, params), dim(), threads_, out);
+}
+
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                            const PrecomputeOptions& options, const ProgressCallback& progress) {
   switch (method) {

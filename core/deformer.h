@@ -7,6 +7,7 @@
 #include <string>
 
 #include "cage.h"
+#include "frame_evaluation.h"
 #include "progress.h"
 #include "somigliana_coordinates.h"
 
@@ -30,25 +31,37 @@ void validateDeformParams(const DeformParams& params);
 
 struct PrecomputeOptions {
   IntegrationOptions integration;  // Somigliana only
-  int threads = 0;                 // 0 = the OpenMP default
+  int threads = 0;                 // 0 = the OpenMP default, for the precompute and every frame
+  bool floatStorage = false;       // store the coordinate matrix in float (see frame_evaluation.h)
 };
 
+// A method's precomputed coordinates (the matrix C of frame_evaluation.h) and its per-frame weights.
 class CageDeformer {
  public:
   virtual ~CageDeformer() = default;
 
   virtual Method method() const = 0;
   virtual int dim() const = 0;
-  virtual int numPoints() const = 0;
 
-  // posedVertices: #V by d, same order as the rest cage. out: #P by d deformed points (resized if needed).
-  virtual void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& out) const = 0;
+  // The per-frame weight matrix W for a posed cage (#V by d, rest cage order). Validates params.
+  virtual FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const = 0;
 
+  const FrameCoordinates& frameCoordinates() const { return coordinates_; }
+  int numPoints() const { return coordinates_.rows(); }
+
+  // The deformed points (#P by d, resized) for a posed cage: evaluateFrame(C, frameWeights(...)).
+  void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& out) const;
   Eigen::MatrixXd deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const {
     Eigen::MatrixXd out;
     deform(posedVertices, params, out);
     return out;
   }
+
+ protected:
+  CageDeformer(FrameCoordinates coordinates, int threads) : coordinates_(std::move(coordinates)), threads_(threads) {}
+
+  FrameCoordinates coordinates_;
+  int threads_;
 };
 
 // Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.

@@ -1,9 +1,5 @@
 #include "somigliana_deformer.h"
 
-#include <omp.h>
-
-#include <Eigen/LU>
-#include <array>
 #include <vector>
 
 #include "boundary_conditions.h"
@@ -39,89 +35,110 @@ std::vector<Eigen::MatrixXd> vertexTermBasis(int d, double nu) {
   return basis;
 }
 
-template <int Dim>
+// A d by d matrix, row-major, into columns [0, d^2) of row `row` of W.
+void setMatrixColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
+  const int d = static_cast<int>(M.rows());
+  for (int a = 0; a < d; ++a)
+    for (int b = 0; b < d; ++b) W(row, a * d + b) = M(a, b);
+}
+
+// The coordinate matrix C of frame_evaluation.h for the Somigliana deformer:
+//   main = the stored integrals (vertex terms, then face terms; somigliana_coordinates.h),
+//   tail = [ sum_i of the vertex terms | x | 1 ].
+// The sums give T(x) = R (sum_i T_i) R^T in one small product for the global variant. Points outside the cage
+// (winding < 1/2) have no Somigliana coordinates (sum_i T_i -> 0, Eq. 11 is undefined): their row is zero except
+// [x | 1], which the weights turn into T = I, b = s R x + t, the global similarity of the cage.
+FrameCoordinates buildFrameCoordinates(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
+                                       bool floatStorage) {
+  const int d = coords.dim, terms = vertexTermCount(d), main = static_cast<int>(coords.values.cols());
+  const int columns = main + terms + d + 1;
+  CoordinateMatrix<double> C = CoordinateMatrix<double>::Zero(coords.numPoints(), columns);
+  for (int p = 0; p < coords.numPoints(); ++p) {
+    if (coords.winding(p) < 0.5) {
+      C.row(p).segment(main + terms, d) = points.row(p);
+      C(p, columns - 1) = 1;
+      continue;
+    }
+    C.row(p).head(main) = coords.values.row(p);
+    for (int i = 0; i < coords.numVertices; ++i)
+      C.row(p).segment(main, terms) += coords.values.row(p).segment(coords.vertexOffset(i), terms);
+  }
+  FrameCoordinates frame;
+  frame.mainColumns = main;
+  if (floatStorage)
+    frame.floats = C.cast<float>();
+  else
+    frame.doubles = std::move(C);
+  return frame;
+}
+
 class SomiglianaDeformer final : public CageDeformer {
  public:
-  using Matrix = Eigen::Matrix<double, Dim, Dim>;
-  using Vector = Eigen::Matrix<double, Dim, 1>;
-  static constexpr int kOutputs = Dim * Dim + Dim;  // T(x) row-major, then the right-hand side of Eq. 11
-
-  SomiglianaDeformer(Cage rest, Eigen::MatrixXd restPoints, SomiglianaCoordinates coords, int threads)
-      : rest_(std::move(rest)), restPoints_(std::move(restPoints)), coords_(std::move(coords)), threads_(threads) {}
-
-  Method method() const override { return Method::Somigliana; }
-  int dim() const override { return Dim; }
-  int numPoints() const override { return coords_.numPoints(); }
-
-  // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T.
-  // Both sums are linear in the stored nu-independent terms, so one frame is one product of the coordinate
-  // matrix (#P by #terms) with a per-frame weight matrix (#terms by kOutputs), then a d by d solve per point.
-  void deform(const Eigen::MatrixXd& posed, const DeformParams& params, Eigen::MatrixXd& out) const override {
-    validateDeformParams(params);
-    SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == Dim, "posed cage matches the rest cage");
-    const BoundaryConditions bc = computeBoundaryConditions(rest_, posed, params);
-    const Eigen::MatrixXd weights = frameWeights(posed, params, bc);
-
-    const int numPoints = coords_.numPoints();
-    out.resize(numPoints, Dim);
-    const Eigen::MatrixXd& G = bc.global.rotation;
-    const int blockSize = 64;
-    const int numBlocks = (numPoints + blockSize - 1) / blockSize;
-    const int threads = threads_ > 0 ? threads_ : omp_get_max_threads();
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (int block = 0; block < numBlocks; ++block) {
-      const int begin = block * blockSize, count = std::min(blockSize, numPoints - begin);
-      const Eigen::Matrix<double, Eigen::Dynamic, kOutputs, Eigen::RowMajor> y =
-          coords_.values.middleRows(begin, count) * weights;
-      for (int r = 0; r < count; ++r) {
-        const int p = begin + r;
-        if (coords_.winding(p) < 0.5) {
-          // Outside the cage sum_i T_i -> 0 and Eq. 11 is undefined; such points follow the global similarity.
-          out.row(p) = (bc.global.scale * G * restPoint(p) + bc.global.translation).transpose();
-          continue;
-        }
-        const Eigen::Map<const Eigen::Matrix<double, Dim, Dim, Eigen::RowMajor>> T(y.row(r).data());
-        const Eigen::Map<const Vector> rhs(y.row(r).data() + Dim * Dim);
-        out.row(p) = (Matrix(T).inverse() * rhs).transpose();
-      }
-    }
+  SomiglianaDeformer(Cage rest, const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
+                     const PrecomputeOptions& options)
+      : CageDeformer(buildFrameCoordinates(coords, points, options.floatStorage), options.threads),
+        rest_(std::move(rest)),
+        restNormals_(coords.restNormals),
+        vertexOffsets_(coords.numVertices),
+        faceOffsets_(coords.numFaces) {
+    for (int i = 0; i < coords.numVertices; ++i) vertexOffsets_[i] = coords.vertexOffset(i);
+    for (int j = 0; j < coords.numFaces; ++j) faceOffsets_[j] = coords.faceOffset(j);
   }
 
- private:
-  Eigen::VectorXd restPoint(int p) const { return restPoints_.row(p).transpose(); }
+  Method method() const override { return Method::Somigliana; }
+  int dim() const override { return rest_.dim(); }
 
-  Eigen::MatrixXd frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params,
-                               const BoundaryConditions& bc) const {
-    const int vertexTerms = vertexTermCount(Dim);
-    Eigen::MatrixXd W = Eigen::MatrixXd::Zero(coords_.values.cols(), kOutputs);
-    const std::vector<Eigen::MatrixXd> basis = vertexTermBasis(Dim, params.nu);
+  // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T.
+  // Both sums are linear in the stored nu-independent terms t_k (T_i = sum_k t_k E_k), so their weights are
+  // R_i E_k R_i^T (for T) and R_i E_k R_i^T v~_i (for the right-hand side); the face terms give
+  // R_j K_j R_j^T tau~_j = s_j R_j K_j n_j = s_j R_j (k1 S_j n_j + k2 q_j) (Eq. 14, docs/method.md).
+  FrameWeights frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params) const override {
+    validateDeformParams(params);
+    const int d = dim(), terms = vertexTermCount(d);
+    SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == d, "posed cage matches the rest cage");
+    const BoundaryConditions bc = computeBoundaryConditions(rest_, posed, params);
+    const std::vector<Eigen::MatrixXd> basis = vertexTermBasis(d, params.nu);
+    const bool global = params.blend == 0;  // every R_i = R: T(x) comes from the per-point sums in the tail
+
+    FrameWeights W;
+    W.outputs = d * d + d;
+    W.mainOffset = global ? d * d : 0;
+    const int rhs = W.outputs - W.mainOffset - d;  // where the right-hand side starts in W.main
+    W.main = Eigen::MatrixXd::Zero(coordinates_.mainColumns, W.outputs - W.mainOffset);
+    W.tail = Eigen::MatrixXd::Zero(terms + d + 1, W.outputs);
     for (int i = 0; i < rest_.numVertices(); ++i) {
-      const Matrix R = bc.vertexRotations[i];
-      const Vector v = posed.row(i).transpose();
-      for (int k = 0; k < vertexTerms; ++k) {
-        const Matrix rotated = R * basis[k] * R.transpose();
-        const int row = coords_.vertexOffset(i) + k;
-        for (int a = 0; a < Dim; ++a)
-          for (int b = 0; b < Dim; ++b) W(row, a * Dim + b) = rotated(a, b);
-        W.row(row).tail<Dim>() = (rotated * v).transpose();
+      const Eigen::MatrixXd& R = global ? bc.global.rotation : bc.vertexRotations[i];
+      const Eigen::VectorXd v = posed.row(i).transpose();
+      for (int k = 0; k < terms; ++k) {
+        const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
+        const int row = vertexOffsets_[i] + k;
+        if (!global) setMatrixColumns(rotated, W.main, row);
+        W.main.row(row).segment(rhs, d) = (rotated * v).transpose();
       }
     }
-    // R_j K_j R_j^T tau~_j = s_j R_j K_j n_j = s_j R_j (k1 S_j n_j + k2 q_j) (Eq. 14 and docs/method.md).
-    const NuCoefficients c = nuCoefficients(Dim, params.nu);
+    const NuCoefficients c = nuCoefficients(d, params.nu);
     for (int j = 0; j < rest_.numFaces(); ++j) {
-      const Matrix R = bc.faceRotations[j];
+      const Eigen::MatrixXd& R = bc.faceRotations[j];
       const double s = bc.tractionScales(j);
-      const int row = coords_.faceOffset(j);
-      W.row(row).tail<Dim>() = (s * c.k1 * R * coords_.restNormals.row(j).transpose()).transpose();
-      for (int a = 0; a < Dim; ++a) W.row(row + 1 + a).tail<Dim>() = (s * c.k2 * R.col(a)).transpose();
+      const int row = faceOffsets_[j];
+      W.main.row(row).segment(rhs, d) = (s * c.k1 * R * restNormals_.row(j).transpose()).transpose();
+      for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) = (s * c.k2 * R.col(a)).transpose();
     }
+    if (global)
+      for (int k = 0; k < terms; ++k)
+        setMatrixColumns(bc.global.rotation * basis[k] * bc.global.rotation.transpose(), W.tail, k);
+    // Outside points: T = I and b = s R x + t.
+    const Eigen::MatrixXd sR = bc.global.scale * bc.global.rotation;
+    for (int a = 0; a < d; ++a) W.tail.row(terms + a).tail(d) = sR.col(a).transpose();
+    setMatrixColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
+    W.tail.row(terms + d).tail(d) = bc.global.translation.transpose();
     return W;
   }
 
+ private:
   Cage rest_;
-  Eigen::MatrixXd restPoints_;
-  SomiglianaCoordinates coords_;
-  int threads_;
+  Eigen::MatrixXd restNormals_;
+  std::vector<int> vertexOffsets_, faceOffsets_;
 };
 
 }  // namespace
@@ -131,10 +148,8 @@ std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const
                                                      const ProgressCallback& progress) {
   IntegrationOptions integration = options.integration;
   if (integration.threads == 0) integration.threads = options.threads;
-  SomiglianaCoordinates coords = computeSomiglianaCoordinates(restCage, points, integration, progress);
-  if (restCage.dim() == 3)
-    return std::make_unique<SomiglianaDeformer<3>>(restCage, points, std::move(coords), options.threads);
-  return std::make_unique<SomiglianaDeformer<2>>(restCage, points, std::move(coords), options.threads);
+  const SomiglianaCoordinates coords = computeSomiglianaCoordinates(restCage, points, integration, progress);
+  return std::make_unique<SomiglianaDeformer>(restCage, coords, points, options);
 }
 
 }  // namespace somicage

@@ -1,0 +1,47 @@
+// How every deformation method evaluates a frame, so that one CPU kernel (here) and one GPU kernel serve them all:
+//
+//   y_p   = C_p,main . W_main  (added to the output columns from W.mainOffset on)  +  C_p,tail . W_tail
+//   out_p = y_p                                       when the frame has d outputs (Green, mean value)
+//   out_p = T_p^-1 b_p, T_p = y_p[0 : d^2] row-major,  when it has d^2 + d outputs (Somigliana, Eq. 11)
+//           b_p = y_p[d^2 : d^2 + d]
+//
+// C (#P by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and the
+// parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+namespace somicage {
+
+template <typename Scalar>
+using CoordinateMatrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// The coordinate matrix C, stored in double or in float (exactly one of the two is non-empty). Float halves the
+// memory and the bytes read per frame at ~1e-7 relative error per entry: the editor's choice; the command line
+// keeps double.
+struct FrameCoordinates {
+  CoordinateMatrix<double> doubles;
+  CoordinateMatrix<float> floats;
+  int mainColumns = 0;  // K_main: the remaining columns are the tail
+
+  bool isFloat() const { return floats.size() > 0 || doubles.size() == 0; }
+  int rows() const { return static_cast<int>(isFloat() ? floats.rows() : doubles.rows()); }
+  int columns() const { return static_cast<int>(isFloat() ? floats.cols() : doubles.cols()); }
+  std::size_t bytes() const {
+    return isFloat() ? floats.size() * sizeof(float) : doubles.size() * sizeof(double);
+  }
+};
+
+struct FrameWeights {
+  int outputs = 0;       // d, or d * d + d for a per-point solve
+  int mainOffset = 0;    // the first output column that `main` contributes to
+  Eigen::MatrixXd main;  // K_main by (outputs - mainOffset)
+  Eigen::MatrixXd tail;  // K_tail by outputs
+};
+
+// out (#P by d, resized) from C and W as described above, with OpenMP over fixed blocks of points, so the result
+// does not depend on the thread count (threads = 0: the OpenMP default).
+void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out);
+
+}  // namespace somicage
