@@ -9,7 +9,8 @@
 
 namespace somicage {
 
-// Same outputs as integrateTriangle(), by quadrature with 3 N^2 points.
+// Same outputs as integrateTriangle(), by quadrature with 3 N^2 points (N = pointsPerSide >= 1). Faces that
+// makeTriangleFrame() calls degenerate give all zeros. The 1D rule is cached per thread.
 void integrateTriangleGauss(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2,
                             const Eigen::Vector3d& x, int pointsPerSide, TriangleIntegrals& out);
 
