@@ -48,27 +48,34 @@ void setMatrixColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
 // The sums give T(x) = R (sum_i T_i) R^T in one small product for the global variant. Points outside the cage
 // (winding < 1/2) have no Somigliana coordinates (sum_i T_i -> 0, Eq. 11 is undefined): their row is zero except
 // [x | 1], which the weights turn into T = I, b = s R x + t, the global similarity of the cage.
-FrameCoordinates buildFrameCoordinates(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
-                                       bool floatStorage) {
+template <typename Scalar>
+CoordinateMatrix<Scalar> frameMatrix(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points) {
   const int d = coords.dim, terms = vertexTermCount(d), main = static_cast<int>(coords.values.cols());
   const int columns = main + terms + d + 1;
-  CoordinateMatrix<double> C = CoordinateMatrix<double>::Zero(coords.numPoints(), columns);
+  CoordinateMatrix<Scalar> C = CoordinateMatrix<Scalar>::Zero(coords.numPoints(), columns);
   for (int p = 0; p < coords.numPoints(); ++p) {
     if (coords.winding(p) < 0.5) {
-      C.row(p).segment(main + terms, d) = points.row(p);
+      C.row(p).segment(main + terms, d) = points.row(p).cast<Scalar>();
       C(p, columns - 1) = 1;
       continue;
     }
-    C.row(p).head(main) = coords.values.row(p);
+    C.row(p).head(main) = coords.values.row(p).cast<Scalar>();
+    Eigen::VectorXd sum = Eigen::VectorXd::Zero(terms);
     for (int i = 0; i < coords.numVertices; ++i)
-      C.row(p).segment(main, terms) += coords.values.row(p).segment(coords.vertexOffset(i), terms);
+      sum += coords.values.row(p).segment(coords.vertexOffset(i), terms).transpose();
+    C.row(p).segment(main, terms) = sum.cast<Scalar>().transpose();
   }
+  return C;
+}
+
+FrameCoordinates buildFrameCoordinates(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
+                                       bool floatStorage) {
   FrameCoordinates frame;
-  frame.mainColumns = main;
+  frame.mainColumns = static_cast<int>(coords.values.cols());
   if (floatStorage)
-    frame.floats = C.cast<float>();
+    frame.floats = frameMatrix<float>(coords, points);
   else
-    frame.doubles = std::move(C);
+    frame.doubles = frameMatrix<double>(coords, points);
   return frame;
 }
 
@@ -149,6 +156,13 @@ std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const
   IntegrationOptions integration = options.integration;
   if (integration.threads == 0) integration.threads = options.threads;
   const SomiglianaCoordinates coords = computeSomiglianaCoordinates(restCage, points, integration, progress);
+  return makeSomiglianaDeformer(restCage, coords, points, options);
+}
+
+std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const SomiglianaCoordinates& coords,
+                                                     const Eigen::MatrixXd& points, const PrecomputeOptions& options) {
+  SOMICAGE_ASSERT(coords.numPoints() == points.rows() && coords.numVertices == restCage.numVertices(),
+                  "coordinates belong to these points and this cage");
   return std::make_unique<SomiglianaDeformer>(restCage, coords, points, options);
 }
 
