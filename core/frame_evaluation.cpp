@@ -61,6 +61,16 @@ void evaluate(const CoordinateMatrix<Scalar>& C, int mainColumns, const FrameWei
 
 }  // namespace
 
+FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage) {
+  FrameCoordinates frame;
+  frame.mainColumns = mainColumns;
+  if (floatStorage)
+    frame.floats = C.cast<float>();
+  else
+    frame.doubles = std::move(C);
+  return frame;
+}
+
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out) {
   SOMICAGE_ASSERT(W.outputs == dim || W.outputs == dim * dim + dim, "a frame has d or d^2 + d outputs");
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");

@@ -33,6 +33,9 @@ struct FrameCoordinates {
   }
 };
 
+// C in the requested storage (the double matrix is moved, or converted to float).
+FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage);
+
 struct FrameWeights {
   int outputs = 0;       // d, or d * d + d for a per-point solve
   int mainOffset = 0;    // the first output column that `main` contributes to

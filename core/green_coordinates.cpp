@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "boundary_conditions.h"
 #include "errors.h"
 
 namespace somicage {
@@ -133,23 +134,30 @@ void integrateGreenEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, co
 
 int threadCount(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
 
-// C = [phi | psi] (#P by #V + #F); W = [v~ ; s_j n~_j]: x~ = sum_i phi_i v~_i + sum_j psi_j s_j n~_j.
-FrameCoordinates greenFrameCoordinates(const GreenCoordinates& coords, bool floatStorage) {
-  CoordinateMatrix<double> C(coords.phi.rows(), coords.phi.cols() + coords.psi.cols());
-  C << coords.phi, coords.psi;
-  FrameCoordinates frame;
-  frame.mainColumns = static_cast<int>(C.cols());
-  if (floatStorage)
-    frame.floats = C.cast<float>();
-  else
-    frame.doubles = std::move(C);
-  return frame;
+// C = [phi | psi | x | 1] (#P by #V + #F + d + 1); W = [v~ ; s_j n~_j ; (s R)^T ; t^T]:
+// x~ = sum_i phi_i v~_i + sum_j psi_j s_j n~_j inside the cage. Outside it the coordinates reproduce nothing
+// (sum_i phi_i = 0 there), so, as for the Somigliana deformer, such points keep only [x | 1] and follow the
+// cage's best-fit similarity s R x + t.
+FrameCoordinates greenFrameCoordinates(const GreenCoordinates& coords, const Eigen::MatrixXd& points,
+                                       bool floatStorage) {
+  const int main = static_cast<int>(coords.phi.cols() + coords.psi.cols()), d = static_cast<int>(points.cols());
+  CoordinateMatrix<double> C = CoordinateMatrix<double>::Zero(coords.phi.rows(), main + d + 1);
+  for (int p = 0; p < C.rows(); ++p) {
+    if (coords.phi.row(p).sum() >= 0.5) {  // the double layer of the hats sums to the winding number
+      C.row(p).head(main) << coords.phi.row(p), coords.psi.row(p);
+    } else {
+      C.row(p).segment(main, d) = points.row(p);
+      C(p, main + d) = 1;
+    }
+  }
+  return makeFrameCoordinates(std::move(C), main, floatStorage);
 }
 
 class GreenDeformer : public CageDeformer {
  public:
-  GreenDeformer(const Cage& restCage, const GreenCoordinates& coords, const PrecomputeOptions& options)
-      : CageDeformer(greenFrameCoordinates(coords, options.floatStorage), options.threads), rest_(restCage) {}
+  GreenDeformer(const Cage& restCage, const GreenCoordinates& coords, const Eigen::MatrixXd& points,
+                const PrecomputeOptions& options)
+      : CageDeformer(greenFrameCoordinates(coords, points, options.floatStorage), options.threads), rest_(restCage) {}
 
   Method method() const override { return Method::Green; }
   int dim() const override { return rest_.dim(); }
@@ -168,7 +176,10 @@ class GreenDeformer : public CageDeformer {
     W.outputs = dim();
     W.main.resize(rest_.numVertices() + rest_.numFaces(), dim());
     W.main << posedVertices, scaledNormals;
-    W.tail.resize(0, dim());
+    const Similarity fit = fitSimilarity(rest_.vertices, posedVertices);
+    W.tail.resize(dim() + 1, dim());
+    W.tail.topRows(dim()) = (fit.scale * fit.rotation).transpose();
+    W.tail.row(dim()) = fit.translation.transpose();
     return W;
   }
 
@@ -262,7 +273,7 @@ Eigen::VectorXd greenFaceScales(const Cage& restCage, const Eigen::MatrixXd& pos
 std::unique_ptr<CageDeformer> makeGreenDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
                                                 const PrecomputeOptions& options, const ProgressCallback& progress) {
   GreenCoordinates coords = computeGreenCoordinates(restCage, points, options.threads, progress);
-  return std::make_unique<GreenDeformer>(restCage, coords, options);
+  return std::make_unique<GreenDeformer>(restCage, coords, points, options);
 }
 
 }  // namespace somicage

@@ -187,13 +187,8 @@ int threadCount(int requested) { return requested > 0 ? requested : omp_get_max_
 
 // C = the normalised weights (#P by #V); W = v~.
 FrameCoordinates meanValueFrameCoordinates(RowMatrixXd weights, bool floatStorage) {
-  FrameCoordinates frame;
-  frame.mainColumns = static_cast<int>(weights.cols());
-  if (floatStorage)
-    frame.floats = weights.cast<float>();
-  else
-    frame.doubles = std::move(weights);
-  return frame;
+  const int columns = static_cast<int>(weights.cols());
+  return makeFrameCoordinates(std::move(weights), columns, floatStorage);
 }
 
 class MeanValueDeformer : public CageDeformer {

@@ -1,0 +1,413 @@
+#include "cage_validation.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <set>
+#include <sstream>
+
+#include "errors.h"
+
+namespace somicage {
+
+namespace {
+
+// ---------------------------------------------------------------------------------------------------------------
+// Ridges: sort the (face, ridge) incidences by ridge and look at each group
+// ---------------------------------------------------------------------------------------------------------------
+
+struct Incidence {
+  int a, b;  // the ridge key: sorted edge (3D) or (vertex, -1) (2D)
+  int face;
+  int direction;  // 3D: +1 when the face runs a -> b; 2D: +1 when the edge starts at the vertex
+};
+
+void classifyRidges(const Cage& cage, CageReport& report) {
+  std::vector<Incidence> incidences;
+  incidences.reserve(static_cast<size_t>(cage.numFaces()) * cage.dim());
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    if (cage.dim() == 3) {
+      for (int k = 0; k < 3; ++k) {
+        const int u = cage.faces(j, k), v = cage.faces(j, (k + 1) % 3);
+        if (u != v) incidences.push_back({std::min(u, v), std::max(u, v), j, u < v ? 1 : -1});
+      }
+    } else if (cage.faces(j, 0) != cage.faces(j, 1)) {
+      incidences.push_back({cage.faces(j, 0), -1, j, 1});
+      incidences.push_back({cage.faces(j, 1), -1, j, -1});
+    }
+  }
+  std::sort(incidences.begin(), incidences.end(), [](const Incidence& x, const Incidence& y) {
+    return std::tie(x.a, x.b, x.face) < std::tie(y.a, y.b, y.face);
+  });
+  for (size_t start = 0; start < incidences.size();) {
+    size_t end = start;
+    CageReport::Ridge ridge{incidences[start].a, incidences[start].b, {}};
+    while (end < incidences.size() && incidences[end].a == ridge.a && incidences[end].b == ridge.b) {
+      ridge.faces.push_back(incidences[end].face);
+      ++end;
+    }
+    const size_t count = end - start;
+    if (count == 1) {
+      report.boundaryRidges.push_back(std::move(ridge));
+    } else if (count > 2) {
+      report.nonManifoldRidges.push_back(std::move(ridge));
+    } else if (incidences[start].direction == incidences[start + 1].direction) {
+      report.misorientedRidges.push_back(std::move(ridge));
+    }
+    start = end;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Connectivity and unused vertices
+// ---------------------------------------------------------------------------------------------------------------
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+void countComponents(const Cage& cage, CageReport& report) {
+  std::vector<int> parent(cage.numVertices());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<char> used(cage.numVertices(), 0);
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    const int first = findRoot(parent, cage.faces(j, 0));
+    used[cage.faces(j, 0)] = 1;
+    for (int k = 1; k < cage.faces.cols(); ++k) {
+      used[cage.faces(j, k)] = 1;
+      parent[findRoot(parent, cage.faces(j, k))] = first;
+    }
+  }
+  report.components = 0;
+  for (int i = 0; i < cage.numVertices(); ++i) {
+    if (!used[i])
+      report.unreferencedVertices.push_back(i);
+    else if (findRoot(parent, i) == i)
+      ++report.components;
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Geometry: volume, degenerate faces, duplicate vertices
+// ---------------------------------------------------------------------------------------------------------------
+
+void measureGeometry(const Cage& cage, CageReport& report) {
+  const Eigen::MatrixXd& V = cage.vertices;
+  const Eigen::RowVectorXd centre = V.colwise().mean();  // relative coordinates: less cancellation in the sum
+  const double diameter = report.diameter;
+  const double minMeasure = cage.dim() == 3 ? CageReport::kDegenerateTolerance * diameter * diameter
+                                            : CageReport::kDegenerateTolerance * diameter;
+  double volume = 0.0;
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    bool repeated = false;
+    for (int k = 0; k < cage.faces.cols(); ++k) {
+      for (int l = k + 1; l < cage.faces.cols(); ++l) repeated = repeated || cage.faces(j, k) == cage.faces(j, l);
+    }
+    double measure;
+    if (cage.dim() == 3) {
+      const Eigen::Vector3d a = (V.row(cage.faces(j, 0)) - centre).transpose();
+      const Eigen::Vector3d b = (V.row(cage.faces(j, 1)) - centre).transpose();
+      const Eigen::Vector3d c = (V.row(cage.faces(j, 2)) - centre).transpose();
+      volume += a.dot(b.cross(c)) / 6.0;
+      measure = 0.5 * (b - a).cross(c - a).norm();
+    } else {
+      const Eigen::Vector2d a = (V.row(cage.faces(j, 0)) - centre).transpose();
+      const Eigen::Vector2d b = (V.row(cage.faces(j, 1)) - centre).transpose();
+      volume += 0.5 * (a.x() * b.y() - a.y() * b.x());
+      measure = (b - a).norm();
+    }
+    if (repeated || !(measure > minMeasure)) report.degenerateFaces.push_back(j);
+  }
+  report.signedVolume = volume;
+
+  // Duplicates: bucket the vertices in a grid of cells as wide as the tolerance; a pair closer than the tolerance
+  // lies in the same or in neighbouring cells. O(V log V), whatever the layout (axis-aligned slices included).
+  const double tolerance = CageReport::kDuplicateTolerance * diameter;
+  const double cell = tolerance > 0.0 ? tolerance : 1.0;  // diameter 0: every vertex is in one cell
+  using Key = std::array<long long, 3>;
+  std::map<Key, std::vector<int>> grid;
+  const auto keyOf = [&](int i) {
+    Key key{0, 0, 0};
+    for (int k = 0; k < cage.dim(); ++k) key[k] = static_cast<long long>(std::floor(V(i, k) / cell));
+    return key;
+  };
+  for (int i = 0; i < cage.numVertices(); ++i) {
+    const Key key = keyOf(i);
+    const int reach = cage.dim() == 3 ? 1 : 0;
+    for (long long dx = -1; dx <= 1; ++dx) {
+      for (long long dy = -1; dy <= 1; ++dy) {
+        for (long long dz = -reach; dz <= reach; ++dz) {
+          const auto found = grid.find({key[0] + dx, key[1] + dy, key[2] + dz});
+          if (found == grid.end()) continue;
+          for (const int j : found->second) {
+            if ((V.row(i) - V.row(j)).norm() <= tolerance) report.duplicateVertices.push_back({j, i});
+          }
+        }
+      }
+    }
+    grid[key].push_back(i);
+  }
+  std::sort(report.duplicateVertices.begin(), report.duplicateVertices.end());
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// 2D: is the polygon simple? Shamos-Hoey sweep, O(F log F)
+// ---------------------------------------------------------------------------------------------------------------
+
+struct Segment {
+  Eigen::Vector2d p, q;  // p before q in (x, y) order
+  int u, v;              // the vertex indices of the edge
+};
+
+bool lexLess(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+}
+
+double orient(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+}
+
+bool onSegment(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {  // c on ab, collinear
+  return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= c.y() &&
+         c.y() <= std::max(a.y(), b.y());
+}
+
+bool segmentsMeet(const Segment& s, const Segment& t) {
+  const double d1 = orient(s.p, s.q, t.p), d2 = orient(s.p, s.q, t.q);
+  const double d3 = orient(t.p, t.q, s.p), d4 = orient(t.p, t.q, s.q);
+  if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+  return (d1 == 0 && onSegment(s.p, s.q, t.p)) || (d2 == 0 && onSegment(s.p, s.q, t.q)) ||
+         (d3 == 0 && onSegment(t.p, t.q, s.p)) || (d4 == 0 && onSegment(t.p, t.q, s.q));
+}
+
+// Edges that share a vertex may only meet there; they overlap (fold back) when collinear and on the same side.
+bool illegalMeeting(const Segment& s, const Segment& t) {
+  int shared = -1, sOther = -1, tOther = -1;
+  if (s.u == t.u || s.u == t.v) shared = s.u, sOther = s.v, tOther = (t.u == s.u ? t.v : t.u);
+  if (s.v == t.u || s.v == t.v) {
+    if (shared >= 0) return false;  // both ends shared (a 2-gon): reported as degenerate elsewhere
+    shared = s.v, sOther = s.u, tOther = (t.u == s.v ? t.v : t.u);
+  }
+  if (shared < 0) return segmentsMeet(s, t);
+  // Positions of the shared vertex and the two far ends.
+  const auto position = [](const Segment& seg, int vertex) { return seg.u == vertex ? seg.p : seg.q; };
+  const Eigen::Vector2d o = position(s, shared), a = position(s, sOther), b = position(t, tOther);
+  return orient(o, a, b) == 0.0 && (a - o).dot(b - o) > 0.0;
+}
+
+void findIntersection(const Cage& cage, CageReport& report) {
+  const int n = cage.numFaces();
+  std::vector<Segment> segments(n);
+  for (int j = 0; j < n; ++j) {
+    Segment& s = segments[j];
+    s.u = cage.faces(j, 0), s.v = cage.faces(j, 1);
+    s.p = cage.vertices.row(s.u).transpose(), s.q = cage.vertices.row(s.v).transpose();
+    if (lexLess(s.q, s.p)) std::swap(s.p, s.q), std::swap(s.u, s.v);
+  }
+  // Above/below at the later of the two start points: orientation tests only, which amounts to sweeping with a
+  // line turned infinitesimally, so vertical edges need no special case.
+  const auto below = [&](int i, int j) {
+    if (i == j) return false;
+    const Segment &s = segments[i], &t = segments[j];
+    if (!lexLess(t.p, s.p)) {
+      double o = orient(s.p, s.q, t.p);
+      if (o == 0.0) o = orient(s.p, s.q, t.q);
+      if (o != 0.0) return o > 0.0;
+    } else {
+      double o = orient(t.p, t.q, s.p);
+      if (o == 0.0) o = orient(t.p, t.q, s.q);
+      if (o != 0.0) return o < 0.0;
+    }
+    return i < j;  // collinear: any fixed order (they overlap and are reported when they become neighbours)
+  };
+  struct Event {
+    int segment;
+    bool insert;
+  };
+  std::vector<Event> events;
+  events.reserve(2 * static_cast<size_t>(n));
+  for (int j = 0; j < n; ++j) events.push_back({j, true}), events.push_back({j, false});
+  const auto pointOf = [&](const Event& e) { return e.insert ? segments[e.segment].p : segments[e.segment].q; };
+  std::sort(events.begin(), events.end(), [&](const Event& x, const Event& y) {
+    const Eigen::Vector2d a = pointOf(x), b = pointOf(y);
+    if (lexLess(a, b)) return true;
+    if (lexLess(b, a)) return false;
+    if (x.insert != y.insert) return x.insert;  // insertions first, so that touching edges meet in the sweep
+    return x.segment < y.segment;
+  });
+
+  std::set<int, decltype(below)> active(below);
+  std::vector<std::set<int, decltype(below)>::iterator> where(n);
+  const auto check = [&](int i, int j) {
+    if (!illegalMeeting(segments[i], segments[j])) return false;
+    report.intersectingFaces.push_back({std::min(i, j), std::max(i, j)});
+    return true;
+  };
+  for (const Event& e : events) {
+    if (e.insert) {
+      const auto it = active.insert(e.segment).first;
+      where[e.segment] = it;
+      const auto next = std::next(it);
+      if (next != active.end() && check(*it, *next)) return;
+      if (it != active.begin() && check(*std::prev(it), *it)) return;
+    } else {
+      const auto it = where[e.segment];
+      const auto next = std::next(it);
+      if (it != active.begin() && next != active.end() && check(*std::prev(it), *next)) return;
+      active.erase(it);
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// Messages
+// ---------------------------------------------------------------------------------------------------------------
+
+constexpr size_t kListedElements = 5;
+
+template <typename T, typename Describe>
+std::string listSome(const std::vector<T>& items, Describe describe) {
+  std::ostringstream out;
+  for (size_t k = 0; k < items.size() && k < kListedElements; ++k) out << (k ? ", " : "") << describe(items[k]);
+  if (items.size() > kListedElements) out << " and " << items.size() - kListedElements << " more";
+  return out.str();
+}
+
+std::string joinFaces(const std::vector<int>& faces) {
+  std::ostringstream out;
+  for (size_t k = 0; k < faces.size(); ++k) out << (k ? (k + 1 == faces.size() ? " and " : ", ") : "") << faces[k];
+  return out.str();
+}
+
+std::string ridgeName(const CageReport& report, const CageReport::Ridge& ridge) {
+  return report.dim == 3 ? "edge (" + std::to_string(ridge.a) + ", " + std::to_string(ridge.b) + ")"
+                         : "vertex " + std::to_string(ridge.a);
+}
+
+std::string count(size_t n, const std::string& singular, const std::string& plural) {
+  return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+}  // namespace
+
+bool CageReport::valid() const {
+  return numFaces > 0 && indicesValid() && closed() && manifold() && consistentlyOriented() && outward() && simple() &&
+         degenerateFaces.empty() && duplicateVertices.empty() && unreferencedVertices.empty();
+}
+
+CageReport validateCage(const Cage& cage) {
+  SOMICAGE_ASSERT(cage.dim() == 2 || cage.dim() == 3, "a cage is 2D or 3D");
+  SOMICAGE_ASSERT(cage.faces.cols() == cage.dim(), "3D faces are triangles, 2D faces are edges");
+  CageReport report;
+  report.dim = cage.dim();
+  report.numVertices = cage.numVertices();
+  report.numFaces = cage.numFaces();
+  report.diameter = cageDiameter(cage.vertices);
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    const bool inRange =
+        (cage.faces.row(j).array() >= 0).all() && (cage.faces.row(j).array() < cage.numVertices()).all();
+    if (!inRange) report.invalidFaces.push_back(j);
+  }
+  if (!report.invalidFaces.empty()) return report;
+
+  classifyRidges(cage, report);
+  countComponents(cage, report);
+  measureGeometry(cage, report);
+  if (cage.dim() == 2) findIntersection(cage, report);
+  return report;
+}
+
+std::vector<std::string> describeCageProblems(const CageReport& report) {
+  std::vector<std::string> problems;
+  const bool is3d = report.dim == 3;
+  const std::string face = is3d ? "face" : "edge";
+  if (!report.invalidFaces.empty()) {
+    problems.push_back(listSome(report.invalidFaces, [&](int j) { return face + " " + std::to_string(j); }) +
+                       " refer to vertices that do not exist (the cage has " + std::to_string(report.numVertices) +
+                       " vertices): fix the vertex indices");
+    return problems;
+  }
+  if (report.numFaces == 0) {
+    problems.push_back(is3d ? "the cage has no faces: give a closed triangle mesh"
+                            : "the polygon has no edges: give at least 3 vertices in order");
+    return problems;
+  }
+  const auto ridgeWithFaces = [&](const CageReport::Ridge& r) {
+    return ridgeName(report, r) + " (" + face + (r.faces.size() > 1 ? "s " : " ") + joinFaces(r.faces) + ")";
+  };
+  if (!report.boundaryRidges.empty()) {
+    problems.push_back(
+        is3d ? "the cage is not closed: " + count(report.boundaryRidges.size(), "edge has", "edges have") +
+                   " only one face: " + listSome(report.boundaryRidges, ridgeWithFaces) +
+                   "; fill the holes so that every edge has exactly two faces"
+             : "the polygon is not closed: " + listSome(report.boundaryRidges, ridgeWithFaces) +
+                   " ends an open chain; join the edges into one loop");
+  }
+  if (!report.nonManifoldRidges.empty()) {
+    problems.push_back(
+        is3d ? "the cage is not edge-manifold: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
+                   " belong to more than two faces; change the cage so that every edge has exactly two faces"
+             : "the polygon is not simple: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
+                   " joins more than two edges; every vertex of a polygon joins exactly two edges");
+  }
+  if (!report.misorientedRidges.empty()) {
+    problems.push_back(
+        is3d ? "the faces are not consistently oriented: " + listSome(report.misorientedRidges, ridgeWithFaces) +
+                   " run through their common edge in the same direction; reverse the vertex order of one of them"
+             : "the edges do not follow each other: at " + listSome(report.misorientedRidges, ridgeWithFaces) +
+                   " two edges both start or both end; make every edge start where the previous one ends");
+  }
+  if (!is3d && report.components > 1) {
+    problems.push_back("the polygon has " + std::to_string(report.components) +
+                       " separate loops: a 2D cage is one simple polygon");
+  }
+  if (!report.intersectingFaces.empty()) {
+    problems.push_back("the polygon intersects itself: " +
+                       listSome(report.intersectingFaces,
+                                [](const std::array<int, 2>& p) {
+                                  return "edges " + std::to_string(p[0]) + " and " + std::to_string(p[1]);
+                                }) +
+                       " cross, touch or overlap; move vertices so that no two edges meet except at shared ends");
+  }
+  if (!report.degenerateFaces.empty()) {
+    problems.push_back(count(report.degenerateFaces.size(), face, face + "s") + " " +
+                       (is3d ? "have (nearly) zero area" : "have (nearly) zero length") + ": " +
+                       listSome(report.degenerateFaces, [&](int j) { return face + " " + std::to_string(j); }) +
+                       "; remove them or move their vertices apart");
+  }
+  if (report.closed() && report.manifold() && report.consistentlyOriented() && !report.outward()) {
+    std::ostringstream value;
+    value << report.signedVolume;
+    const std::string what = is3d ? "signed volume " : "signed area ";
+    if (report.signedVolume < 0.0) {
+      problems.push_back(
+          is3d ? "the faces point inward (" + what + value.str() + "): reverse the vertex order of every face"
+               : "the polygon is clockwise (" + what + value.str() + "): reverse the order of its vertices");
+    } else {
+      problems.push_back("the cage encloses no " + std::string(is3d ? "volume" : "area") + " (" + what + value.str() +
+                         "): " +
+                         (is3d ? "its faces must bound a solid, with normals pointing out"
+                               : "its vertices must go counter-clockwise around an area"));
+    }
+  }
+  if (!report.duplicateVertices.empty()) {
+    problems.push_back(count(report.duplicateVertices.size(), "pair", "pairs") + " of vertices at the same position: " +
+                       listSome(report.duplicateVertices,
+                                [](const std::array<int, 2>& p) {
+                                  return "vertices " + std::to_string(p[0]) + " and " + std::to_string(p[1]);
+                                }) +
+                       "; merge them (the cage must not touch itself)");
+  }
+  if (!report.unreferencedVertices.empty()) {
+    problems.push_back(count(report.unreferencedVertices.size(), "vertex is", "vertices are") + " not used by any " +
+                       face + ": " +
+                       listSome(report.unreferencedVertices, [](int i) { return "vertex " + std::to_string(i); }) +
+                       "; remove them (a pose must then drop them too)");
+  }
+  return problems;
+}
+
+}  // namespace somicage

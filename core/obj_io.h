@@ -1,0 +1,76 @@
+// Wavefront OBJ input and output: meshes and point sets (any OBJ), cages (3D triangle meshes or 2D polygons)
+// and posed cages. Only positions, faces (`f`) and polylines (`l`) are read; materials, texture coordinates
+// and normals are ignored, so `f a/b/c`, `f a//c` and missing .mtl files are fine. Line endings may be LF,
+// CRLF or CR.
+//
+// Every problem with a file throws somicage::InputError naming the file, the line (or -1), what is wrong and
+// what to do about it. Elements are named 0-based ("face 3", with its line); "index N" is a vertex index as written
+// in the file (1-based).
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "cage.h"
+
+namespace somicage {
+
+// A mesh as written in the file.
+//   vertices: #V by 3 positions (a 2D file has z = 0).
+//   faces:    polygons as 0-based vertex index lists, in file order and winding (3 or more vertices each).
+//   lines:    `l` polylines as 0-based vertex index lists, in file order (2 or more vertices each).
+// A file with vertices only (no faces, no lines) is a point set.
+struct PolygonMesh {
+  Eigen::MatrixXd vertices;
+  std::vector<std::vector<int>> faces;
+  std::vector<std::vector<int>> lines;
+  // 1-based line in the file of each face and each line element (empty for meshes made in code).
+  std::vector<long> faceSourceLines;
+  std::vector<long> lineSourceLines;
+
+  int numVertices() const { return static_cast<int>(vertices.rows()); }
+  int numFaces() const { return static_cast<int>(faces.size()); }
+};
+
+// Parses OBJ text. source names the text in error messages (normally the file path).
+PolygonMesh parseObj(const std::string& text, const std::string& source);
+
+// Reads any OBJ file (mesh, polygon soup or point set).
+PolygonMesh loadMesh(const std::string& path);
+
+// Triangulates polygons (#F polygons -> #T by 3), keeping the winding of each polygon: triangles stay as they
+// are, larger polygons are cut by ear clipping in the plane of their Newell normal (the best-shaped ear first,
+// so a quad is split along the diagonal that gives the larger minimum angle).
+Eigen::MatrixXi triangulatePolygons(const Eigen::MatrixXd& vertices, const std::vector<std::vector<int>>& faces);
+
+// Turns a mesh into a cage; source names it in error messages.
+//   3D (some z != 0): the faces, triangulated (see triangulatePolygons); #V by 3 vertices.
+//   2D (every z == 0): one polygon, #V by 2 vertices, in one of these forms:
+//     - no faces and no lines: the vertices in file order are the loop;
+//     - `l` elements that chain end to start into one closed loop (one `l a b c ... a`, or `l a b`, `l b c`...);
+//     - exactly one face: its vertices are the loop.
+//   The loop must visit every vertex exactly once. Vertex order is kept (cage vertex i = file vertex i), so a
+//   posed file with the same vertex order matches. The loader never reorders or flips faces: validateCage
+//   (cage_validation.h) reports a cage that is not closed, not manifold or inside out.
+Cage cageFromMesh(const PolygonMesh& mesh, const std::string& source);
+
+// loadMesh + cageFromMesh.
+Cage loadCage(const std::string& path);
+
+// The vertices of a posed cage (#V by d, d = restCage.dim(); a 2D cage takes x, y). The file must have the
+// rest cage's vertex count, in the same order; its faces are not compared (a pose may list them in another order).
+Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage);
+
+// The topology to write a cage with saveObj: triangles (3D) or one closed `l` loop (2D). Vertices are copied.
+PolygonMesh cageTopology(const Cage& cage);
+
+// Writes vertices (#V by 2 or 3; 2 columns are written with z = 0) with %.17g, so that loadMesh reads back the
+// same doubles, then topology's faces and lines in its order (topology.vertices is not used). Throws
+// InputError if a coordinate is not finite or an index is out of range, without touching the file.
+// The write is atomic: the data go to PATH.tmp-XXXXXX in the same folder, are flushed to disk (fsync) and
+// renamed over PATH. On any failure the temporary file is removed, an existing PATH is left as it was, and an
+// InputError carries the system's reason (strerror).
+void saveObj(const std::string& path, const Eigen::MatrixXd& vertices, const PolygonMesh& topology);
+
+}  // namespace somicage
