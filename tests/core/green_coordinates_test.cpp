@@ -7,17 +7,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
-#include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "edge_integrals.h"
-#include "errors.h"
-#include "obj_io.h"
+#include "test_models.h"
 #include "test_shapes.h"
 #include "triangle_integrals.h"
 #include "triangle_quadrature.h"
@@ -25,76 +20,10 @@
 namespace somicage {
 namespace {
 
-// ---------------------------------------------------------------------------------------------------------------
-// Cages built here
-// ---------------------------------------------------------------------------------------------------------------
-
-// The cube [-1, 1]^3, each face split into two triangles, outward counter-clockwise.
-Cage makeCube() {
-  Cage cage;
-  cage.vertices.resize(8, 3);
-  for (int i = 0; i < 8; ++i) cage.vertices.row(i) << (i & 1 ? 1 : -1), (i & 2 ? 1 : -1), (i & 4 ? 1 : -1);
-  cage.faces.resize(12, 3);
-  cage.faces << 0, 2, 3, 0, 3, 1,  // z = -1
-      4, 5, 7, 4, 7, 6,            // z = +1
-      0, 1, 5, 0, 5, 4,            // y = -1
-      2, 6, 7, 2, 7, 3,            // y = +1
-      0, 4, 6, 0, 6, 2,            // x = -1
-      1, 3, 7, 1, 7, 5;            // x = +1
-  return cage;
-}
-
-// The L-shaped hexagon {x <= 1 or y <= 1} in [0, 2]^2, counter-clockwise (non-convex, reflex corner at (1, 1)).
-Eigen::MatrixXd lLoop() {
-  Eigen::MatrixXd loop(6, 2);
-  loop << 0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2;
-  return loop;
-}
-
-// The L extruded over z in [0, 1]: a non-convex 3D cage whose inner side planes x = 1 and y = 1 cross its inside.
-Cage makeExtrudedL() {
-  const Eigen::MatrixXd loop = lLoop();
-  Cage cage;
-  cage.vertices.resize(12, 3);
-  for (int k = 0; k < 6; ++k) {
-    cage.vertices.row(k) << loop(k, 0), loop(k, 1), 0;
-    cage.vertices.row(k + 6) << loop(k, 0), loop(k, 1), 1;
-  }
-  std::vector<Eigen::Vector3i> faces;
-  for (int k = 0; k < 6; ++k) {  // sides: quad (k, k+1, k+1+6, k+6), outward for a counter-clockwise loop
-    const int k1 = (k + 1) % 6;
-    faces.push_back({k, k1, k1 + 6});
-    faces.push_back({k, k1 + 6, k + 6});
-  }
-  // Caps: a fan from corner 0, which sees the whole L; bottom faces down, top faces up.
-  for (int k = 1; k < 5; ++k) faces.push_back({0, k + 1, k}), faces.push_back({6, k + 6, k + 7});
-  cage.faces.resize(faces.size(), 3);
-  for (size_t j = 0; j < faces.size(); ++j) cage.faces.row(j) = faces[j];
-  return cage;
-}
-
-// Random points of the extruded L (or of the flat L when dim = 2) at least `margin` inside.
-Eigen::MatrixXd randomLPoints(int count, int dim, double margin, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(0, 1);
-  Eigen::MatrixXd P(count, dim);
-  for (int p = 0; p < count;) {
-    const double x = margin + (2 - 2 * margin) * uniform(rng), y = margin + (2 - 2 * margin) * uniform(rng);
-    if (x > 1 - margin && y > 1 - margin) continue;
-    P(p, 0) = x, P(p, 1) = y;
-    if (dim == 3) P(p, 2) = margin + (1 - 2 * margin) * uniform(rng);
-    ++p;
-  }
-  return P;
-}
-
-Eigen::MatrixXd randomCubePoints(int count, double halfSide, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(-halfSide, halfSide);
-  Eigen::MatrixXd P(count, 3);
-  for (int p = 0; p < count; ++p) P.row(p) << uniform(rng), uniform(rng), uniform(rng);
-  return P;
-}
+using test::lLoop;
+using test::makeCube;
+using test::makeExtrudedL;
+using test::randomLPoints;
 
 struct TestCase {
   std::string name;
@@ -103,7 +32,7 @@ struct TestCase {
 };
 
 std::vector<TestCase> cases3d() {
-  return {{"cube", makeCube(), randomCubePoints(300, 0.95, 1)},
+  return {{"cube", makeCube(), test::randomBoxPoints(300, 3, -0.95, 0.95, 1)},
           {"icosphere", test::makeIcosphere(2), test::randomBallPoints(300, 0.9, 2)},
           {"bumpy sphere", test::makeBumpySphere(2), test::randomBallPoints(300, 0.6, 3)},
           {"extruded L", makeExtrudedL(), randomLPoints(300, 3, 0.02, 4)}};
@@ -334,7 +263,7 @@ TEST(GreenCoordinates, FiniteOnTheCage) {
   // A zero-area face (a repeated vertex) and a zero-length 2D edge.
   cube.faces.conservativeResize(13, 3);
   cube.faces.row(12) << 0, 1, 1;
-  const GreenCoordinates gc = computeGreenCoordinates(cube, randomCubePoints(20, 0.9, 13));
+  const GreenCoordinates gc = computeGreenCoordinates(cube, test::randomBoxPoints(20, 3, -0.9, 0.9, 13));
   EXPECT_TRUE(allFinite(gc));
   EXPECT_EQ(gc.psi.col(12).cwiseAbs().maxCoeff(), 0.0);
   EXPECT_TRUE(greenFaceScales(cube, cube.vertices).allFinite());
@@ -358,90 +287,33 @@ TEST(GreenCoordinates, ResultIndependentOfThreadCount) {
     const GreenCoordinates many = computeGreenCoordinates(cage, points, threads);
     EXPECT_TRUE(one.phi == many.phi && one.psi == many.psi) << threads << " threads";
   }
-  PrecomputeOptions options;
-  options.threads = 1;
-  const Eigen::MatrixXd posed = test::bendPose(cage.vertices, 0.3, 16);
-  const Eigen::MatrixXd a = makeDeformer(Method::Green, cage, points, options)->deform(posed, {});
-  options.threads = 3;
-  EXPECT_TRUE(a == makeDeformer(Method::Green, cage, points, options)->deform(posed, {}));
+  test::expectDeformIndependentOfThreads(Method::Green, cage, points, test::bendPose(cage.vertices, 0.3, 16));
 }
 
 TEST(GreenCoordinates, ReportsProgressAndCancels) {
   const Cage cage = test::makeIcosphere(1);
   const Eigen::MatrixXd points = test::randomBallPoints(20000, 0.8, 17);
-  std::vector<double> fractions;
-  makeDeformer(Method::Green, cage, points, {}, [&](double f) {
-    fractions.push_back(f);
-    return true;
-  });
-  ASSERT_GE(fractions.size(), 3u);
-  EXPECT_EQ(fractions.front(), 0.0);
-  EXPECT_EQ(fractions.back(), 1.0);
-  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
-
-  int calls = 0;
-  EXPECT_THROW(makeDeformer(Method::Green, cage, points, {}, [&](double) { return ++calls < 2; }), Cancelled);
-  EXPECT_EQ(calls, 2);
+  test::expectProgressAndCancel(Method::Green, cage, points);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
 // The shared models
 // ---------------------------------------------------------------------------------------------------------------
 
-#ifdef SOMICAGE_SANITIZE
-constexpr int kMaxModelPoints = 200;  // instrumented code is ~20x slower; a subsample still covers every model
-#else
-constexpr int kMaxModelPoints = 2000;
-#endif
+using test::ModelCase;
 
-struct ModelCage {
-  std::string folder, mesh, cage, pose;  // pose may be empty
-};
-
-std::vector<ModelCage> modelCages() {
-  return {{"firehydrant", "fireHydrant.obj", "fireHydrant_cages_triangulated.obj",
-           "fireHydrant_cages_triangulated_deformed.obj"},
-          {"spikybox", "SpikyBox.obj", "spikybox_cages_triangulated.obj", "spikybox_cages_triangulated_deformed.obj"},
-          {"wiresphere", "wireSphere.obj", "wireSphere_cages_triangulated.obj",
-           "wireSphere_cages_triangulated_deformed.obj"},
-          {"cactus", "cactus.obj", "cactus_cages_triangulated.obj", "cactus_cages_triangulated_deformed.obj"},
-          {"ogre", "ogre.obj", "ogre_cages_triangulated.obj", "ogre_cages_triangulated_deformed.obj"},
-          {"botijo", "botijo.obj", "botijo_cages_triangulated.obj", "botijo_cages_triangulated_deformed.obj"},
-          {"manhead", "manHead.obj", "manHead_cages_triangulated.obj", "manHead_cages_triangulated_deformed.obj"},
-          {"beast", "Beast.obj", "beast_cages_triangulated.obj", "beast_cages_triangulated_deformed.obj"},
-          {"bench", "Bench.obj", "bench_cages_triangulated.obj", "bench_cages_triangulated_deformed.obj"},
-          {"armadillo", "armadilloman.obj", "bounding_mesh.obj", "deformed_fixed_1.obj"},
-          {"horse", "horse.obj", "bounding_meshb.obj", "deformed_bounding_mesh4b.obj"},
-          {"chessbishop", "chessBishop.obj", "bishop_cages_triangulated.obj", "bishop_cages_triangulated_deformed.obj"},
-          {"sphere", "sphere.obj", "sphere_cages_triangulated.obj", "sphere_cages_triangulated_deformed.obj"},
-          {"cube", "cube.obj", "cube_cages_triangulated.obj", ""},
-          {"bar", "bar.OBJ", "bar_cage.OBJ", ""},
-          {"bar", "bar.OBJ", "bar_cage_complex.obj", ""},
-          {"bar", "bar.OBJ", "bar_cage_partial.OBJ", ""},
-          {"bunny", "bunny.obj", "bunny-cage-robust.obj", ""}};
-}
-
-class GreenModels : public ::testing::TestWithParam<ModelCage> {};
+class GreenModels : public ::testing::TestWithParam<ModelCase> {};
 
 TEST_P(GreenModels, IdentitySimilarityAndPoseWithoutNaN) {
   // At most kMaxModelPoints (2000) mesh vertices per model. Inside points (sum phi > 1/2) reproduce themselves to 1e-10
   // of the diameter (measured <= 6e-14 on every full mesh) and follow a similarity to 1e-9; every pose gives finite
   // points.
-  const ModelCage& m = GetParam();
-  const std::filesystem::path folder = std::filesystem::path(SOMICAGE_MODELS_DIR) / m.folder;
-  if (!std::filesystem::exists(folder / m.cage)) GTEST_SKIP() << "model absent: " << (folder / m.cage);
-  const Cage cage = loadCage((folder / m.cage).string());
-  ASSERT_EQ(cage.dim(), 3);
-  const Eigen::MatrixXd meshVertices = loadMesh((folder / m.mesh).string()).vertices;
-  const int stride = static_cast<int>((meshVertices.rows() + kMaxModelPoints - 1) / kMaxModelPoints);
-  Eigen::MatrixXd points(meshVertices.rows() / stride, 3);
-  for (int p = 0; p < points.rows(); ++p) points.row(p) = meshVertices.row(p * stride);
-
-  const auto start = std::chrono::steady_clock::now();
-  const GreenCoordinates gc = computeGreenCoordinates(cage, points);
-  RecordProperty("precompute_ms_per_1000_points",
-                 std::to_string(1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                                points.rows()));
+  const ModelCase& m = GetParam();
+  Cage cage;
+  Eigen::MatrixXd points;
+  if (!test::loadModel(m, cage, points)) return;
+  const GreenCoordinates gc =
+      test::timedPrecompute(points.rows(), [&] { return computeGreenCoordinates(cage, points); });
   ASSERT_TRUE(allFinite(gc)) << m.cage;
   const double diameter = cageDiameter(cage.vertices);
   const Eigen::MatrixXd X = gc.phi * cage.vertices + gc.psi * faceNormals(cage, cage.vertices);
@@ -463,17 +335,11 @@ TEST_P(GreenModels, IdentitySimilarityAndPoseWithoutNaN) {
   EXPECT_LE(simWorst, 1e-9 * sim.scale * diameter) << m.cage;
 
   if (m.pose.empty()) return;
-  const Eigen::MatrixXd posed = loadPosedVertices((folder / m.pose).string(), cage);
+  const Eigen::MatrixXd posed = loadPosedVertices(test::modelPath(m, m.pose), cage);
   EXPECT_TRUE(deformer->deform(posed, {}).allFinite()) << m.pose;
 }
 
-INSTANTIATE_TEST_SUITE_P(Green, GreenModels, ::testing::ValuesIn(modelCages()),
-                         [](const ::testing::TestParamInfo<ModelCage>& info) {
-                           std::string name = info.param.cage.substr(0, info.param.cage.find('.'));
-                           for (char& ch : name)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(Green, GreenModels, ::testing::ValuesIn(test::modelCases()), test::modelCaseName);
 
 }  // namespace
 }  // namespace somicage

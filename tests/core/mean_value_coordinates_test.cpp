@@ -8,87 +8,23 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <cctype>
-#include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <random>
 #include <string>
 #include <vector>
 
-#include "errors.h"
-#include "obj_io.h"
+#include "test_models.h"
 #include "test_shapes.h"
 #include "triangle_quadrature.h"
 
 namespace somicage {
 namespace {
 
-// ---------------------------------------------------------------------------------------------------------------
-// Cages built here
-// ---------------------------------------------------------------------------------------------------------------
-
-// The cube [-1, 1]^3, each face split into two triangles, outward counter-clockwise.
-Cage makeCube() {
-  Cage cage;
-  cage.vertices.resize(8, 3);
-  for (int i = 0; i < 8; ++i) cage.vertices.row(i) << (i & 1 ? 1 : -1), (i & 2 ? 1 : -1), (i & 4 ? 1 : -1);
-  cage.faces.resize(12, 3);
-  cage.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7,
-      5;
-  return cage;
-}
-
-// The L-shaped hexagon {x <= 1 or y <= 1} in [0, 2]^2, counter-clockwise (non-convex, reflex corner at (1, 1)).
-Eigen::MatrixXd lLoop() {
-  Eigen::MatrixXd loop(6, 2);
-  loop << 0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2;
-  return loop;
-}
-
-// The L extruded over z in [0, 1]: a non-convex 3D cage whose inner side planes x = 1 and y = 1 cross its inside.
-Cage makeExtrudedL() {
-  const Eigen::MatrixXd loop = lLoop();
-  Cage cage;
-  cage.vertices.resize(12, 3);
-  for (int k = 0; k < 6; ++k) {
-    cage.vertices.row(k) << loop(k, 0), loop(k, 1), 0;
-    cage.vertices.row(k + 6) << loop(k, 0), loop(k, 1), 1;
-  }
-  std::vector<Eigen::Vector3i> faces;
-  for (int k = 0; k < 6; ++k) {
-    const int k1 = (k + 1) % 6;
-    faces.push_back({k, k1, k1 + 6});
-    faces.push_back({k, k1 + 6, k + 6});
-  }
-  for (int k = 1; k < 5; ++k) faces.push_back({0, k + 1, k}), faces.push_back({6, k + 6, k + 7});
-  cage.faces.resize(faces.size(), 3);
-  for (size_t j = 0; j < faces.size(); ++j) cage.faces.row(j) = faces[j];
-  return cage;
-}
-
-Eigen::MatrixXd randomLPoints(int count, int dim, double margin, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(0, 1);
-  Eigen::MatrixXd P(count, dim);
-  for (int p = 0; p < count;) {
-    const double x = margin + (2 - 2 * margin) * uniform(rng), y = margin + (2 - 2 * margin) * uniform(rng);
-    if (x > 1 - margin && y > 1 - margin) continue;
-    P(p, 0) = x, P(p, 1) = y;
-    if (dim == 3) P(p, 2) = margin + (1 - 2 * margin) * uniform(rng);
-    ++p;
-  }
-  return P;
-}
-
-Eigen::MatrixXd randomBoxPoints(int count, int dim, double lo, double hi, unsigned seed) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> uniform(lo, hi);
-  Eigen::MatrixXd P(count, dim);
-  for (int p = 0; p < count; ++p)
-    for (int a = 0; a < dim; ++a) P(p, a) = uniform(rng);
-  return P;
-}
+using test::lLoop;
+using test::makeCube;
+using test::makeExtrudedL;
+using test::randomBoxPoints;
+using test::randomLPoints;
 
 struct TestCase {
   std::string name;
@@ -369,90 +305,32 @@ TEST(MeanValueCoordinates, ResultIndependentOfThreadCount) {
         cage.dim() == 3 ? test::randomBallPoints(3000, 0.6, 18) : test::randomDiscPoints(3000, 0.45, 18);
     const RowMatrixXd one = computeMeanValueCoordinates(cage, points, 1);
     for (int threads : {2, 3}) EXPECT_TRUE(one == computeMeanValueCoordinates(cage, points, threads)) << threads;
-    PrecomputeOptions options;
-    options.threads = 1;
-    const Eigen::MatrixXd posed = test::bendPose(cage.vertices, 0.3, 19);
-    const Eigen::MatrixXd a = makeDeformer(Method::MeanValue, cage, points, options)->deform(posed, {});
-    options.threads = 3;
-    EXPECT_TRUE(a == makeDeformer(Method::MeanValue, cage, points, options)->deform(posed, {}));
+    test::expectDeformIndependentOfThreads(Method::MeanValue, cage, points, test::bendPose(cage.vertices, 0.3, 19));
   }
 }
 
 TEST(MeanValueCoordinates, ReportsProgressAndCancels) {
   const Cage cage = test::makeIcosphere(1);
   const Eigen::MatrixXd points = test::randomBallPoints(20000, 0.8, 20);
-  std::vector<double> fractions;
-  makeDeformer(Method::MeanValue, cage, points, {}, [&](double f) {
-    fractions.push_back(f);
-    return true;
-  });
-  ASSERT_GE(fractions.size(), 3u);
-  EXPECT_EQ(fractions.front(), 0.0);
-  EXPECT_EQ(fractions.back(), 1.0);
-  EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
-
-  int calls = 0;
-  EXPECT_THROW(makeDeformer(Method::MeanValue, cage, points, {}, [&](double) { return ++calls < 2; }), Cancelled);
-  EXPECT_EQ(calls, 2);
+  test::expectProgressAndCancel(Method::MeanValue, cage, points);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
 // The shared models
 // ---------------------------------------------------------------------------------------------------------------
 
-#ifdef SOMICAGE_SANITIZE
-constexpr int kMaxModelPoints = 200;  // instrumented code is ~20x slower; a subsample still covers every model
-#else
-constexpr int kMaxModelPoints = 2000;
-#endif
+using test::ModelCase;
 
-struct ModelCage {
-  std::string folder, mesh, cage, pose;  // pose may be empty
-};
-
-std::vector<ModelCage> modelCages() {
-  return {{"firehydrant", "fireHydrant.obj", "fireHydrant_cages_triangulated.obj",
-           "fireHydrant_cages_triangulated_deformed.obj"},
-          {"spikybox", "SpikyBox.obj", "spikybox_cages_triangulated.obj", "spikybox_cages_triangulated_deformed.obj"},
-          {"wiresphere", "wireSphere.obj", "wireSphere_cages_triangulated.obj",
-           "wireSphere_cages_triangulated_deformed.obj"},
-          {"cactus", "cactus.obj", "cactus_cages_triangulated.obj", "cactus_cages_triangulated_deformed.obj"},
-          {"ogre", "ogre.obj", "ogre_cages_triangulated.obj", "ogre_cages_triangulated_deformed.obj"},
-          {"botijo", "botijo.obj", "botijo_cages_triangulated.obj", "botijo_cages_triangulated_deformed.obj"},
-          {"manhead", "manHead.obj", "manHead_cages_triangulated.obj", "manHead_cages_triangulated_deformed.obj"},
-          {"beast", "Beast.obj", "beast_cages_triangulated.obj", "beast_cages_triangulated_deformed.obj"},
-          {"bench", "Bench.obj", "bench_cages_triangulated.obj", "bench_cages_triangulated_deformed.obj"},
-          {"armadillo", "armadilloman.obj", "bounding_mesh.obj", "deformed_fixed_1.obj"},
-          {"horse", "horse.obj", "bounding_meshb.obj", "deformed_bounding_mesh4b.obj"},
-          {"chessbishop", "chessBishop.obj", "bishop_cages_triangulated.obj", "bishop_cages_triangulated_deformed.obj"},
-          {"sphere", "sphere.obj", "sphere_cages_triangulated.obj", "sphere_cages_triangulated_deformed.obj"},
-          {"cube", "cube.obj", "cube_cages_triangulated.obj", ""},
-          {"bar", "bar.OBJ", "bar_cage.OBJ", ""},
-          {"bar", "bar.OBJ", "bar_cage_complex.obj", ""},
-          {"bar", "bar.OBJ", "bar_cage_partial.OBJ", ""},
-          {"bunny", "bunny.obj", "bunny-cage-robust.obj", ""}};
-}
-
-class MeanValueModels : public ::testing::TestWithParam<ModelCage> {};
+class MeanValueModels : public ::testing::TestWithParam<ModelCase> {};
 
 TEST_P(MeanValueModels, IdentityAffineAndPoseWithoutNaN) {
   // At most kMaxModelPoints (2000) mesh vertices per model, inside or outside the cage. Identity to 1e-10 of the
   // diameter (measured <= 8e-14 on every full mesh), an affine map to 1e-9, and every pose gives finite points.
-  const ModelCage& m = GetParam();
-  const std::filesystem::path folder = std::filesystem::path(SOMICAGE_MODELS_DIR) / m.folder;
-  if (!std::filesystem::exists(folder / m.cage)) GTEST_SKIP() << "model absent: " << (folder / m.cage);
-  const Cage cage = loadCage((folder / m.cage).string());
-  ASSERT_EQ(cage.dim(), 3);
-  const Eigen::MatrixXd meshVertices = loadMesh((folder / m.mesh).string()).vertices;
-  const int stride = static_cast<int>((meshVertices.rows() + kMaxModelPoints - 1) / kMaxModelPoints);
-  Eigen::MatrixXd points(meshVertices.rows() / stride, 3);
-  for (int p = 0; p < points.rows(); ++p) points.row(p) = meshVertices.row(p * stride);
-
-  const auto start = std::chrono::steady_clock::now();
-  const RowMatrixXd w = computeMeanValueCoordinates(cage, points);
-  RecordProperty("precompute_ms_per_1000_points",
-                 std::to_string(1e6 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
-                                points.rows()));
+  const ModelCase& m = GetParam();
+  Cage cage;
+  Eigen::MatrixXd points;
+  if (!test::loadModel(m, cage, points)) return;
+  const RowMatrixXd w = test::timedPrecompute(points.rows(), [&] { return computeMeanValueCoordinates(cage, points); });
   ASSERT_TRUE(w.allFinite()) << m.cage;
   EXPECT_LE(partitionError(w), 1e-12) << m.cage;
   EXPECT_LE(identityError(cage, w, points), 1e-10) << m.cage;
@@ -466,16 +344,10 @@ TEST_P(MeanValueModels, IdentityAffineAndPoseWithoutNaN) {
   EXPECT_LE((deformer->deform(posed, {}) - expected).rowwise().norm().maxCoeff(), 1e-9 * cageDiameter(posed)) << m.cage;
 
   if (m.pose.empty()) return;
-  EXPECT_TRUE(deformer->deform(loadPosedVertices((folder / m.pose).string(), cage), {}).allFinite()) << m.pose;
+  EXPECT_TRUE(deformer->deform(loadPosedVertices(test::modelPath(m, m.pose), cage), {}).allFinite()) << m.pose;
 }
 
-INSTANTIATE_TEST_SUITE_P(MeanValue, MeanValueModels, ::testing::ValuesIn(modelCages()),
-                         [](const ::testing::TestParamInfo<ModelCage>& info) {
-                           std::string name = info.param.cage.substr(0, info.param.cage.find('.'));
-                           for (char& ch : name)
-                             if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(MeanValue, MeanValueModels, ::testing::ValuesIn(test::modelCases()), test::modelCaseName);
 
 }  // namespace
 }  // namespace somicage

@@ -56,6 +56,75 @@ inline Cage makeBumpySphere(int levels) {
   return cage;
 }
 
+// The cube [-1, 1]^3, each face split into two triangles, outward counter-clockwise.
+inline Cage makeCube() {
+  Cage cage;
+  cage.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i) cage.vertices.row(i) << (i & 1 ? 1 : -1), (i & 2 ? 1 : -1), (i & 4 ? 1 : -1);
+  cage.faces.resize(12, 3);
+  cage.faces << 0, 2, 3, 0, 3, 1,  // z = -1
+      4, 5, 7, 4, 7, 6,            // z = +1
+      0, 1, 5, 0, 5, 4,            // y = -1
+      2, 6, 7, 2, 7, 3,            // y = +1
+      0, 4, 6, 0, 6, 2,            // x = -1
+      1, 3, 7, 1, 7, 5;            // x = +1
+  return cage;
+}
+
+// The L-shaped hexagon {x <= 1 or y <= 1} in [0, 2]^2, counter-clockwise (non-convex, reflex corner at (1, 1)).
+inline Eigen::MatrixXd lLoop() {
+  Eigen::MatrixXd loop(6, 2);
+  loop << 0, 0, 2, 0, 2, 1, 1, 1, 1, 2, 0, 2;
+  return loop;
+}
+
+// The L extruded over z in [0, 1]: a non-convex 3D cage whose inner side planes x = 1 and y = 1 cross its inside.
+inline Cage makeExtrudedL() {
+  const Eigen::MatrixXd loop = lLoop();
+  Cage cage;
+  cage.vertices.resize(12, 3);
+  for (int k = 0; k < 6; ++k) {
+    cage.vertices.row(k) << loop(k, 0), loop(k, 1), 0;
+    cage.vertices.row(k + 6) << loop(k, 0), loop(k, 1), 1;
+  }
+  std::vector<Eigen::Vector3i> faces;
+  for (int k = 0; k < 6; ++k) {  // sides: quad (k, k+1, k+1+6, k+6), outward for a counter-clockwise loop
+    const int k1 = (k + 1) % 6;
+    faces.push_back({k, k1, k1 + 6});
+    faces.push_back({k, k1 + 6, k + 6});
+  }
+  // Caps: a fan from corner 0, which sees the whole L; bottom faces down, top faces up.
+  for (int k = 1; k < 5; ++k) faces.push_back({0, k + 1, k}), faces.push_back({6, k + 6, k + 7});
+  cage.faces.resize(faces.size(), 3);
+  for (size_t j = 0; j < faces.size(); ++j) cage.faces.row(j) = faces[j];
+  return cage;
+}
+
+// Random points of the extruded L (or of the flat L when dim = 2) at least `margin` inside.
+inline Eigen::MatrixXd randomLPoints(int count, int dim, double margin, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(0, 1);
+  Eigen::MatrixXd P(count, dim);
+  for (int p = 0; p < count;) {
+    const double x = margin + (2 - 2 * margin) * uniform(rng), y = margin + (2 - 2 * margin) * uniform(rng);
+    if (x > 1 - margin && y > 1 - margin) continue;
+    P(p, 0) = x, P(p, 1) = y;
+    if (dim == 3) P(p, 2) = margin + (1 - 2 * margin) * uniform(rng);
+    ++p;
+  }
+  return P;
+}
+
+// Random points of the box [lo, hi]^dim, drawn row by row, coordinate by coordinate.
+inline Eigen::MatrixXd randomBoxPoints(int count, int dim, double lo, double hi, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> uniform(lo, hi);
+  Eigen::MatrixXd P(count, dim);
+  for (int p = 0; p < count; ++p)
+    for (int a = 0; a < dim; ++a) P(p, a) = uniform(rng);
+  return P;
+}
+
 // Random points at radius <= maxRadius around the origin (inside the icosphere for maxRadius < ~0.79).
 inline Eigen::MatrixXd randomBallPoints(int count, double maxRadius, unsigned seed) {
   std::mt19937 rng(seed);

@@ -1,0 +1,311 @@
+// Cage validation: each kind of defect on a small cage, the 2D sweep against a brute-force check on random
+// polygons, and the counts models/README.md gives for the shared meshes (boundary edges, inward faces).
+#include "cage_validation.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <filesystem>
+#include <random>
+
+#include "obj_io.h"
+
+namespace somicage {
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDataDir = SOMICAGE_TEST_DATA_DIR;
+
+Cage cube() { return loadCage((kDataDir / "cube_cage.obj").string()); }
+
+Cage polygon(const std::vector<Eigen::Vector2d>& points) {
+  Eigen::MatrixXd loop(static_cast<Eigen::Index>(points.size()), 2);
+  for (size_t k = 0; k < points.size(); ++k) loop.row(static_cast<Eigen::Index>(k)) = points[k].transpose();
+  return makePolygonCage(loop);
+}
+
+bool mentions(const std::vector<std::string>& problems, const std::string& text) {
+  for (const std::string& problem : problems) {
+    if (problem.find(text) != std::string::npos) return true;
+  }
+  return false;
+}
+
+std::string joined(const std::vector<std::string>& problems) {
+  std::string all;
+  for (const std::string& problem : problems) all += "\n  " + problem;
+  return all;
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// 3D
+// ---------------------------------------------------------------------------------------------------------------
+
+TEST(CageValidation, CubeIsValid) {
+  const CageReport report = validateCage(cube());
+  EXPECT_EQ(report.dim, 3);
+  EXPECT_EQ(report.numVertices, 8);
+  EXPECT_EQ(report.numFaces, 12);
+  EXPECT_TRUE(report.closed() && report.manifold() && report.consistentlyOriented() && report.outward());
+  EXPECT_NEAR(report.signedVolume, 8.0, 1e-14);
+  EXPECT_EQ(report.components, 1);
+  EXPECT_TRUE(report.valid());
+  EXPECT_TRUE(describeCageProblems(report).empty()) << joined(describeCageProblems(report));
+}
+
+TEST(CageValidation, HoleListsItsBoundaryEdges) {
+  Cage open = cube();
+  const Eigen::RowVector3i removed = open.faces.row(11);
+  open.faces.conservativeResize(11, 3);
+  const CageReport report = validateCage(open);
+  EXPECT_FALSE(report.closed());
+  ASSERT_EQ(report.boundaryRidges.size(), 3u);
+  for (const auto& ridge : report.boundaryRidges) {
+    EXPECT_EQ(ridge.faces.size(), 1u);
+    EXPECT_TRUE((removed.array() == ridge.a).any() && (removed.array() == ridge.b).any());
+  }
+  EXPECT_FALSE(report.valid());
+  const auto problems = describeCageProblems(report);
+  EXPECT_TRUE(mentions(problems, "the cage is not closed: 3 edges have only one face")) << joined(problems);
+}
+
+TEST(CageValidation, FinMakesNonManifoldEdges) {
+  Cage fin = cube();
+  fin.faces.conservativeResize(14, 3);
+  fin.faces.row(12) = fin.faces.row(0);
+  fin.faces.row(13) << fin.faces(0, 0), fin.faces(0, 2), fin.faces(0, 1);
+  const CageReport report = validateCage(fin);
+  EXPECT_FALSE(report.manifold());
+  EXPECT_EQ(report.nonManifoldRidges.size(), 3u);
+  for (const auto& ridge : report.nonManifoldRidges) EXPECT_EQ(ridge.faces.size(), 4u);
+  EXPECT_TRUE(mentions(describeCageProblems(report), "not edge-manifold"));
+}
+
+TEST(CageValidation, FlippedFaceIsInconsistent) {
+  Cage flipped = cube();
+  flipped.faces.row(4) = flipped.faces.row(4).reverse().eval();
+  const CageReport report = validateCage(flipped);
+  EXPECT_TRUE(report.closed());
+  EXPECT_TRUE(report.manifold());
+  EXPECT_FALSE(report.consistentlyOriented());
+  EXPECT_EQ(report.misorientedRidges.size(), 3u);
+  for (const auto& ridge : report.misorientedRidges)
+    EXPECT_NE(std::find(ridge.faces.begin(), ridge.faces.end(), 4), ridge.faces.end());
+  const auto problems = describeCageProblems(report);
+  EXPECT_TRUE(mentions(problems, "not consistently oriented")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "reverse the vertex order of one of them")) << joined(problems);
+}
+
+TEST(CageValidation, InsideOutCubePointsInward) {
+  Cage insideOut = cube();
+  insideOut.faces = insideOut.faces.rowwise().reverse().eval();
+  const CageReport report = validateCage(insideOut);
+  EXPECT_TRUE(report.closed() && report.manifold() && report.consistentlyOriented());
+  EXPECT_FALSE(report.outward());
+  EXPECT_NEAR(report.signedVolume, -8.0, 1e-14);
+  const auto problems = describeCageProblems(report);
+  ASSERT_EQ(problems.size(), 1u) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "the faces point inward")) << joined(problems);
+}
+
+TEST(CageValidation, DegenerateDuplicateUnusedAndInvalid) {
+  Cage c = cube();
+  c.vertices.conservativeResize(10, 3);
+  c.vertices.row(8) = c.vertices.row(3);                              // duplicate of vertex 3, unused
+  c.vertices.row(9) = 0.5 * (c.vertices.row(0) + c.vertices.row(1));  // on the edge 0-1
+  c.faces.conservativeResize(14, 3);
+  c.faces.row(12) << 0, 9, 1;  // zero area
+  c.faces.row(13) << 2, 2, 5;  // repeated vertex
+  CageReport report = validateCage(c);
+  EXPECT_EQ(report.degenerateFaces, (std::vector<int>{12, 13}));
+  EXPECT_EQ(report.duplicateVertices, (std::vector<std::array<int, 2>>{{3, 8}}));
+  EXPECT_EQ(report.unreferencedVertices, (std::vector<int>{8}));
+  const auto problems = describeCageProblems(report);
+  EXPECT_TRUE(mentions(problems, "2 faces have (nearly) zero area: face 12, face 13")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "vertices 3 and 8")) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "vertex 8")) << joined(problems);
+
+  c.faces(5, 1) = 42;
+  report = validateCage(c);
+  EXPECT_EQ(report.invalidFaces, std::vector<int>{5});
+  EXPECT_FALSE(report.valid());
+  EXPECT_TRUE(mentions(describeCageProblems(report), "face 5 refer to vertices that do not exist"));
+}
+
+TEST(CageValidation, DuplicatesWithinTheToleranceOnly) {
+  Cage c = cube();  // diameter 2 sqrt(3): tolerance 3.5e-10
+  c.vertices.conservativeResize(11, 3);
+  c.vertices.row(8) = c.vertices.row(0) + Eigen::RowVector3d(1e-11, -1e-11, 2e-10);  // a neighbouring grid cell
+  c.vertices.row(9) = c.vertices.row(1) + Eigen::RowVector3d(1e-9, 0, 0);            // beyond the tolerance
+  c.vertices.row(10) = c.vertices.row(0);
+  const CageReport report = validateCage(c);
+  EXPECT_EQ(report.duplicateVertices, (std::vector<std::array<int, 2>>{{0, 8}, {0, 10}, {8, 10}}));
+}
+
+TEST(CageValidation, TwoSeparateCubesAreValid) {
+  const Cage one = cube();
+  Cage two;
+  two.vertices.resize(16, 3);
+  two.vertices << one.vertices, one.vertices.rowwise() + Eigen::RowVector3d(5, 0, 0);
+  two.faces.resize(24, 3);
+  two.faces << one.faces, one.faces.array() + 8;
+  const CageReport report = validateCage(two);
+  EXPECT_EQ(report.components, 2);
+  EXPECT_NEAR(report.signedVolume, 16.0, 1e-13);
+  EXPECT_TRUE(report.valid()) << joined(describeCageProblems(report));
+}
+
+// models/README.md: the open meshes' boundary edge counts, and the horse's inward faces.
+TEST(CageValidation, SharedMeshesHaveTheirDocumentedDefects) {
+  if (!fs::is_directory(SOMICAGE_MODELS_DIR)) GTEST_SKIP() << "models folder " << SOMICAGE_MODELS_DIR << " is absent";
+  const fs::path models(SOMICAGE_MODELS_DIR);
+  const std::pair<const char*, size_t> open[] = {
+      {"firehydrant/fireHydrant.obj", 1536}, {"cactus/cactus.obj", 1024}, {"manhead/manHead.obj", 104}};
+  for (const auto& [file, boundaryEdges] : open) {
+    SCOPED_TRACE(file);
+    const CageReport report = validateCage(loadCage((models / file).string()));
+    EXPECT_EQ(report.boundaryRidges.size(), boundaryEdges);
+    EXPECT_FALSE(report.valid());
+  }
+  const CageReport horse = validateCage(loadCage((models / "horse/horse.obj").string()));
+  EXPECT_TRUE(horse.closed() && horse.manifold() && horse.consistentlyOriented());
+  EXPECT_LT(horse.signedVolume, 0.0);
+  EXPECT_TRUE(mentions(describeCageProblems(horse), "the faces point inward"));
+}
+
+// ---------------------------------------------------------------------------------------------------------------
+// 2D
+// ---------------------------------------------------------------------------------------------------------------
+
+TEST(CageValidation, SquareIsValidAndClockwiseIsNot) {
+  const Cage square = polygon({{-1, -1}, {1, -1}, {1, 1}, {-1, 1}});
+  CageReport report = validateCage(square);
+  EXPECT_EQ(report.dim, 2);
+  EXPECT_TRUE(report.simple());
+  EXPECT_DOUBLE_EQ(report.signedVolume, 4.0);
+  EXPECT_TRUE(report.valid()) << joined(describeCageProblems(report));
+
+  report = validateCage(polygon({{-1, -1}, {-1, 1}, {1, 1}, {1, -1}}));
+  EXPECT_TRUE(report.simple());
+  EXPECT_DOUBLE_EQ(report.signedVolume, -4.0);
+  const auto problems = describeCageProblems(report);
+  ASSERT_EQ(problems.size(), 1u) << joined(problems);
+  EXPECT_TRUE(mentions(problems, "the polygon is clockwise")) << joined(problems);
+}
+
+TEST(CageValidation, SelfIntersectingPolygons) {
+  struct Case {
+    const char* name;
+    std::vector<Eigen::Vector2d> points;
+  };
+  const Case cases[] = {
+      {"bow tie", {{0, 0}, {1, 1}, {1, 0}, {0, 1}}},
+      {"vertex touching an edge", {{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}}},
+      {"fold back", {{0, 0}, {2, 0}, {1, 0}, {1, 1}}},
+      {"figure eight through a shared position", {{0, 0}, {1, 1}, {2, 0}, {2, 2}, {1, 1}, {0, 2}}},
+      {"vertical overlap", {{0, 0}, {1, 0}, {1, 2}, {1, 1}, {0, 1}}},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const CageReport report = validateCage(polygon(c.points));
+    EXPECT_FALSE(report.simple());
+    EXPECT_EQ(report.intersectingFaces.size(), 1u);
+    EXPECT_TRUE(mentions(describeCageProblems(report), "the polygon intersects itself"));
+  }
+}
+
+TEST(CageValidation, OpenChainAndTwoLoops) {
+  Cage open = polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  open.faces.conservativeResize(3, 2);
+  CageReport report = validateCage(open);
+  EXPECT_FALSE(report.closed());
+  EXPECT_EQ(report.boundaryRidges.size(), 2u);
+  EXPECT_TRUE(mentions(describeCageProblems(report), "the polygon is not closed"));
+
+  Cage two;
+  two.vertices.resize(6, 2);
+  two.vertices << 0, 0, 1, 0, 0, 1, 5, 0, 6, 0, 5, 1;
+  two.faces.resize(6, 2);
+  two.faces << 0, 1, 1, 2, 2, 0, 3, 4, 4, 5, 5, 3;
+  report = validateCage(two);
+  EXPECT_TRUE(report.closed() && report.manifold());
+  EXPECT_EQ(report.components, 2);
+  EXPECT_FALSE(report.valid());
+  EXPECT_TRUE(mentions(describeCageProblems(report), "2 separate loops"));
+}
+
+// Brute force with the same rule: edges sharing a vertex may only meet there.
+bool bruteForceSelfIntersects(const std::vector<Eigen::Vector2d>& p) {
+  const int n = static_cast<int>(p.size());
+  const auto orient = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+  };
+  const auto within = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+    return std::min(a.x(), b.x()) <= c.x() && c.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= c.y() &&
+           c.y() <= std::max(a.y(), b.y());
+  };
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Eigen::Vector2d a = p[i], b = p[(i + 1) % n], c = p[j], d = p[(j + 1) % n];
+      if (j == i + 1 || (i == 0 && j == n - 1)) {  // adjacent: fold back?
+        const Eigen::Vector2d o = j == i + 1 ? b : a, x = j == i + 1 ? a : b, y = j == i + 1 ? d : c;
+        if (orient(o, x, y) == 0 && (x - o).dot(y - o) > 0) return true;
+        continue;
+      }
+      const double d1 = orient(a, b, c), d2 = orient(a, b, d), d3 = orient(c, d, a), d4 = orient(c, d, b);
+      if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
+      if ((d1 == 0 && within(a, b, c)) || (d2 == 0 && within(a, b, d)) || (d3 == 0 && within(c, d, a)) ||
+          (d4 == 0 && within(c, d, b))) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+TEST(CageValidation, SweepAgreesWithBruteForceOnRandomPolygons) {
+  // Small integer coordinates: many vertical, collinear and touching edges, all predicates exact.
+  std::mt19937 random(7);
+  int simple = 0, intersecting = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n = 3 + static_cast<int>(random() % 10);
+    std::uniform_int_distribution<int> coordinate(0, trial % 2 ? 4 : 20);
+    std::vector<Eigen::Vector2d> p(n);
+    for (auto& point : p) point = Eigen::Vector2d(coordinate(random), coordinate(random));
+    if (trial % 3 == 0) {  // star-shaped around the centroid: mostly simple
+      Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+      for (const auto& point : p) centre += point / n;
+      std::sort(p.begin(), p.end(), [&](const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+        return std::atan2(a.y() - centre.y(), a.x() - centre.x()) < std::atan2(b.y() - centre.y(), b.x() - centre.x());
+      });
+    }
+    bool duplicates = false;  // repeated positions are reported as duplicate vertices; skip them here
+    for (int i = 0; i < n; ++i) {
+      for (int j = i + 1; j < n; ++j) duplicates = duplicates || p[i] == p[j];
+    }
+    if (duplicates) continue;
+    const bool expected = bruteForceSelfIntersects(p);
+    const CageReport report = validateCage(polygon(p));
+    const bool found = !report.intersectingFaces.empty();
+    ASSERT_EQ(found, expected) << "trial " << trial;
+    (expected ? intersecting : simple)++;
+  }
+  EXPECT_GT(simple, 100);
+  EXPECT_GT(intersecting, 100);
+}
+
+TEST(CageValidation, LargePolygonIsCheckedQuickly) {
+  // 200,000 edges: a quadratic check would take minutes.
+  const int n = 200000;
+  Eigen::MatrixXd loop(n, 2);
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * M_PI * k / n, r = 1.0 + 0.1 * std::sin(37 * angle);
+    loop.row(k) << r * std::cos(angle), r * std::sin(angle);
+  }
+  const CageReport report = validateCage(makePolygonCage(loop));
+  EXPECT_TRUE(report.valid()) << joined(describeCageProblems(report));
+}
+
+}  // namespace
+}  // namespace somicage
