@@ -4,62 +4,11 @@
 
 #include <Eigen/LU>
 #include <algorithm>
+#include <vector>
 
 #include "errors.h"
 
 namespace somicage {
-
-namespace {
-
-template <int Dim>
-void finishRows(const Eigen::MatrixXd& y, int begin, bool solve, Eigen::MatrixXd& out) {
-  for (int r = 0; r < y.rows(); ++r) {
-    if (!solve) {
-      out.row(begin + r) = y.row(r).head<Dim>();
-      continue;
-    }
-    Eigen::Matrix<double, Dim, Dim> T;
-    for (int a = 0; a < Dim; ++a)
-      for (int b = 0; b < Dim; ++b) T(a, b) = y(r, a * Dim + b);
-    const Eigen::Matrix<double, Dim, 1> rhs = y.row(r).segment<Dim>(Dim * Dim).transpose();
-    out.row(begin + r) = (T.inverse() * rhs).transpose();
-  }
-}
-
-template <typename Scalar>
-void evaluate(const CoordinateMatrix<Scalar>& C, int mainColumns, const FrameWeights& W, int dim, int threads,
-              Eigen::MatrixXd& out) {
-  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
-  const Matrix main = W.main.cast<Scalar>(), tail = W.tail.cast<Scalar>();
-  const int numPoints = static_cast<int>(C.rows()), tailColumns = static_cast<int>(C.cols()) - mainColumns;
-  const bool solve = W.outputs == dim * dim + dim;
-  out.resize(numPoints, dim);
-
-  // Blocks of 128 points: big enough to amortise the product's packing of W, small enough for the cache.
-  const int blockSize = 128, numBlocks = (numPoints + blockSize - 1) / blockSize;
-#pragma omp parallel num_threads(threads > 0 ? threads : omp_get_max_threads())
-  {
-    Matrix partial;
-    Eigen::MatrixXd y;
-#pragma omp for schedule(static)
-    for (int block = 0; block < numBlocks; ++block) {
-      const int begin = block * blockSize, count = std::min(blockSize, numPoints - begin);
-      y.setZero(count, W.outputs);
-      partial.noalias() = C.block(begin, 0, count, mainColumns) * main;
-      y.rightCols(W.outputs - W.mainOffset) = partial.template cast<double>();
-      if (tailColumns > 0) {
-        partial.noalias() = C.block(begin, mainColumns, count, tailColumns) * tail;
-        y += partial.template cast<double>();
-      }
-      if (dim == 3)
-        finishRows<3>(y, begin, solve, out);
-      else
-        finishRows<2>(y, begin, solve, out);
-    }
-  }
-}
-
-}  // namespace
 
 FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage) {
   FrameCoordinates frame;
@@ -71,14 +20,120 @@ FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumn
   return frame;
 }
 
+namespace {
+
+constexpr int kMaxOutputs = 12;  // d * d + d for d = 3
+
+// W transposed into contiguous rows of C's scalar type, one per output, so that every output is a dot product of
+// two contiguous arrays; and, per group of up to three outputs, the range of C's columns where W is not zero.
+// The local variant's T(x) outputs, for instance, only involve the vertex columns (about 60% of C).
+template <typename Scalar>
+struct PreparedWeights {
+  struct Group {
+    int firstOutput, count, begin, end;  // outputs [firstOutput, firstOutput + count), columns [begin, end)
+  };
+  int mainColumns, tailColumns, outputs;
+  std::vector<Scalar> mainRows;  // (outputs) rows of mainColumns, zero for outputs before mainOffset
+  Eigen::MatrixXd tail;          // tailColumns by outputs, in double: the tail is a handful of columns
+  std::vector<Group> groups;
+
+  PreparedWeights(const FrameWeights& W, int mainColumns_)
+      : mainColumns(mainColumns_), tailColumns(static_cast<int>(W.tail.rows())), outputs(W.outputs), tail(W.tail) {
+    mainRows.assign(static_cast<size_t>(outputs) * mainColumns, Scalar(0));
+    for (int o = W.mainOffset; o < outputs; ++o)
+      for (int k = 0; k < mainColumns; ++k)
+        mainRows[static_cast<size_t>(o) * mainColumns + k] = static_cast<Scalar>(W.main(k, o - W.mainOffset));
+    for (int first = W.mainOffset; first < outputs; first += 3) {
+      Group g{first, std::min(3, outputs - first), mainColumns, 0};
+      for (int o = first; o < first + g.count; ++o)
+        for (int k = 0; k < mainColumns; ++k)
+          if (W.main(k, o - W.mainOffset) != 0) g.begin = std::min(g.begin, k), g.end = std::max(g.end, k + 1);
+      if (g.begin < g.end) groups.push_back(g);
+    }
+  }
+  const Scalar* row(int output) const { return mainRows.data() + static_cast<size_t>(output) * mainColumns; }
+};
+
+// Up to three dot products of c with w0, w1, w2 over [0, n), sharing the loads of c. The reduction is vectorised
+// (omp simd), in a fixed order for a given build: the result does not depend on the thread count.
+template <typename Scalar>
+void dot3(const Scalar* c, const Scalar* w0, const Scalar* w1, const Scalar* w2, int n, int count, double* out) {
+  Scalar s0 = 0, s1 = 0, s2 = 0;
+  if (count == 3) {
+#pragma omp simd reduction(+ : s0, s1, s2)
+    for (int k = 0; k < n; ++k) s0 += c[k] * w0[k], s1 += c[k] * w1[k], s2 += c[k] * w2[k];
+  } else if (count == 2) {
+#pragma omp simd reduction(+ : s0, s1)
+    for (int k = 0; k < n; ++k) s0 += c[k] * w0[k], s1 += c[k] * w1[k];
+  } else {
+#pragma omp simd reduction(+ : s0)
+    for (int k = 0; k < n; ++k) s0 += c[k] * w0[k];
+  }
+  out[0] += s0;
+  if (count > 1) out[1] += s1;
+  if (count > 2) out[2] += s2;
+}
+
+template <int Dim>
+void finish(const double* y, bool solve, double* out) {
+  if (!solve) {
+    for (int a = 0; a < Dim; ++a) out[a] = y[a];
+    return;
+  }
+  const Eigen::Map<const Eigen::Matrix<double, Dim, Dim, Eigen::RowMajor>> T(y);
+  const Eigen::Map<const Eigen::Matrix<double, Dim, 1>> rhs(y + Dim * Dim);
+  Eigen::Map<Eigen::Matrix<double, Dim, 1>> result(out);
+  result = Eigen::Matrix<double, Dim, Dim>(T).inverse() * rhs;
+}
+
+template <typename Scalar, int Dim>
+void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int threads,
+              Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>& out) {
+  const int numPoints = static_cast<int>(C.rows());
+  const bool solve = W.outputs == Dim * Dim + Dim;
+#pragma omp parallel for schedule(static, 256) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int p = 0; p < numPoints; ++p) {
+    const Scalar* c = C.row(p).data();
+    double y[kMaxOutputs] = {0};
+    for (const auto& g : W.groups) {
+      const int o = g.firstOutput;
+      dot3(c + g.begin, W.row(o) + g.begin, W.row(std::min(o + 1, W.outputs - 1)) + g.begin,
+           W.row(std::min(o + 2, W.outputs - 1)) + g.begin, g.end - g.begin, g.count, y + o);
+    }
+    for (int k = 0; k < W.tailColumns; ++k) {
+      const double ck = static_cast<double>(c[W.mainColumns + k]);
+      if (ck != 0)
+        for (int o = 0; o < W.outputs; ++o) y[o] += ck * W.tail(k, o);
+    }
+    finish<Dim>(y, solve, out.row(p).data());
+  }
+}
+
+template <typename Scalar>
+void evaluateScalar(const CoordinateMatrix<Scalar>& C, int mainColumns, const FrameWeights& W, int dim, int threads,
+                    Eigen::MatrixXd& out) {
+  const PreparedWeights<Scalar> prepared(W, mainColumns);
+  if (dim == 3) {
+    Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> rows(C.rows(), 3);
+    evaluate<Scalar, 3>(C, prepared, threads, rows);
+    out = rows;
+  } else {
+    Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor> rows(C.rows(), 2);
+    evaluate<Scalar, 2>(C, prepared, threads, rows);
+    out = rows;
+  }
+}
+
+}  // namespace
+
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out) {
   SOMICAGE_ASSERT(W.outputs == dim || W.outputs == dim * dim + dim, "a frame has d or d^2 + d outputs");
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
   if (C.isFloat())
-    evaluate(C.floats, C.mainColumns, W, dim, threads, out);
+    evaluateScalar(C.floats, C.mainColumns, W, dim, threads, out);
   else
-    evaluate(C.doubles, C.mainColumns, W, dim, threads, out);
+    evaluateScalar(C.doubles, C.mainColumns, W, dim, threads, out);
 }
 
 }  // namespace somicage

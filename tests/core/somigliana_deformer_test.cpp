@@ -111,6 +111,22 @@ TEST_P(SomiglianaDeformerTest, ResultDoesNotDependOnThreadCount) {
   EXPECT_TRUE((a.array() == b.array()).all()) << "bitwise equal";
 }
 
+TEST_P(SomiglianaDeformerTest, FloatStorageStaysWithinItsErrorBudget) {
+  // Float storage (the editor's choice) rounds each coordinate to ~6e-8 relative; over a frame's sums that stays
+  // below 1e-5 of the cage diameter, the tolerance the GPU path is held to as well.
+  const Scene s = scene();
+  PrecomputeOptions single;
+  single.floatStorage = true;
+  const auto exact = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto rounded = makeSomiglianaDeformer(s.cage, s.points, single, noProgress);
+  EXPECT_LT(rounded->frameCoordinates().bytes(), exact->frameCoordinates().bytes());
+  const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
+  for (const DeformParams& params : parameterGrid()) {
+    const Eigen::MatrixXd a = exact->deform(pose, params), b = rounded->deform(pose, params);
+    EXPECT_LT((a - b).rowwise().norm().maxCoeff(), 1e-5 * cageDiameter(pose)) << describe(params);
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Dimensions, SomiglianaDeformerTest, ::testing::Values(2, 3),
                          [](const auto& info) { return info.param == 3 ? "3D" : "2D"; });
 

@@ -1,0 +1,86 @@
+#include "cli/cli.h"
+
+#include <iostream>
+#include <new>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/arg_parser.h"
+#include "cli/commands.h"
+#include "errors.h"
+
+namespace somicage {
+
+const std::vector<CliCommand>& cliCommands() {
+  static const std::vector<CliCommand> commands = {
+      {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
+      {"deform", "deform a mesh (or point set) with a posed cage and write it as OBJ", runDeformCommand, deformUsage},
+      {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
+      {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
+       runBenchCommand, benchUsage},
+  };
+  return commands;
+}
+
+namespace {
+GpuFrameTimer& gpuFrameTimerSlot() {
+  static GpuFrameTimer timer;
+  return timer;
+}
+}  // namespace
+
+void setGpuFrameTimer(GpuFrameTimer timer) { gpuFrameTimerSlot() = std::move(timer); }
+const GpuFrameTimer& gpuFrameTimer() { return gpuFrameTimerSlot(); }
+
+const CliCommand* findCliCommand(const std::string& name) {
+  for (const CliCommand& command : cliCommands()) {
+    if (name == command.name) return &command;
+  }
+  return nullptr;
+}
+
+bool isCliCommand(const char* firstArgument) {
+  if (!firstArgument) return false;
+  const std::string name = firstArgument;
+  return name == "--help" || name == "-h" || findCliCommand(name) != nullptr;
+}
+
+int runCli(int argc, char** argv) {
+  if (argc < 2) {
+    std::cerr << helpUsage() << "\nsomicage: no command given (run 'somicage help')\n";
+    return kExitBadInput;
+  }
+  std::string name = argv[1];
+  if (name == "--help" || name == "-h") name = "help";
+  const CliCommand* command = findCliCommand(name);
+  if (!command) {
+    std::string suggestion;
+    for (const CliCommand& candidate : cliCommands()) {
+      if (editDistance(name, candidate.name) <= 2) suggestion = std::string("did you mean '") + candidate.name + "'? ";
+    }
+    std::cerr << "somicage: unknown command '" << name << "' (" << suggestion
+              << "run 'somicage help' for the commands)\n";
+    return kExitBadInput;
+  }
+
+  const std::vector<std::string> args(argv + 2, argv + argc);
+  const std::string prefix = std::string("somicage ") + command->name + ": ";
+  try {
+    return command->run(args);
+  } catch (const InputError& e) {
+    std::cerr << prefix << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const Cancelled& e) {
+    std::cerr << prefix << e.what() << "\n";
+    return kExitFailure;
+  } catch (const std::bad_alloc&) {
+    std::cerr << prefix << "out of memory (try a mesh with fewer points)\n";
+    return kExitFailure;
+  } catch (const std::exception& e) {
+    std::cerr << prefix << "internal error: " << e.what() << " (please report this with the command line)\n";
+    return kExitFailure;
+  }
+}
+
+}  // namespace somicage

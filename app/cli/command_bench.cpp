@@ -1,0 +1,243 @@
+// somicage bench: precompute and per-frame timings, accuracy, and the speed-up over the paper's quadrature rule,
+// measured on one mesh and cage (median of repeated runs). The same engine calls as the editor: float storage of
+// the coordinates, the CPU frame kernel, and the GPU kernel when the editor's OpenGL backend is linked in.
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <numeric>
+#include <random>
+
+#include "cli/arg_parser.h"
+#include "cli/cli.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/json_writer.h"
+#include "cli/progress_reporter.h"
+#include "obj_io.h"
+#include "somigliana_coordinates.h"
+#include "somigliana_deformer.h"
+
+namespace somicage {
+
+namespace {
+
+const char* const kCommand = "somicage bench";
+
+ArgParser benchOptions() {
+  return ArgParser(kCommand, {
+                                 {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
+                                 {"--cage", "C.obj", "the rest cage", true},
+                                 {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
+                                 {"--frames", "N", "frames timed per backend and variant (default 50)"},
+                                 {"--repeat", "R", "precomputes timed (default 3)"},
+                                 {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
+                                 {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
+                                 {"--threads", "T", "OpenMP threads (default: all cores)"},
+                                 {"--json", "", "print one JSON object"},
+                             });
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n == 0 ? 0.0 : (n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]));
+}
+
+// A smooth pose for meshes given without one: bend about the cage's longest axis plus a twist.
+Eigen::MatrixXd defaultPose(const Cage& cage) {
+  const Eigen::RowVectorXd low = cage.vertices.colwise().minCoeff(), high = cage.vertices.colwise().maxCoeff();
+  Eigen::Index axis;
+  (high - low).maxCoeff(&axis);
+  const int other = (axis + 1) % cage.dim();
+  Eigen::MatrixXd posed = cage.vertices;
+  const double length = high(axis) - low(axis);
+  for (int i = 0; i < posed.rows(); ++i) {
+    const double t = (cage.vertices(i, axis) - low(axis)) / length;
+    posed(i, other) += 0.25 * length * t * t;
+  }
+  return posed;
+}
+
+// Median per-frame milliseconds of deform() for the posed cage and params.
+double timeFrames(const CageDeformer& deformer, const Eigen::MatrixXd& posed, DeformParams params, int frames,
+                  bool alternateNu) {
+  Eigen::MatrixXd out;
+  deformer.deform(posed, params, out);  // warm-up: first touch of the output
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) {
+    if (alternateNu) params.nu = (f % 2) ? 0.1 : 0.4;
+    const CliClock::time_point start = CliClock::now();
+    deformer.deform(posed, params, out);
+    times.push_back(1e3 * secondsSince(start));
+  }
+  return median(times);
+}
+
+// Bytes per second of a large memcpy: the bandwidth a frame that streams the coordinates can hope for.
+double copyBandwidth(std::size_t bytes) {
+  std::vector<char> a(bytes, 1), b(bytes);
+  std::vector<double> times;
+  for (int r = 0; r < 5; ++r) {
+    const CliClock::time_point start = CliClock::now();
+    std::copy(a.begin(), a.end(), b.begin());
+    times.push_back(secondsSince(start));
+  }
+  volatile char sink = b[bytes / 2];
+  (void)sink;
+  return 2.0 * bytes / median(times);  // read + write
+}
+
+}  // namespace
+
+std::string benchUsage() {
+  return std::string("usage: ") + kCommand +
+         " --mesh M.obj --cage C.obj [options]\n\n"
+         "Times the Somigliana precompute (median of --repeat runs) and the per-frame deformation (median of\n"
+         "--frames frames) for the global and local variants on the CPU, and on the GPU when available; measures\n"
+         "the partition of unity; and compares the closed-form integrals with the paper's Gauss rule on\n"
+         "--baseline-points random mesh vertices.\n\noptions:\n" +
+         benchOptions().optionHelp();
+}
+
+int runBenchCommand(const std::vector<std::string>& args) {
+  ArgParser options = benchOptions();
+  options.parse(args);
+  if (options.helpRequested()) {
+    std::cout << benchUsage();
+    return kExitOk;
+  }
+  const int frames = options.integer("--frames", 50, 1, 100000);
+  const int repeat = options.integer("--repeat", 3, 1, 1000);
+  const int quadrature = options.integer("--baseline-quadrature", 50, 1, 200);
+  const int baselinePoints = options.integer("--baseline-points", 2000, 0, 1 << 30);
+  const int threads = options.integer("--threads", 0, 0, 1024);
+  const bool json = options.has("--json");
+  setThreadCount(threads);
+
+  const Cage cage = loadCage(options.text("--cage"));
+  const Eigen::MatrixXd points = meshPoints(loadMesh(options.text("--mesh")), cage.dim());
+  const Eigen::MatrixXd posed =
+      options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
+  PrecomputeOptions precompute;
+  precompute.threads = threads;
+  precompute.floatStorage = true;
+  precompute.integration.threads = threads;
+
+  // Precompute: integrate (double) and build the float coordinate matrix, as the editor does.
+  std::vector<double> precomputeTimes;
+  std::unique_ptr<CageDeformer> deformer;
+  SomiglianaCoordinates coords;
+  for (int r = 0; r < repeat; ++r) {
+    deformer.reset();
+    coords = SomiglianaCoordinates();
+    ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
+    const CliClock::time_point start = CliClock::now();
+    coords = computeSomiglianaCoordinates(cage, points, precompute.integration, progress.callback());
+    deformer = makeSomiglianaDeformer(cage, coords, points, precompute);
+    precomputeTimes.push_back(secondsSince(start));
+  }
+  std::vector<double> unity;
+  const Eigen::VectorXd residual = partitionOfUnityResidual(coords);
+  for (int p = 0; p < coords.numPoints(); ++p)
+    if (coords.winding(p) >= 0.5) unity.push_back(residual(p));
+  coords = SomiglianaCoordinates();  // free the double integrals before timing frames
+
+  // Frames.
+  std::vector<std::pair<std::string, double>> deformMs;
+  deformMs.emplace_back("cpu_global", timeFrames(*deformer, posed, {0.0, 0.3, 1.0, true}, frames, false));
+  deformMs.emplace_back("cpu_local", timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, false));
+  std::string gpuNote;
+  if (const GpuFrameTimer& gpu = gpuFrameTimer()) {
+    for (const auto& [name, blend] : {std::pair<const char*, double>{"gpu_global", 0.0}, {"gpu_local", 1.0}}) {
+      const double ms = gpu(*deformer, posed, {blend, 0.3, 1.0, true}, frames, gpuNote);
+      if (std::isfinite(ms)) deformMs.emplace_back(name, ms);
+    }
+  } else {
+    gpuNote = "built without the editor's OpenGL backend";
+  }
+  const double nuUpdateMs = timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, true);
+
+  // Baseline: the same K random mesh vertices integrated in closed form and with the paper's rule.
+  std::mt19937 rng(12345);
+  std::vector<int> order(points.rows());
+  std::iota(order.begin(), order.end(), 0);
+  std::shuffle(order.begin(), order.end(), rng);
+  const int K = std::min<int>(baselinePoints, static_cast<int>(points.rows()));
+  Eigen::MatrixXd sample(K, cage.dim());
+  for (int k = 0; k < K; ++k) sample.row(k) = points.row(order[k]);
+  double speedup = 0, baselineUnity = 0;
+  if (K > 0) {
+    IntegrationOptions exact = precompute.integration, gauss = exact;
+    gauss.rule = IntegrationOptions::Rule::Gauss;
+    gauss.gaussPointsPerSide = quadrature;
+    std::vector<double> exactTimes;
+    for (int r = 0; r < 3; ++r) {
+      const CliClock::time_point start = CliClock::now();
+      computeSomiglianaCoordinates(cage, sample, exact);
+      exactTimes.push_back(secondsSince(start));
+    }
+    ProgressReporter progress("baseline quadrature N = " + std::to_string(quadrature));
+    const CliClock::time_point start = CliClock::now();
+    const SomiglianaCoordinates baseline = computeSomiglianaCoordinates(cage, sample, gauss, progress.callback());
+    const double gaussSeconds = secondsSince(start);
+    progress.finish();
+    speedup = gaussSeconds / median(exactTimes);
+    const Eigen::VectorXd baselineResidual = partitionOfUnityResidual(baseline);
+    for (int p = 0; p < K; ++p)
+      if (baseline.winding(p) >= 0.5) baselineUnity = std::max(baselineUnity, baselineResidual(p));
+  }
+
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  const long long peakRss = static_cast<long long>(usage.ru_maxrss) * 1024;
+  const std::size_t coordBytes = deformer->frameCoordinates().bytes();
+  const double precomputeSeconds = median(precomputeTimes);
+  const double pouMax = unity.empty() ? 0.0 : *std::max_element(unity.begin(), unity.end());
+  const double pouMedian = median(unity);
+  const int usedThreads = threads > 0 ? threads : omp_get_max_threads();
+
+  if (json) {
+    JsonObjectWriter out(std::cout);
+    out.field("mesh_vertices", static_cast<int>(points.rows()));
+    out.field("cage_vertices", cage.numVertices());
+    out.field("cage_faces", cage.numFaces());
+    out.field("threads", usedThreads);
+    out.field("precompute_s", precomputeSeconds);
+    out.field("pou_max", pouMax);
+    out.field("pou_median", pouMedian);
+    out.field("baseline_quadrature", quadrature);
+    out.field("baseline_points", K);
+    out.field("baseline_speedup", speedup);
+    out.field("baseline_pou_max", baselineUnity);
+    out.field("deform_ms", deformMs);
+    out.field("nu_update_ms", nuUpdateMs);
+    out.field("coord_bytes", static_cast<long long>(coordBytes));
+    out.field("peak_rss_bytes", peakRss);
+    out.close();
+    std::cout << "\n";
+    return kExitOk;
+  }
+  const double bandwidth = copyBandwidth(std::min<std::size_t>(coordBytes, std::size_t(1) << 28));
+  std::printf("mesh %d vertices, cage %d vertices / %d faces, %d threads\n", static_cast<int>(points.rows()),
+              cage.numVertices(), cage.numFaces(), usedThreads);
+  std::printf("precompute        %.3f s (median of %d)\n", precomputeSeconds, repeat);
+  std::printf("partition of unity max %.3g, median %.3g\n", pouMax, pouMedian);
+  std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",
+              quadrature, 3 * quadrature * quadrature, K, speedup, baselineUnity);
+  for (const auto& [name, ms] : deformMs) {
+    const bool cpu = name.rfind("cpu", 0) == 0;
+    std::printf("deform %-10s %.2f ms", name.c_str(), ms);
+    if (cpu) std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,
+                         bandwidth * 1e-9);
+    std::printf("\n");
+  }
+  if (!gpuNote.empty()) std::printf("gpu               %s\n", gpuNote.c_str());
+  std::printf("nu update         %.2f ms (a frame at a new nu: only the weights change)\n", nuUpdateMs);
+  std::printf("coordinates       %.1f MB (float), peak RSS %.1f MB\n", coordBytes / 1e6, peakRss / 1e6);
+  return kExitOk;
+}
+
+}  // namespace somicage

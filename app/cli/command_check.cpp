@@ -1,0 +1,210 @@
+// somicage check: is the cage usable (cage_validation.h), and how well do its Somigliana coordinates reproduce
+// the identity (partition of unity, Eq. 9) at the points of a mesh?
+#include <algorithm>
+#include <iostream>
+#include <sstream>
+
+#include "cage_validation.h"
+#include "cli/arg_parser.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/json_writer.h"
+#include "cli/progress_reporter.h"
+#include "obj_io.h"
+#include "somigliana_coordinates.h"
+
+namespace somicage {
+
+namespace {
+
+const char* const kCommand = "somicage check";
+
+ArgParser checkOptions() {
+  return ArgParser(kCommand, {
+                                 {"--cage", "C.obj", "the cage to check (3D mesh, or 2D polygon with z = 0)", true},
+                                 {"--mesh", "M.obj", "points for the partition-of-unity check (any OBJ)"},
+                                 {"--json", "", "print one JSON object instead of the readable report"},
+                                 {"--threads", "N", "OpenMP threads (default: all cores)"},
+                             });
+}
+
+// The partition-of-unity residual max_ij |sum_i T_i(x) - I|_ij over the points inside the cage.
+struct UnityCheck {
+  bool computed = false;
+  int points = 0, inside = 0, outside = 0, singular = 0;
+  double max = 0.0, median = 0.0, precomputeSeconds = 0.0;
+};
+
+UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points, int threads) {
+  UnityCheck check;
+  check.points = static_cast<int>(points.rows());
+  IntegrationOptions options;
+  options.threads = threads;
+  const CliClock::time_point start = CliClock::now();
+  SomiglianaCoordinates coords;
+  {
+    ProgressReporter progress("computing somigliana coordinates");
+    coords = computeSomiglianaCoordinates(cage, points, options, progress.callback());
+  }
+  check.precomputeSeconds = secondsSince(start);
+  const Eigen::VectorXd residual = partitionOfUnityResidual(coords);
+  std::vector<double> inside;
+  for (int p = 0; p < check.points; ++p) {
+    if (!(coords.winding(p) >= 0.5)) {
+      ++check.outside;  // Eq. 9 holds inside only
+    } else if (!std::isfinite(residual(p))) {
+      ++check.singular;  // on the cage
+    } else {
+      inside.push_back(residual(p));
+    }
+  }
+  check.inside = static_cast<int>(inside.size());
+  check.computed = true;
+  if (!inside.empty()) {
+    check.max = *std::max_element(inside.begin(), inside.end());
+    const size_t middle = inside.size() / 2;
+    std::nth_element(inside.begin(), inside.begin() + middle, inside.end());
+    check.median = inside[middle];
+    if (inside.size() % 2 == 0) {  // the mean of the two middle values
+      check.median = 0.5 * (check.median + *std::max_element(inside.begin(), inside.begin() + middle));
+    }
+  }
+  return check;
+}
+
+void writeJson(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
+               const std::vector<std::string>& problems, const UnityCheck& unity) {
+  JsonObjectWriter json(std::cout);
+  json.field("cage", cagePath);
+  if (meshPath.empty()) {
+    json.null("mesh");
+  } else {
+    json.field("mesh", meshPath);
+  }
+  json.field("dim", report.dim);
+  json.field("cage_vertices", report.numVertices);
+  json.field("cage_faces", report.numFaces);
+  json.field("valid", report.valid());
+  json.field("closed", report.closed());
+  json.field("manifold", report.manifold());
+  json.field("consistently_oriented", report.consistentlyOriented());
+  json.field("outward", report.outward());
+  if (report.dim == 2) {
+    json.field("simple", report.simple());
+  } else {
+    json.null("simple");  // self-intersection is checked in 2D only
+  }
+  json.field(report.dim == 3 ? "signed_volume" : "signed_area", report.signedVolume);
+  json.field("components", report.components);
+  json.field("boundary_edges", static_cast<int>(report.boundaryRidges.size()));
+  json.field("non_manifold_edges", static_cast<int>(report.nonManifoldRidges.size()));
+  json.field("misoriented_edges", static_cast<int>(report.misorientedRidges.size()));
+  json.field("degenerate_faces", static_cast<int>(report.degenerateFaces.size()));
+  json.field("duplicate_vertices", static_cast<int>(report.duplicateVertices.size()));
+  json.field("unreferenced_vertices", static_cast<int>(report.unreferencedVertices.size()));
+  json.field("problems", problems);
+  json.field("mesh_vertices", unity.points);
+  json.field("pou_computed", unity.computed);
+  json.field("inside_points", unity.inside);
+  json.field("outside_points", unity.outside);
+  json.field("singular_points", unity.singular);
+  if (unity.inside > 0) {
+    json.field("pou_max", unity.max);
+    json.field("pou_median", unity.median);
+  } else {
+    json.null("pou_max");
+    json.null("pou_median");
+  }
+  if (unity.computed) {
+    json.field("precompute_s", unity.precomputeSeconds);
+  } else {
+    json.null("precompute_s");
+  }
+  json.close();
+}
+
+void writeReport(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
+                 const std::vector<std::string>& problems, const UnityCheck& unity) {
+  const auto yesNo = [](bool value) { return value ? "yes" : "NO"; };
+  std::ostringstream out;
+  out << "cage   " << cagePath << ": " << report.dim << "D, " << report.numVertices << " vertices, " << report.numFaces
+      << (report.dim == 3 ? " triangles" : " edges") << "\n";
+  if (report.dim == 3) {
+    out << "       closed " << yesNo(report.closed()) << ", edge-manifold " << yesNo(report.manifold())
+        << ", consistently oriented " << yesNo(report.consistentlyOriented()) << ", outward " << yesNo(report.outward())
+        << " (signed volume " << formatNumber(report.signedVolume) << ")\n";
+  } else {
+    out << "       closed " << yesNo(report.closed()) << ", simple " << yesNo(report.simple()) << ", counter-clockwise "
+        << yesNo(report.outward()) << " (signed area " << formatNumber(report.signedVolume) << ")\n";
+  }
+  if (!meshPath.empty()) {
+    out << "mesh   " << meshPath << ": " << unity.points << " vertices";
+    if (unity.computed) {
+      out << ", " << unity.inside << " inside the cage, " << unity.outside << " outside";
+      if (unity.singular) out << ", " << unity.singular << " on the cage (singular)";
+      out << "\n";
+      if (unity.inside > 0) {
+        out << "       partition of unity |sum_i T_i - I| over the inside points: max " << formatNumber(unity.max, 3)
+            << ", median " << formatNumber(unity.median, 3) << " (coordinates in "
+            << formatSeconds(unity.precomputeSeconds) << ")\n";
+      }
+    } else {
+      out << "; partition of unity not computed: fix the cage first\n";
+    }
+  }
+  if (problems.empty()) {
+    out << "result: the cage is valid\n";
+  } else {
+    out << "problems (indices are 0-based):\n";
+    for (const std::string& problem : problems) out << "  - " << problem << "\n";
+    out << "result: the cage has " << problems.size() << (problems.size() == 1 ? " problem" : " problems") << "\n";
+  }
+  std::cout << out.str();
+}
+
+}  // namespace
+
+std::string checkUsage() {
+  std::ostringstream out;
+  out << "usage: " << kCommand << " --cage C.obj [--mesh M.obj] [--json]\n\n"
+      << "Checks that the cage is closed, edge-manifold, consistently oriented and outward (3D), or a simple\n"
+      << "counter-clockwise polygon (2D), with no degenerate faces or duplicate vertices. With --mesh, computes the\n"
+      << "Somigliana coordinates of the mesh vertices and the partition-of-unity residual max |sum_i T_i - I| over\n"
+      << "those inside the cage (winding number >= 0.5). Exit status: 0 the cage is valid, 1 it has problems.\n\n"
+      << "options:\n"
+      << checkOptions().optionHelp();
+  return out.str();
+}
+
+int runCheckCommand(const std::vector<std::string>& rawArgs) {
+  ArgParser args = checkOptions();
+  args.parse(rawArgs);
+  if (args.helpRequested()) {
+    std::cout << checkUsage();
+    return kExitOk;
+  }
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+  const std::string cagePath = args.text("--cage"), meshPath = args.text("--mesh");
+
+  const Cage cage = loadCage(cagePath);
+  PolygonMesh mesh;
+  if (!meshPath.empty()) mesh = loadMesh(meshPath);
+  const CageReport report = validateCage(cage);
+  const std::vector<std::string> problems = describeCageProblems(report);
+
+  UnityCheck unity;
+  unity.points = mesh.numVertices();
+  // Integrating needs valid indices and faces with a normal; other defects still give numbers worth seeing.
+  if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
+    unity = checkPartitionOfUnity(cage, meshPoints(mesh, cage.dim()), threads);
+  }
+  if (args.has("--json")) {
+    writeJson(cagePath, meshPath, report, problems, unity);
+  } else {
+    writeReport(cagePath, meshPath, report, problems, unity);
+  }
+  return report.valid() ? kExitOk : kExitFailure;
+}
+
+}  // namespace somicage

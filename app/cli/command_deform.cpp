@@ -1,0 +1,158 @@
+// somicage deform: the batch form of what the editor does on every frame, through the same core calls
+// (loadCage, makeDeformer, CageDeformer::deform, saveObj).
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "cage_validation.h"
+#include "cli/arg_parser.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/progress_reporter.h"
+#include "deformer.h"
+#include "errors.h"
+#include "obj_io.h"
+
+namespace somicage {
+
+namespace {
+
+const char* const kCommand = "somicage deform";
+
+ArgParser deformOptions() {
+  return ArgParser(
+      kCommand,
+      {
+          {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+          {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+          {"--mesh", "IN.obj", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
+          {"--out", "OUT.obj", "where to write the result: IN's vertices moved, IN's faces", true},
+          {"--method", "NAME", "somigliana (default), green or mvc"},
+          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
+          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
+          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana only"},
+          {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
+          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
+          {"--threads", "N", "OpenMP threads (default: all cores)"},
+      });
+}
+
+// validateDeformParams names the parameter ("nu"); on the command line it is the option ("--nu").
+void validateOptions(const DeformParams& params) {
+  try {
+    validateDeformParams(params);
+  } catch (const InputError& e) {
+    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
+    throw InputError(source, -1, e.problem(), e.hint());
+  }
+}
+
+Method methodOption(const ArgParser& args) {
+  try {
+    return parseMethod(args.text("--method", "somigliana"));
+  } catch (const InputError& e) {
+    throw InputError("--method", -1, e.problem(), e.hint());
+  }
+}
+
+}  // namespace
+
+std::string deformUsage() {
+  std::ostringstream out;
+  out << "usage: " << kCommand << " --cage REST.obj --posed POSED.obj --mesh IN.obj --out OUT.obj [OPTIONS]\n\n"
+      << "Deforms the vertices of IN with the cage moved from REST to POSED and writes OUT with IN's vertex order\n"
+      << "and faces (coordinates with 17 significant digits). The cage is 2D when every z is 0.\n\n"
+      << "options:\n"
+      << deformOptions().optionHelp();
+  return out.str();
+}
+
+int runDeformCommand(const std::vector<std::string>& rawArgs) {
+  ArgParser args = deformOptions();
+  args.parse(rawArgs);
+  if (args.helpRequested()) {
+    std::cout << deformUsage();
+    return kExitOk;
+  }
+
+  // Options first, so that a typo fails before any file is read.
+  const Method method = methodOption(args);
+  DeformParams params;
+  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
+  params.blend = args.number("--blend", params.blend);
+  params.nu = args.numberOrInfinity("--nu", params.nu);
+  params.gamma = args.number("--gamma", params.gamma);
+  params.tractionCorrection = !args.has("--no-traction-fix");
+  validateOptions(params);
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+  const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
+  const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
+
+  // Inputs.
+  const Cage cage = loadCage(cagePath);
+  const CageReport report = validateCage(cage);
+  if (!report.valid()) {
+    const std::vector<std::string> problems = describeCageProblems(report);
+    const std::string more =
+        problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more problems)" : "";
+    throw InputError(cagePath, -1, "the cage cannot be used: " + problems.front() + more,
+                     "run 'somicage check --cage " + cagePath + "' for the full report");
+  }
+  const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
+  const PolygonMesh mesh = loadMesh(meshPath);
+  const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
+  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
+                                       args.has("--gamma") || args.has("--no-traction-fix"))) {
+    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
+              << "only; " << methodName(method) << " ignores them\n";
+  }
+
+  // Precompute once, deform once.
+  PrecomputeOptions options;
+  options.threads = threads;
+  options.integration.threads = threads;
+  const CliClock::time_point precomputeStart = CliClock::now();
+  std::unique_ptr<CageDeformer> deformer;
+  {
+    ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
+    deformer = makeDeformer(method, cage, points, options, progress.callback());
+  }
+  const double precomputeSeconds = secondsSince(precomputeStart);
+  const CliClock::time_point deformStart = CliClock::now();
+  const Eigen::MatrixXd deformed = deformer->deform(posed, params);
+  const double deformSeconds = secondsSince(deformStart);
+
+  Eigen::Index bad = 0, firstBad = -1;
+  for (Eigen::Index p = 0; p < deformed.rows(); ++p) {
+    if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;
+  }
+  if (bad > 0) {
+    std::ostringstream where;
+    where << points.row(firstBad);
+    throw InputError(meshPath, -1,
+                     std::to_string(bad) + " of " + std::to_string(deformed.rows()) +
+                         " points could not be deformed; the first is vertex " + std::to_string(firstBad) + " at (" +
+                         where.str() + ")",
+                     "nothing was written: points on the cage itself are singular, move them off the cage");
+  }
+
+  Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
+  result.leftCols(cage.dim()) = deformed;
+  saveObj(outPath, result, mesh);
+
+  std::ostringstream summary;
+  summary << kCommand << ": " << cage.dim() << "D " << methodName(method);
+  if (method == Method::Somigliana) {
+    summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
+            << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
+  }
+  summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
+          << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
+          << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath
+          << "\n";
+  std::cerr << summary.str();
+  return kExitOk;
+}
+
+}  // namespace somicage

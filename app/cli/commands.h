@@ -1,0 +1,35 @@
+// The commands of the headless command line. Each lives in its own command_NAME.cpp and is listed once in
+// cliCommands() (cli.cpp); they share the option parser (arg_parser.h) and the helpers below.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace somicage {
+
+struct CliCommand {
+  const char* name;
+  const char* summary;                               // one line for `somicage help`
+  int (*run)(const std::vector<std::string>& args);  // the arguments after the command name; the exit code
+  std::string (*usage)();                            // the full help text
+};
+
+// Every command, in the order `somicage help` lists them.
+const std::vector<CliCommand>& cliCommands();
+const CliCommand* findCliCommand(const std::string& name);
+
+// Exit codes.
+constexpr int kExitOk = 0;
+constexpr int kExitFailure = 1;   // the command ran and the answer is "no" (check: the cage has problems)
+constexpr int kExitBadInput = 2;  // the input (files, options) is not usable
+
+int runHelpCommand(const std::vector<std::string>& args);
+std::string helpUsage();
+int runDeformCommand(const std::vector<std::string>& args);
+std::string deformUsage();
+int runCheckCommand(const std::vector<std::string>& args);
+std::string checkUsage();
+int runBenchCommand(const std::vector<std::string>& args);
+std::string benchUsage();
+
+}  // namespace somicage

@@ -1,0 +1,96 @@
+#include "cli/json_writer.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+
+namespace somicage {
+
+JsonObjectWriter::JsonObjectWriter(std::ostream& out) : out_(out) { out_ << "{"; }
+
+JsonObjectWriter::~JsonObjectWriter() { close(); }
+
+std::string JsonObjectWriter::quote(const std::string& text) {
+  std::string quoted = "\"";
+  for (const char c : text) {
+    switch (c) {
+      case '"':
+        quoted += "\\\"";
+        break;
+      case '\\':
+        quoted += "\\\\";
+        break;
+      case '\n':
+        quoted += "\\n";
+        break;
+      case '\r':
+        quoted += "\\r";
+        break;
+      case '\t':
+        quoted += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20) {
+          char escaped[8];
+          std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
+          quoted += escaped;
+        } else {
+          quoted += c;
+        }
+    }
+  }
+  return quoted + "\"";
+}
+
+void JsonObjectWriter::key(const std::string& name) {
+  out_ << (first_ ? "\n  " : ",\n  ") << quote(name) << ": ";
+  first_ = false;
+}
+
+void JsonObjectWriter::writeNumber(double value) {
+  if (!std::isfinite(value)) {
+    out_ << "null";
+    return;
+  }
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, value);  // shortest text that reads back exactly
+  out_.write(text, result.ptr - text);
+}
+
+void JsonObjectWriter::field(const std::string& name, double value) {
+  key(name);
+  writeNumber(value);
+}
+
+void JsonObjectWriter::field(const std::string& name, int value) { key(name), out_ << value; }
+void JsonObjectWriter::field(const std::string& name, long long value) { key(name), out_ << value; }
+void JsonObjectWriter::field(const std::string& name, bool value) { key(name), out_ << (value ? "true" : "false"); }
+void JsonObjectWriter::field(const std::string& name, const char* value) { field(name, std::string(value)); }
+void JsonObjectWriter::field(const std::string& name, const std::string& value) { key(name), out_ << quote(value); }
+void JsonObjectWriter::null(const std::string& name) { key(name), out_ << "null"; }
+
+void JsonObjectWriter::field(const std::string& name, const std::vector<std::string>& values) {
+  key(name);
+  out_ << "[";
+  for (size_t k = 0; k < values.size(); ++k) out_ << (k ? ",\n    " : "\n    ") << quote(values[k]);
+  out_ << (values.empty() ? "]" : "\n  ]");
+}
+
+void JsonObjectWriter::field(const std::string& name, const std::vector<std::pair<std::string, double>>& values) {
+  key(name);
+  out_ << "{";
+  for (size_t k = 0; k < values.size(); ++k) {
+    out_ << (k ? ",\n    " : "\n    ") << quote(values[k].first) << ": ";
+    writeNumber(values[k].second);
+  }
+  out_ << (values.empty() ? "}" : "\n  }");
+}
+
+void JsonObjectWriter::close() {
+  if (closed_) return;
+  closed_ = true;
+  out_ << (first_ ? "}\n" : "\n}\n");
+  out_.flush();
+}
+
+}  // namespace somicage

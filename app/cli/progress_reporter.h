@@ -1,0 +1,36 @@
+// Progress of a long computation on stderr: a live percentage when stderr is a terminal, otherwise a line every
+// 10% once the computation has taken more than a second (so that logs of quick runs stay clean).
+#pragma once
+
+#include <chrono>
+#include <string>
+
+#include "progress.h"
+
+namespace somicage {
+
+class ProgressReporter {
+ public:
+  explicit ProgressReporter(std::string label);
+  ~ProgressReporter();
+  ProgressReporter(const ProgressReporter&) = delete;
+  ProgressReporter& operator=(const ProgressReporter&) = delete;
+
+  // A callback for core functions; it refers to this reporter, which must outlive the computation.
+  ProgressCallback callback();
+  // Ends the progress line, if one was started.
+  void finish();
+
+ private:
+  bool report(double fraction);
+
+  using Clock = std::chrono::steady_clock;
+  std::string label_;
+  bool terminal_;
+  Clock::time_point start_, lastPrint_;
+  int lastTenth_ = -1;
+  bool printed_ = false;
+  bool finished_ = false;
+};
+
+}  // namespace somicage

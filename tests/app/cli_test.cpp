@@ -1,0 +1,133 @@
+// The command line as a whole, run as a process: help, unknown commands, and bad input of every kind, which must
+// exit 2 with exactly one line on stderr naming the option or file (and line), what is wrong and what to do.
+#include "cli_test_support.h"
+#include "obj_io.h"
+
+namespace somicage {
+namespace {
+
+using namespace somicage::test;
+
+TEST(CliHelp, ListsTheCommands) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{"help"}, {"--help"}, {"-h"}}) {
+    const RunResult r = runSomicage(args);
+    EXPECT_EQ(r.exitCode, 0) << r;
+    for (const char* command : {"deform", "check", "help"}) EXPECT_NE(r.out.find(command), std::string::npos) << r;
+    EXPECT_TRUE(r.err.empty()) << r;
+  }
+}
+
+TEST(CliHelp, ShowsTheOptionsOfACommand) {
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"help", "deform"}, {"deform", "--help"}, {"deform", "--cage", "x.obj", "-h"}}) {
+    const RunResult r = runSomicage(args);
+    EXPECT_EQ(r.exitCode, 0) << r;
+    for (const char* option : {"--cage", "--posed", "--mesh", "--out", "--method", "--variant", "--blend", "--nu",
+                               "--gamma", "--no-traction-fix", "--threads"}) {
+      EXPECT_NE(r.out.find(option), std::string::npos) << option << "\n" << r;
+    }
+  }
+  const RunResult check = runSomicage({"check", "--help"});
+  EXPECT_EQ(check.exitCode, 0) << check;
+  EXPECT_NE(check.out.find("--json"), std::string::npos) << check;
+}
+
+struct BadInput {
+  const char* name;
+  std::vector<std::string> args;
+  std::string message;  // a part of the one line on stderr
+};
+
+// Runs every case and checks: exit 2, nothing on stdout, one line on stderr containing the message.
+void expectBadInput(const std::vector<BadInput>& cases) {
+  for (const BadInput& c : cases) {
+    SCOPED_TRACE(c.name);
+    const RunResult r = runSomicage(c.args);
+    EXPECT_EQ(r.exitCode, 2) << r;
+    EXPECT_TRUE(r.out.empty()) << r;
+    EXPECT_EQ(r.errLines(), 1) << r;
+    EXPECT_NE(r.err.find(c.message), std::string::npos) << "expected: " << c.message << "\n" << r;
+  }
+}
+
+std::vector<std::string> deformArgs(std::vector<std::string> extra, const std::string& out = "/tmp/unused.obj") {
+  std::vector<std::string> args = {"deform",
+                                   "--cage",
+                                   dataFile("cube_cage.obj"),
+                                   "--posed",
+                                   dataFile("cube_cage.obj"),
+                                   "--mesh",
+                                   dataFile("pyramid_mesh.obj"),
+                                   "--out",
+                                   out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
+TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {
+  expectBadInput({
+      {"unknown command", {"defrom"}, "unknown command 'defrom' (did you mean 'deform'?"},
+      {"unknown help topic", {"help", "bench-press"}, "bench-press: is not a command"},
+      {"unknown option", deformArgs({"--nuu", "0.3"}), "--nuu: unknown option (did you mean --nu?"},
+      {"missing value", deformArgs({"--nu"}), "--nu: needs a value (write --nu V"},
+      {"value eaten by the next option", deformArgs({"--gamma", "--nu", "0.2"}), "--gamma: needs a value"},
+      {"not a number", deformArgs({"--gamma", "abc"}), "--gamma: 'abc' is not a number"},
+      {"trailing garbage", deformArgs({"--blend", "0.5x"}), "--blend: '0.5x' is not a number"},
+      {"NaN", deformArgs({"--nu", "nan"}), "--nu: 'nan' is not a number"},
+      {"nu out of range", deformArgs({"--nu", "0.5"}), "--nu: Poisson ratio"},
+      {"nu below -1", deformArgs({"--nu", "-1"}), "--nu: Poisson ratio"},
+      {"negative gamma", deformArgs({"--gamma", "-0.1"}), "--gamma: bulging scale"},
+      {"blend above 1", deformArgs({"--blend", "1.5"}), "--blend: blend"},
+      {"unknown method", deformArgs({"--method", "harmonic"}), "--method: unknown method 'harmonic'"},
+      {"unknown variant", deformArgs({"--variant", "sideways"}),
+       "--variant: 'sideways' is not a choice (use global or local"},
+      {"negative threads", deformArgs({"--threads", "-1"}), "--threads: -1 is out of range"},
+      {"fractional threads", deformArgs({"--threads", "2.5"}), "--threads: '2.5' is not a whole number"},
+      {"flag with a value", deformArgs({"--no-traction-fix=yes"}), "--no-traction-fix: takes no value"},
+      {"option twice", deformArgs({"--nu", "0.1", "--nu", "0.2"}), "--nu: is given twice"},
+      {"stray argument", deformArgs({"extra.obj"}), "extra.obj: unexpected argument"},
+      {"missing required option", {"deform", "--cage", dataFile("cube_cage.obj")}, "--posed: is missing"},
+      {"check without cage", {"check", "--json"}, "--cage: is missing"},
+  });
+}
+
+TEST(CliErrors, BadFilesExitTwoWithOneMessage) {
+  ScratchDir dir;
+  Cage cube = loadCage(dataFile("cube_cage.obj"));
+  cube.faces = cube.faces.rowwise().reverse().eval();
+  const std::string insideOut = dir.file("inside_out.obj");
+  saveObj(insideOut, cube.vertices, cageTopology(cube));
+  const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj");
+  const std::string missing = dir.file("missing.obj");
+  const std::string badFace = dataFile("bad_face_out_of_range.obj");
+  const std::string out = dir.file("out.obj");
+  expectBadInput({
+      {"missing cage",
+       {"deform", "--cage", missing, "--posed", cage, "--mesh", mesh, "--out", out},
+       missing + ": cannot open the file: No such file or directory"},
+      {"missing mesh",
+       {"deform", "--cage", cage, "--posed", cage, "--mesh", missing, "--out", out},
+       missing + ": cannot open the file"},
+      {"bad face in the mesh",
+       {"deform", "--cage", cage, "--posed", cage, "--mesh", badFace, "--out", out},
+       badFace + ":9: face 1 refers to index 9, but the file has 4 vertices"},
+      {"NaN in the pose",
+       {"deform", "--cage", cage, "--posed", dataFile("bad_nan_coordinate.obj"), "--mesh", mesh, "--out", out},
+       "bad_nan_coordinate.obj:5: vertex 1: x = 'nan' is not finite"},
+      {"pose with another vertex count",
+       {"deform", "--cage", cage, "--posed", mesh, "--mesh", mesh, "--out", out},
+       "the posed cage has 5 vertices, the rest cage has 8"},
+      {"inside-out cage",
+       {"deform", "--cage", insideOut, "--posed", insideOut, "--mesh", mesh, "--out", out},
+       insideOut + ": the cage cannot be used: the faces point inward"},
+      {"output folder missing",
+       {"deform", "--cage", cage, "--posed", cage, "--mesh", mesh, "--out", dir.file("no/such/folder/out.obj")},
+       "cannot create a file in this folder: No such file or directory"},
+      {"check: folder as cage", {"check", "--cage", dir.path().string()}, "is a folder, not a file"},
+      {"check: empty mesh", {"check", "--cage", cage, "--mesh", dataFile("bad_empty.obj")}, "the file is empty"},
+  });
+  EXPECT_FALSE(fs::exists(out)) << "nothing may be written on bad input";
+}
+
+}  // namespace
+}  // namespace somicage

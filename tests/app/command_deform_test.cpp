@@ -1,0 +1,157 @@
+// somicage deform, run as a process: the rest pose reproduces the input (every method and variant, 2D and 3D)
+// to 1e-8 of the cage size, a similarity pose moves it by that similarity, and the output keeps the input's
+// vertex order and faces.
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "cli_test_support.h"
+#include "obj_io.h"
+
+namespace somicage {
+namespace {
+
+using namespace somicage::test;
+
+double maxDistance(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).rowwise().norm().maxCoeff(); }
+
+struct MethodCase {
+  const char* name;
+  std::vector<std::string> options;
+};
+
+const std::vector<MethodCase> kMethods = {
+    {"somigliana global", {}},
+    {"somigliana local", {"--variant", "local"}},
+    {"somigliana blend 0.5, nu 0.3, gamma 1", {"--blend", "0.5", "--nu", "0.3", "--gamma", "1"}},
+    {"somigliana nu -inf, no traction fix", {"--nu", "-inf", "--no-traction-fix", "--threads", "1"}},
+    {"somigliana nu inf", {"--nu=inf", "--variant=local"}},
+    {"green", {"--method", "green"}},
+    {"mvc", {"--method", "mvc"}},
+};
+
+RunResult deform(const std::string& cage, const std::string& posed, const std::string& mesh, const std::string& out,
+                 const std::vector<std::string>& options) {
+  std::vector<std::string> args = {"deform", "--cage", cage, "--posed", posed, "--mesh", mesh, "--out", out};
+  args.insert(args.end(), options.begin(), options.end());
+  return runSomicage(args);
+}
+
+// Deforms mesh with every method and checks the result against expected (#V by 3) within tolerance.
+void expectEveryMethodGives(const std::string& cage, const std::string& posed, const std::string& mesh,
+                            const Eigen::MatrixXd& expected, double tolerance) {
+  ScratchDir dir;
+  const PolygonMesh input = loadMesh(mesh);
+  for (const MethodCase& method : kMethods) {
+    SCOPED_TRACE(method.name);
+    const std::string out = dir.file("out.obj");
+    const RunResult r = deform(cage, posed, mesh, out, method.options);
+    ASSERT_EQ(r.exitCode, 0) << r;
+    EXPECT_TRUE(r.out.empty()) << r;
+    EXPECT_EQ(r.errLines(), 1) << "only the summary line: " << r;
+    EXPECT_NE(r.err.find("precompute"), std::string::npos) << r;
+    const PolygonMesh output = loadMesh(out);
+    EXPECT_EQ(output.faces, input.faces);
+    EXPECT_EQ(output.lines, input.lines);
+    ASSERT_EQ(output.vertices.rows(), expected.rows());
+    EXPECT_LE(maxDistance(output.vertices, expected), tolerance);
+  }
+}
+
+// A similarity (scale 1.7, a rotation, a translation) applied to the rows of V (#V by dim).
+Eigen::MatrixXd similarity(const Eigen::MatrixXd& V, int dim) {
+  Eigen::MatrixXd out = V;
+  if (dim == 3) {
+    const Eigen::Matrix3d R = Eigen::AngleAxisd(0.9, Eigen::Vector3d(1, -2, 0.5).normalized()).toRotationMatrix();
+    out.leftCols(3) = ((1.7 * R * V.leftCols(3).transpose()).colwise() + Eigen::Vector3d(0.3, -2, 5)).transpose();
+  } else {
+    const Eigen::Matrix2d R = Eigen::Rotation2Dd(0.9).toRotationMatrix();
+    out.leftCols(2) = ((1.7 * R * V.leftCols(2).transpose()).colwise() + Eigen::Vector2d(0.3, -2)).transpose();
+  }
+  return out;
+}
+
+TEST(CliDeform, RestPoseReproducesTheMesh3D) {
+  const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj");
+  const double size = cageDiameter(loadCage(cage).vertices);
+  expectEveryMethodGives(cage, cage, mesh, loadMesh(mesh).vertices, 1e-8 * size);
+}
+
+TEST(CliDeform, RestPoseReproducesThePoints2D) {
+  const std::string square = dataFile("square_polygon.obj"), points = dataFile("square_points.obj");
+  expectEveryMethodGives(square, square, points, loadMesh(points).vertices, 1e-8 * 2 * std::sqrt(2.0));
+
+  // A concave polygon written as an `l` loop, and points with z != 0: x, y deform, z is kept.
+  ScratchDir dir;
+  const std::string lPoints = dir.file("l_points.obj");
+  Eigen::MatrixXd P(5, 3);
+  P << 0.5, 0.5, 3, 1.5, 0.5, -1, 0.5, 1.5, 0.25, 0.1, 0.1, 0, 1.9, 0.9, 7;
+  saveObj(lPoints, P, PolygonMesh{});
+  const std::string lShape = dataFile("l_shape_loop.obj");
+  expectEveryMethodGives(lShape, lShape, lPoints, P, 1e-8 * 2 * std::sqrt(2.0));
+}
+
+TEST(CliDeform, SimilarityPoseMovesTheMeshBySimilarity) {
+  ScratchDir dir;
+  const std::string cage = dataFile("cube_quads.obj"), mesh = dataFile("pyramid_mesh.obj");
+  const Cage rest = loadCage(cage);
+  const std::string posed = dir.file("posed.obj");
+  saveObj(posed, similarity(rest.vertices, 3), cageTopology(rest));
+  const double size = 1.7 * cageDiameter(rest.vertices);
+  expectEveryMethodGives(cage, posed, mesh, similarity(loadMesh(mesh).vertices, 3), 1e-8 * size);
+
+  const std::string square = dataFile("square_polygon.obj"), points = dataFile("square_points.obj");
+  const Cage rest2d = loadCage(square);
+  const std::string posed2d = dir.file("posed2d.obj");
+  saveObj(posed2d, similarity(rest2d.vertices, 2), cageTopology(rest2d));
+  Eigen::MatrixXd expected = similarity(loadMesh(points).vertices, 2);
+  expectEveryMethodGives(square, posed2d, points, expected, 1e-8 * 1.7 * 2 * std::sqrt(2.0));
+}
+
+TEST(CliDeform, SharedModelsDeform) {
+  if (!fs::is_directory(kModelsDir)) GTEST_SKIP() << "models folder " << kModelsDir << " is absent";
+  ScratchDir dir;
+  const fs::path sphere = kModelsDir / "sphere";
+  const std::string cage = (sphere / "sphere_cages_triangulated.obj").string();
+  const std::string posed = (sphere / "sphere_cages_triangulated_deformed.obj").string();
+  const std::string mesh = (sphere / "sphere.obj").string();
+  const PolygonMesh input = loadMesh(mesh);
+  const double size = cageDiameter(loadCage(cage).vertices);
+
+  RunResult r = deform(cage, cage, mesh, dir.file("rest.obj"), {});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_LE(maxDistance(loadMesh(dir.file("rest.obj")).vertices, input.vertices), 1e-8 * size);
+
+  r = deform(cage, posed, mesh, dir.file("posed.obj"), {"--variant", "local", "--nu", "0.4", "--gamma", "0.5"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const PolygonMesh output = loadMesh(dir.file("posed.obj"));
+  EXPECT_EQ(output.faces, input.faces);
+  EXPECT_TRUE(output.vertices.allFinite());
+  EXPECT_GT(maxDistance(output.vertices, input.vertices), 1e-2 * size) << "the pose should move the mesh";
+
+  // A quad cage (triangulated on load) at rest.
+  const fs::path wire = kModelsDir / "wiresphere";
+  const std::string quads = (wire / "WireSphere_Cage.obj").string();
+  const std::string wireMesh = (wire / "wireSphere.obj").string();
+  r = deform(quads, quads, wireMesh, dir.file("wire.obj"), {"--method", "green"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_LE(maxDistance(loadMesh(dir.file("wire.obj")).vertices, loadMesh(wireMesh).vertices),
+            1e-8 * cageDiameter(loadCage(quads).vertices));
+}
+
+TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
+  ScratchDir dir;
+  const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj"), out = dir.file("out.obj");
+  {
+    std::ofstream old(out);
+    old << "old contents\n";
+  }
+  const RunResult r = deform(cage, cage, mesh, out, {});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_EQ(loadMesh(out).numVertices(), 5);
+  std::vector<std::string> entries;
+  for (const auto& entry : fs::directory_iterator(dir.path())) entries.push_back(entry.path().filename().string());
+  EXPECT_EQ(entries, std::vector<std::string>{"out.obj"});
+}
+
+}  // namespace
+}  // namespace somicage
