@@ -35,6 +35,12 @@ struct PrecomputeOptions {
   bool floatStorage = false;       // store the coordinate matrix in float (see frame_evaluation.h)
 };
 
+// Per-point facts established by the precompute (#P each; empty where a method does not provide them).
+struct PrecomputeDiagnostics {
+  Eigen::VectorXd winding;        // generalised winding number w.r.t. the rest cage: 1 inside, 0 outside
+  Eigen::VectorXd unityResidual;  // Somigliana: max |sum_i T_i - I| (Eq. 9); meaningful inside only
+};
+
 // A method's precomputed coordinates (the matrix C of frame_evaluation.h) and its per-frame weights.
 class CageDeformer {
  public:
@@ -47,6 +53,7 @@ class CageDeformer {
   virtual FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const = 0;
 
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
+  const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
   int numPoints() const { return coordinates_.rows(); }
 
   // The deformed points (#P by d, resized) for a posed cage: evaluateFrame(C, frameWeights(...)).
@@ -62,6 +69,7 @@ class CageDeformer {
 
   FrameCoordinates coordinates_;
   int threads_;
+  PrecomputeDiagnostics diagnostics_;
 };
 
 // Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.

@@ -26,9 +26,8 @@ NuCoefficients nuCoefficients(int dim, double nu) {
 // Assembly of T_i and K_j n_j from the stored terms
 // ---------------------------------------------------------------------------------------------------------------
 
-Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinate(int p, int i, double nu) const {
+Eigen::MatrixXd assembleVertexCoordinate(const double* t, int dim, double nu) {
   const NuCoefficients c = nuCoefficients(dim, nu);
-  const double* t = values.row(p).data() + vertexOffset(i);
   if (dim == 3) {
     Eigen::Matrix3d A, B;
     A << 0, -t[3], t[2], t[3], 0, -t[1], -t[2], t[1], 0;  // omega x w
@@ -41,6 +40,14 @@ Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinate(int p, int i, double nu)
   return c.alpha * (t[0] * Eigen::Matrix2d::Identity() + A) + c.beta * B;
 }
 
+double unityResidualOfSums(const double* termSums, int dim) {
+  return (assembleVertexCoordinate(termSums, dim, 0.0) - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff();
+}
+
+Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinate(int p, int i, double nu) const {
+  return assembleVertexCoordinate(values.row(p).data() + vertexOffset(i), dim, nu);
+}
+
 Eigen::VectorXd SomiglianaCoordinates::faceCoordinateTimesNormal(int p, int j, double nu) const {
   const NuCoefficients c = nuCoefficients(dim, nu);
   const double* t = values.row(p).data() + faceOffset(j);
@@ -49,9 +56,11 @@ Eigen::VectorXd SomiglianaCoordinates::faceCoordinateTimesNormal(int p, int j, d
 }
 
 Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinateSum(int p, double nu) const {
-  Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(dim, dim);
-  for (int i = 0; i < numVertices; ++i) sum += vertexCoordinate(p, i, nu);
-  return sum;
+  // T_i is linear in its terms: sum the terms, then assemble once.
+  Eigen::VectorXd sums = Eigen::VectorXd::Zero(vertexTermCount(dim));
+  for (int i = 0; i < numVertices; ++i)
+    sums += values.row(p).segment(vertexOffset(i), vertexTermCount(dim)).transpose();
+  return assembleVertexCoordinate(sums.data(), dim, nu);
 }
 
 Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
@@ -101,24 +110,18 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
 
 }  // namespace
 
-SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
-                                                   const IntegrationOptions& options,
-                                                   const ProgressCallback& progress) {
+void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
+                                    const IntegrationOptions& options, const ProgressCallback& progress,
+                                    const CoordinateRowSink& sink) {
   const int dim = cage.dim();
   SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
   SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");
   SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
 
-  SomiglianaCoordinates coords;
-  coords.dim = dim;
-  coords.numVertices = cage.numVertices();
-  coords.numFaces = cage.numFaces();
-  coords.restNormals = faceNormals(cage, cage.vertices);
+  const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
   const int numPoints = static_cast<int>(points.rows());
-  const int columns = coords.numVertices * vertexTermCount(dim) + coords.numFaces * faceTermCount(dim);
-  coords.values = RowMatrixXd::Zero(numPoints, columns);
-  coords.winding = Eigen::VectorXd::Zero(numPoints);
-
+  const int vertexColumns = cage.numVertices() * vertexTermCount(dim);
+  const int columns = vertexColumns + cage.numFaces() * faceTermCount(dim);
   std::vector<TriangleFrame> frames;
   if (dim == 3) {
     frames.reserve(cage.numFaces());
@@ -135,42 +138,65 @@ SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen
   for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
     if (!progress(static_cast<double>(blockStart) / std::max(numPoints, 1))) throw Cancelled();
     const int blockEnd = std::min(numPoints, blockStart + blockSize);
-#pragma omp parallel for schedule(dynamic, 8) num_threads(threads)
-    for (int p = blockStart; p < blockEnd; ++p) {
-      double* row = coords.values.row(p).data();
-      double angleSum = 0;
-      if (dim == 3) {
-        const Eigen::Vector3d x = points.row(p);
-        TriangleIntegrals I;
-        for (int j = 0; j < cage.numFaces(); ++j) {
-          if (frames[j].degenerate) continue;
-          const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
-          if (gauss)
-            integrateTriangleGauss(cage.vertices.row(corners[0]), cage.vertices.row(corners[1]),
-                                   cage.vertices.row(corners[2]), x, options.gaussPointsPerSide, I);
-          else
-            integrateTriangle(frames[j], x, I);
-          accumulateTriangle(I, frames[j].n, corners, coords.faceOffset(j), row, angleSum);
+#pragma omp parallel num_threads(threads)
+    {
+      std::vector<double> rowBuffer(columns);
+      double* row = rowBuffer.data();
+#pragma omp for schedule(dynamic, 8)
+      for (int p = blockStart; p < blockEnd; ++p) {
+        std::fill(rowBuffer.begin(), rowBuffer.end(), 0.0);
+        double angleSum = 0, winding;
+        if (dim == 3) {
+          const Eigen::Vector3d x = points.row(p);
+          TriangleIntegrals I;
+          for (int j = 0; j < cage.numFaces(); ++j) {
+            if (frames[j].degenerate) continue;
+            const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
+            if (gauss)
+              integrateTriangleGauss(cage.vertices.row(corners[0]), cage.vertices.row(corners[1]),
+                                     cage.vertices.row(corners[2]), x, options.gaussPointsPerSide, I);
+            else
+              integrateTriangle(frames[j], x, I);
+            accumulateTriangle(I, frames[j].n, corners, vertexColumns + j * faceTermCount(3), row, angleSum);
+          }
+          winding = -angleSum / (4 * M_PI);
+        } else {
+          const Eigen::Vector2d x = points.row(p);
+          EdgeIntegrals I;
+          for (int j = 0; j < cage.numFaces(); ++j) {
+            const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
+            const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
+            if (p0 == p1) continue;  // zero-length edges contribute nothing
+            if (gauss)
+              integrateEdgeGauss(p0, p1, x, 1, options.gaussPointsPerSide, I);
+            else
+              integrateEdge(p0, p1, x, I);
+            accumulateEdge(I, normals.row(j), ends, vertexColumns + j * faceTermCount(2), row, angleSum);
+          }
+          winding = -angleSum / (2 * M_PI);
         }
-        coords.winding(p) = -angleSum / (4 * M_PI);
-      } else {
-        const Eigen::Vector2d x = points.row(p);
-        EdgeIntegrals I;
-        for (int j = 0; j < cage.numFaces(); ++j) {
-          const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
-          const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
-          if (p0 == p1) continue;  // zero-length edges contribute nothing
-          if (gauss)
-            integrateEdgeGauss(p0, p1, x, 1, options.gaussPointsPerSide, I);
-          else
-            integrateEdge(p0, p1, x, I);
-          accumulateEdge(I, coords.restNormals.row(j), ends, coords.faceOffset(j), row, angleSum);
-        }
-        coords.winding(p) = -angleSum / (2 * M_PI);
+        sink(p, row, winding);
       }
     }
   }
   progress(1.0);
+}
+
+SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
+                                                   const IntegrationOptions& options,
+                                                   const ProgressCallback& progress) {
+  SomiglianaCoordinates coords;
+  coords.dim = cage.dim();
+  coords.numVertices = cage.numVertices();
+  coords.numFaces = cage.numFaces();
+  coords.restNormals = faceNormals(cage, cage.vertices);
+  const int columns = coords.numVertices * vertexTermCount(coords.dim) + coords.numFaces * faceTermCount(coords.dim);
+  coords.values.resize(points.rows(), columns);
+  coords.winding.resize(points.rows());
+  integrateSomiglianaCoordinates(cage, points, options, progress, [&](int p, const double* row, double winding) {
+    coords.values.row(p) = Eigen::Map<const Eigen::RowVectorXd>(row, columns);
+    coords.winding(p) = winding;
+  });
   return coords;
 }
 

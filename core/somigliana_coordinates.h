@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 
 #include "cage.h"
 #include "progress.h"
@@ -37,6 +38,12 @@ struct NuCoefficients {
   double alpha, beta, k1, k2;
 };
 NuCoefficients nuCoefficients(int dim, double nu);
+
+// T_i at nu (d by d) from its vertexTermCount(dim) stored terms.
+Eigen::MatrixXd assembleVertexCoordinate(const double* terms, int dim, double nu);
+
+// max |sum_i T_i - I| at nu = 0, from the sums over i of the vertex terms (vertexTermCount(dim) numbers).
+double unityResidualOfSums(const double* termSums, int dim);
 
 struct SomiglianaCoordinates {
   int dim = 3;
@@ -66,6 +73,17 @@ struct SomiglianaCoordinates {
 SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
                                                    const IntegrationOptions& options = {},
                                                    const ProgressCallback& progress = noProgress);
+
+// Receives each point's row of nu-independent terms (the layout of SomiglianaCoordinates::values, `columns`
+// numbers) and its winding number. Called from OpenMP worker threads, once per point: it may write per-point
+// storage without locking. The row buffer is reused after the call returns.
+using CoordinateRowSink = std::function<void(int point, const double* row, double winding)>;
+
+// The integration behind computeSomiglianaCoordinates, streaming rows to a sink instead of storing them (so a
+// deformer can build its own storage without a second copy of the coordinates).
+void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
+                                    const IntegrationOptions& options, const ProgressCallback& progress,
+                                    const CoordinateRowSink& sink);
 
 // Partition-of-unity residual of each point: the largest entry of |sum_i T_i(x) - I| at nu = 0 (#P).
 Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords);

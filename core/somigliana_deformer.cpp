@@ -48,48 +48,35 @@ void setMatrixColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
 // The sums give T(x) = R (sum_i T_i) R^T in one small product for the global variant. Points outside the cage
 // (winding < 1/2) have no Somigliana coordinates (sum_i T_i -> 0, Eq. 11 is undefined): their row is zero except
 // [x | 1], which the weights turn into T = I, b = s R x + t, the global similarity of the cage.
+// Writes a point's row of C in the storage type: the integrals, their per-vertex sums, and [x | 1] for outside
+// points; and records its diagnostics. Rows are independent, so this runs on the integration's worker threads.
 template <typename Scalar>
-CoordinateMatrix<Scalar> frameMatrix(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points) {
-  const int d = coords.dim, terms = vertexTermCount(d), main = static_cast<int>(coords.values.cols());
-  const int columns = main + terms + d + 1;
-  CoordinateMatrix<Scalar> C = CoordinateMatrix<Scalar>::Zero(coords.numPoints(), columns);
-  for (int p = 0; p < coords.numPoints(); ++p) {
-    if (coords.winding(p) < 0.5) {
-      C.row(p).segment(main + terms, d) = points.row(p).cast<Scalar>();
-      C(p, columns - 1) = 1;
-      continue;
-    }
-    C.row(p).head(main) = coords.values.row(p).cast<Scalar>();
-    Eigen::VectorXd sum = Eigen::VectorXd::Zero(terms);
-    for (int i = 0; i < coords.numVertices; ++i)
-      sum += coords.values.row(p).segment(coords.vertexOffset(i), terms).transpose();
-    C.row(p).segment(main, terms) = sum.cast<Scalar>().transpose();
+void writeFrameRow(int p, const double* integrals, double winding, const Eigen::MatrixXd& points, int dim,
+                   int numVertices, CoordinateMatrix<Scalar>& C, PrecomputeDiagnostics& diagnostics) {
+  const int terms = vertexTermCount(dim), main = static_cast<int>(C.cols()) - terms - dim - 1;
+  Scalar* row = C.row(p).data();
+  double sums[vertexTermCount(3)] = {0};
+  for (int i = 0; i < numVertices; ++i)
+    for (int k = 0; k < terms; ++k) sums[k] += integrals[i * terms + k];
+  diagnostics.winding(p) = winding;
+  diagnostics.unityResidual(p) = unityResidualOfSums(sums, dim);
+  std::fill(row, row + C.cols(), Scalar(0));
+  if (winding < 0.5) {
+    for (int a = 0; a < dim; ++a) row[main + terms + a] = static_cast<Scalar>(points(p, a));
+    row[main + terms + dim] = 1;
+    return;
   }
-  return C;
-}
-
-FrameCoordinates buildFrameCoordinates(const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
-                                       bool floatStorage) {
-  FrameCoordinates frame;
-  frame.mainColumns = static_cast<int>(coords.values.cols());
-  if (floatStorage)
-    frame.floats = frameMatrix<float>(coords, points);
-  else
-    frame.doubles = frameMatrix<double>(coords, points);
-  return frame;
+  for (int k = 0; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
 }
 
 class SomiglianaDeformer final : public CageDeformer {
  public:
-  SomiglianaDeformer(Cage rest, const SomiglianaCoordinates& coords, const Eigen::MatrixXd& points,
-                     const PrecomputeOptions& options)
-      : CageDeformer(buildFrameCoordinates(coords, points, options.floatStorage), options.threads),
+  SomiglianaDeformer(Cage rest, FrameCoordinates coordinates, PrecomputeDiagnostics diagnostics, int threads)
+      : CageDeformer(std::move(coordinates), threads),
         rest_(std::move(rest)),
-        restNormals_(coords.restNormals),
-        vertexOffsets_(coords.numVertices),
-        faceOffsets_(coords.numFaces) {
-    for (int i = 0; i < coords.numVertices; ++i) vertexOffsets_[i] = coords.vertexOffset(i);
-    for (int j = 0; j < coords.numFaces; ++j) faceOffsets_[j] = coords.faceOffset(j);
+        restNormals_(faceNormals(rest_, rest_.vertices)) {
+    diagnostics_ = std::move(diagnostics);
   }
 
   Method method() const override { return Method::Somigliana; }
@@ -118,7 +105,7 @@ class SomiglianaDeformer final : public CageDeformer {
       const Eigen::VectorXd v = posed.row(i).transpose();
       for (int k = 0; k < terms; ++k) {
         const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
-        const int row = vertexOffsets_[i] + k;
+        const int row = i * terms + k;
         if (!global) setMatrixColumns(rotated, W.main, row);
         W.main.row(row).segment(rhs, d) = (rotated * v).transpose();
       }
@@ -127,7 +114,7 @@ class SomiglianaDeformer final : public CageDeformer {
     for (int j = 0; j < rest_.numFaces(); ++j) {
       const Eigen::MatrixXd& R = bc.faceRotations[j];
       const double s = bc.tractionScales(j);
-      const int row = faceOffsets_[j];
+      const int row = rest_.numVertices() * terms + j * faceTermCount(d);
       W.main.row(row).segment(rhs, d) = (s * c.k1 * R * restNormals_.row(j).transpose()).transpose();
       for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) = (s * c.k2 * R.col(a)).transpose();
     }
@@ -145,7 +132,6 @@ class SomiglianaDeformer final : public CageDeformer {
  private:
   Cage rest_;
   Eigen::MatrixXd restNormals_;
-  std::vector<int> vertexOffsets_, faceOffsets_;
 };
 
 }  // namespace
@@ -155,15 +141,25 @@ std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const
                                                      const ProgressCallback& progress) {
   IntegrationOptions integration = options.integration;
   if (integration.threads == 0) integration.threads = options.threads;
-  const SomiglianaCoordinates coords = computeSomiglianaCoordinates(restCage, points, integration, progress);
-  return makeSomiglianaDeformer(restCage, coords, points, options);
-}
-
-std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const SomiglianaCoordinates& coords,
-                                                     const Eigen::MatrixXd& points, const PrecomputeOptions& options) {
-  SOMICAGE_ASSERT(coords.numPoints() == points.rows() && coords.numVertices == restCage.numVertices(),
-                  "coordinates belong to these points and this cage");
-  return std::make_unique<SomiglianaDeformer>(restCage, coords, points, options);
+  const int d = restCage.dim(), numPoints = static_cast<int>(points.rows());
+  const int main = restCage.numVertices() * vertexTermCount(d) + restCage.numFaces() * faceTermCount(d);
+  const int columns = main + vertexTermCount(d) + d + 1;
+  PrecomputeDiagnostics diagnostics{Eigen::VectorXd(numPoints), Eigen::VectorXd(numPoints)};
+  FrameCoordinates frame;
+  frame.mainColumns = main;
+  // Rows go straight into C in its storage type: no second, double-precision copy of the coordinates.
+  if (options.floatStorage) {
+    frame.floats.resize(numPoints, columns);
+    integrateSomiglianaCoordinates(restCage, points, integration, progress, [&](int p, const double* row, double w) {
+      writeFrameRow(p, row, w, points, d, restCage.numVertices(), frame.floats, diagnostics);
+    });
+  } else {
+    frame.doubles.resize(numPoints, columns);
+    integrateSomiglianaCoordinates(restCage, points, integration, progress, [&](int p, const double* row, double w) {
+      writeFrameRow(p, row, w, points, d, restCage.numVertices(), frame.doubles, diagnostics);
+    });
+  }
+  return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads);
 }
 
 }  // namespace somicage

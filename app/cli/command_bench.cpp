@@ -126,24 +126,20 @@ int runBenchCommand(const std::vector<std::string>& args) {
   precompute.floatStorage = true;
   precompute.integration.threads = threads;
 
-  // Precompute: integrate (double) and build the float coordinate matrix, as the editor does.
+  // Precompute as the editor does: exact integrals, stored in float.
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
-  SomiglianaCoordinates coords;
   for (int r = 0; r < repeat; ++r) {
     deformer.reset();
-    coords = SomiglianaCoordinates();
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
-    coords = computeSomiglianaCoordinates(cage, points, precompute.integration, progress.callback());
-    deformer = makeSomiglianaDeformer(cage, coords, points, precompute);
+    deformer = makeSomiglianaDeformer(cage, points, precompute, progress.callback());
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;
-  const Eigen::VectorXd residual = partitionOfUnityResidual(coords);
-  for (int p = 0; p < coords.numPoints(); ++p)
-    if (coords.winding(p) >= 0.5) unity.push_back(residual(p));
-  coords = SomiglianaCoordinates();  // free the double integrals before timing frames
+  const PrecomputeDiagnostics& diagnostics = deformer->diagnostics();
+  for (int p = 0; p < deformer->numPoints(); ++p)
+    if (diagnostics.winding(p) >= 0.5) unity.push_back(diagnostics.unityResidual(p));
 
   // Frames.
   std::vector<std::pair<std::string, double>> deformMs;
