@@ -157,7 +157,9 @@ class GreenDeformer : public CageDeformer {
  public:
   GreenDeformer(const Cage& restCage, const GreenCoordinates& coords, const Eigen::MatrixXd& points,
                 const PrecomputeOptions& options)
-      : CageDeformer(greenFrameCoordinates(coords, points, options.floatStorage), options.threads), rest_(restCage) {}
+      : CageDeformer(greenFrameCoordinates(coords, points, options.floatStorage), options.threads), rest_(restCage) {
+    diagnostics_.winding = coords.phi.rowwise().sum();  // the double layer of the hats sums to the winding number
+  }
 
   Method method() const override { return Method::Green; }
   int dim() const override { return rest_.dim(); }

@@ -119,6 +119,12 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
     deformer = makeDeformer(method, cage, points, options, progress.callback());
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
+  const Eigen::VectorXd& winding = deformer->diagnostics().winding;
+  const Eigen::Index outside = (winding.array() < 0.5).count();
+  if (outside > 0 && method != Method::MeanValue) {
+    std::cerr << kCommand << ": warning: " << outside << " of " << points.rows() << " points of " << meshPath
+              << " lie outside the cage; they follow the cage's best-fit similarity (docs/engine.md)\n";
+  }
   const CliClock::time_point deformStart = CliClock::now();
   const Eigen::MatrixXd deformed = deformer->deform(posed, params);
   const double deformSeconds = secondsSince(deformStart);

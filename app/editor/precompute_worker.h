@@ -18,6 +18,13 @@
 
 namespace somicage::editor {
 
+// The editor stores coordinates in float: half the memory and the bytes read per frame (docs/engine.md).
+inline PrecomputeOptions interactiveOptions() {
+  PrecomputeOptions options;
+  options.floatStorage = true;
+  return options;
+}
+
 using DeformerSet = std::map<Method, std::shared_ptr<const CageDeformer>>;
 
 struct PrecomputeRequest {
@@ -25,7 +32,7 @@ struct PrecomputeRequest {
   std::shared_ptr<const Scene> scene;
   std::function<Scene()> loadScene;
   std::vector<Method> methods;  // deformers to build, in this order
-  PrecomputeOptions options;
+  PrecomputeOptions options = interactiveOptions();
 };
 
 struct PrecomputeOutcome {
