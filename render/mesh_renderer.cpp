@@ -1,6 +1,7 @@
 #include "mesh_renderer.h"
 
 #include <stdexcept>
+#include <type_traits>
 
 #include "gl_objects.h"
 #include "mesh_normals.h"
@@ -80,6 +81,18 @@ void MeshRenderer::draw(const ViewMatrices& view, const MeshStyle& style) const 
   glBindVertexArray(0);
   SOMICAGE_GL_CHECK("MeshRenderer::draw");
 }
+
+MeshRenderer::DeviceBuffers MeshRenderer::deviceBuffers(int vertexCount) {
+  static_assert(std::is_same<GLuint, unsigned int>::value, "DeviceBuffers holds GLuint names");
+  const std::size_t bytes = sizeof(float) * 3 * static_cast<std::size_t>(vertexCount);
+  for (GlBuffer* buffer : {&impl_->positions, &impl_->normals}) {
+    if (buffer->size() != bytes) buffer->upload(GL_ARRAY_BUFFER, nullptr, bytes, GL_DYNAMIC_DRAW);
+  }
+  impl_->vertexCount = vertexCount;
+  return {impl_->positions.id(), impl_->normals.id(), impl_->indices.id()};
+}
+
+const Eigen::MatrixXi& MeshRenderer::triangles() const { return impl_->triangles; }
 
 int MeshRenderer::numVertices() const { return impl_->vertexCount; }
 int MeshRenderer::numTriangles() const { return static_cast<int>(impl_->triangles.rows()); }

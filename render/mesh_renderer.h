@@ -30,6 +30,15 @@ class MeshRenderer {
   void setPositions(const Eigen::MatrixXd& positions);
   void draw(const ViewMatrices& view, const MeshStyle& style) const;
 
+  // For render/gpu_deformer.h, which writes positions and normals with compute shaders: sizes the position and
+  // normal buffers for `vertexCount` vertices (3 floats each, contents undefined until written) and returns the
+  // GL names of those two and of the index buffer (#F by 3 uint). No GL types here: they are GLuint.
+  struct DeviceBuffers {
+    unsigned int positions = 0, normals = 0, triangles = 0;
+  };
+  DeviceBuffers deviceBuffers(int vertexCount);
+  const Eigen::MatrixXi& triangles() const;
+
   int numVertices() const;
   int numTriangles() const;
 

@@ -11,6 +11,7 @@
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
 #include "obj_io.h"
+#include "deformer.h"
 #include "somigliana_coordinates.h"
 
 namespace somicage {
@@ -35,7 +36,8 @@ struct UnityCheck {
   double max = 0.0, median = 0.0, precomputeSeconds = 0.0;
 };
 
-UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points, int threads) {
+UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                 Eigen::VectorXd& winding) {
   UnityCheck check;
   check.points = static_cast<int>(points.rows());
   IntegrationOptions options;
@@ -48,6 +50,7 @@ UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points
   }
   check.precomputeSeconds = secondsSince(start);
   const Eigen::VectorXd residual = partitionOfUnityResidual(coords);
+  winding = coords.winding;
   std::vector<double> inside;
   for (int p = 0; p < check.points; ++p) {
     if (!(coords.winding(p) >= 0.5)) {
@@ -72,8 +75,31 @@ UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points
   return check;
 }
 
+// Each method's identity reproduction at rest: max |x~ - x| / cage diameter over the inside points (all points for
+// mean value coordinates, which are defined everywhere). Somigliana and Green reproduce the identity up to their
+// integration error; mean value coordinates exactly.
+std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, const Eigen::MatrixXd& points,
+                                                              const Eigen::VectorXd& winding, int threads) {
+  std::vector<std::pair<std::string, double>> errors;
+  const double diameter = cageDiameter(cage.vertices);
+  PrecomputeOptions options;
+  options.threads = threads;
+  for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue}) {
+    ProgressReporter progress("reproduction with " + methodName(method));
+    const auto deformer = makeDeformer(method, cage, points, options, progress.callback());
+    progress.finish();
+    const Eigen::VectorXd moved = (deformer->deform(cage.vertices, {}) - points).rowwise().norm();
+    double worst = 0;
+    for (Eigen::Index p = 0; p < points.rows(); ++p)
+      if (method == Method::MeanValue || winding(p) >= 0.5) worst = std::max(worst, moved(p) / diameter);
+    errors.emplace_back(methodName(method), worst);
+  }
+  return errors;
+}
+
 void writeJson(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-               const std::vector<std::string>& problems, const UnityCheck& unity) {
+               const std::vector<std::string>& problems, const UnityCheck& unity,
+               const std::vector<std::pair<std::string, double>>& reproduction) {
   JsonObjectWriter json(std::cout);
   json.field("cage", cagePath);
   if (meshPath.empty()) {
@@ -117,14 +143,17 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
   }
   if (unity.computed) {
     json.field("precompute_s", unity.precomputeSeconds);
+    json.field("reproduction_error", reproduction);
   } else {
     json.null("precompute_s");
+    json.null("reproduction_error");
   }
   json.close();
 }
 
 void writeReport(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-                 const std::vector<std::string>& problems, const UnityCheck& unity) {
+                 const std::vector<std::string>& problems, const UnityCheck& unity,
+                 const std::vector<std::pair<std::string, double>>& reproduction) {
   const auto yesNo = [](bool value) { return value ? "yes" : "NO"; };
   std::ostringstream out;
   out << "cage   " << cagePath << ": " << report.dim << "D, " << report.numVertices << " vertices, " << report.numFaces
@@ -147,6 +176,9 @@ void writeReport(const std::string& cagePath, const std::string& meshPath, const
         out << "       partition of unity |sum_i T_i - I| over the inside points: max " << formatNumber(unity.max, 3)
             << ", median " << formatNumber(unity.median, 3) << " (coordinates in "
             << formatSeconds(unity.precomputeSeconds) << ")\n";
+        out << "       identity at rest, max |x~ - x| / diameter:";
+        for (const auto& [method, error] : reproduction) out << " " << method << " " << formatNumber(error, 3);
+        out << "\n";
       }
     } else {
       out << "; partition of unity not computed: fix the cage first\n";
@@ -195,14 +227,18 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
 
   UnityCheck unity;
   unity.points = mesh.numVertices();
+  std::vector<std::pair<std::string, double>> reproduction;
   // Integrating needs valid indices and faces with a normal; other defects still give numbers worth seeing.
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
-    unity = checkPartitionOfUnity(cage, meshPoints(mesh, cage.dim()), threads);
+    const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
+    Eigen::VectorXd winding;
+    unity = checkPartitionOfUnity(cage, points, threads, winding);
+    reproduction = checkReproduction(cage, points, winding, threads);
   }
   if (args.has("--json")) {
-    writeJson(cagePath, meshPath, report, problems, unity);
+    writeJson(cagePath, meshPath, report, problems, unity, reproduction);
   } else {
-    writeReport(cagePath, meshPath, report, problems, unity);
+    writeReport(cagePath, meshPath, report, problems, unity, reproduction);
   }
   return report.valid() ? kExitOk : kExitFailure;
 }

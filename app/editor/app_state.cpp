@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -106,6 +107,7 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     ++state.sceneGeneration;
     state.deformers.clear();
     state.deformed.clear();
+    state.cpuStale.clear();
     state.pose = state.scene->restCage.vertices;
     state.selection.resize(state.scene->restCage.numVertices());
     state.history.clear();
@@ -151,6 +153,12 @@ bool pollWorker(AppState& state) {
 bool updateDeformation(AppState& state) {
   if (!state.deformDirty || !state.scene) return false;
   state.deformDirty = false;
+  if (state.activeBackend() == DeformBackend::Gpu) {
+    state.cpuStale = state.viewMethods();
+    ++state.deformGeneration;  // the Renderer deforms on the GPU and reports the timing (Renderer::sync)
+    return true;
+  }
+  state.cpuStale.clear();
   state.stats.deformThreads = omp_get_max_threads();
   bool changed = false;
   const auto t0 = std::chrono::steady_clock::now();
@@ -169,6 +177,29 @@ bool updateDeformation(AppState& state) {
     ++state.deformGeneration;
   }
   return changed;
+}
+
+void ensureCpuPoints(AppState& state, Method method) {
+  auto stale = std::find(state.cpuStale.begin(), state.cpuStale.end(), method);
+  if (stale == state.cpuStale.end()) return;
+  state.cpuStale.erase(stale);
+  auto it = state.deformers.find(method);
+  if (it == state.deformers.end()) return;
+  try {
+    it->second->deform(state.pose, state.params, state.deformed[method]);
+  } catch (const std::exception& e) {
+    state.errors.push_back(std::string("deformation failed: ") + e.what());
+  }
+}
+
+void setBackend(AppState& state, DeformBackend backend) {
+  if (state.backend.requested == backend) return;
+  state.backend.requested = backend;
+  state.deformDirty = true;
+}
+
+const char* backendDisplayName(DeformBackend backend) {
+  return backend == DeformBackend::Gpu ? "GPU (compute shader)" : "CPU (OpenMP)";
 }
 
 const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
@@ -233,6 +264,7 @@ void setCompare(AppState& state, bool on) {
 
 void frameAll(AppState& state) {
   if (!state.scene) return;
+  ensureCpuPoints(state, state.viewMethods().front());
   Eigen::Vector3d lo, hi, clo, chi;
   bounds3(displayedPoints(state, state.viewMethods().front()), lo, hi);
   bounds3(state.pose.rows() > 0 ? state.pose : state.scene->restCage.vertices, clo, chi);
@@ -315,6 +347,7 @@ void loadPosedCage(AppState& state, const std::string& path) {
 
 void exportDeformedMesh(AppState& state, const std::string& path) {
   if (!state.scene) return;
+  ensureCpuPoints(state, state.method);
   try {
     PolygonMesh topology;
     const Eigen::MatrixXi& f = state.scene->meshTriangles;

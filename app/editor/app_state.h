@@ -14,6 +14,7 @@
 
 #include "camera.h"
 #include "deformer.h"
+#include "editor_options.h"
 #include "history.h"
 #include "precompute_worker.h"
 #include "scene.h"
@@ -45,9 +46,20 @@ struct PathDialog {
 
 struct Stats {
   double precomputeSeconds = 0.0;
+  // CPU backend: wall time of the last deformation (all views). GPU backend: GPU time of the latest frame whose timer
+  // query finished (all views; NaN until one has), read without stalling.
   double lastDeformMs = 0.0;
+  double lastDeformCpuMs = 0.0;  // GPU backend: the CPU part (frameWeights, the W upload, issuing the dispatches)
   double fps = 0.0;
   int deformThreads = 1;
+};
+
+// The per-frame deformation backend and whether the GPU one can run here (set by the frame loop once the GL
+// context exists; the GPU work itself happens in the Renderer, see editor_renderer.h).
+struct BackendState {
+  DeformBackend requested = DeformBackend::Cpu;  // the panel's choice (--backend)
+  bool gpuAvailable = false;                     // OpenGL 4.3 compute shaders work in this context
+  std::string gpuNote = "no OpenGL context yet";  // why the GPU is unavailable, or a caveat (software renderer)
 };
 
 struct AppState {
@@ -69,6 +81,10 @@ struct AppState {
   std::map<Method, Eigen::MatrixXd> deformed;    // latest deformed points per method
   std::uint64_t deformGeneration = 0;            // bumps when `deformed` changes (position upload)
   bool deformDirty = true;
+  BackendState backend;
+  // GPU backend: methods whose `deformed` entry is stale (the Renderer deformed them on the GPU); ensureCpuPoints()
+  // computes them on the CPU when something needs the numbers (framing, export).
+  std::vector<Method> cpuStale;
 
   // ---- editing ----
   UndoHistory history;
@@ -101,6 +117,10 @@ struct AppState {
 
   // Methods shown, one per viewport.
   std::vector<Method> viewMethods() const;
+  // The backend that deforms this frame: the requested one, or the CPU when the GPU is unavailable.
+  DeformBackend activeBackend() const {
+    return backend.requested == DeformBackend::Gpu && backend.gpuAvailable ? DeformBackend::Gpu : DeformBackend::Cpu;
+  }
   int dim() const { return scene ? scene->dim() : 3; }
 };
 
@@ -122,8 +142,16 @@ bool pollWorker(AppState& state);
 // Installs an outcome (also used by the screenshot path after waiting).
 void installOutcome(AppState& state, PrecomputeOutcome outcome);
 
-// Calls deform() for every view whose result is stale. Returns true when positions changed.
+// Calls deform() for every view whose result is stale. Returns true when positions changed. With the GPU backend
+// it only marks the views for the Renderer (bumps deformGeneration) and leaves `deformed` stale (cpuStale).
 bool updateDeformation(AppState& state);
+
+// Brings `deformed[method]` up to date on the CPU when the GPU backend left it stale (framing, export).
+void ensureCpuPoints(AppState& state, Method method);
+
+// Switches the backend (recorded nowhere: not an edit). The GPU choice takes effect only when gpuAvailable.
+void setBackend(AppState& state, DeformBackend backend);
+const char* backendDisplayName(DeformBackend backend);
 
 // The points shown in a view: deformed when available, else the rest mesh.
 const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method);

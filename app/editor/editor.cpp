@@ -17,6 +17,7 @@
 #include "editor_renderer.h"
 #include "errors.h"
 #include "gl_context.h"
+#include "gpu_deformer.h"
 #include "input.h"
 #include "layout.h"
 #include "panels.h"
@@ -44,6 +45,27 @@ void applyOptions(AppState& state, const EditorOptions& o) {
     state.compareMethods = o.compare;
   }
   state.hideUi = o.hideUi;
+}
+
+// Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
+// software renderer (Mesa llvmpipe runs compute shaders on the CPU, an order of magnitude slower than
+// core's evaluateFrame: see render/gpu_deformer.cpp), unless --backend says otherwise.
+void chooseBackend(AppState& state, const EditorOptions& options) {
+  std::string reason;
+  state.backend.gpuAvailable = render::GpuDeformer::available(&reason);
+  const bool software = state.backend.gpuAvailable && render::GpuDeformer::softwareRenderer();
+  if (!state.backend.gpuAvailable) {
+    state.backend.gpuNote = reason;
+  } else if (software) {
+    state.backend.gpuNote = "this OpenGL renders on the CPU (" + state.glRenderer +
+                            "): the GPU backend works but is slower than the CPU one here";
+  } else {
+    state.backend.gpuNote.clear();
+  }
+  const bool preferGpu = state.backend.gpuAvailable && !software;
+  state.backend.requested = options.backend ? *options.backend : preferGpu ? DeformBackend::Gpu : DeformBackend::Cpu;
+  if (options.backend == DeformBackend::Gpu && !state.backend.gpuAvailable)
+    std::fprintf(stderr, "somicage: --backend gpu: %s; deforming on the CPU\n", reason.c_str());
 }
 
 void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) {
@@ -130,12 +152,19 @@ int runWindow(const EditorOptions& options) {
                  "For batch work without a window see 'somicage help'.\n");
     return 1;
   }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SAMPLES, 4);
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "SomiCage", nullptr, nullptr);
+  // OpenGL 4.3 core when the driver has it (compute shaders: the GPU deformation backend), else 3.3 core.
+  auto createWindow = [&](int major) {
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, major);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_SAMPLES, 4);
+    return glfwCreateWindow(options.width, options.height, "SomiCage", nullptr, nullptr);
+  };
+  glfwSetErrorCallback(nullptr);  // a refused 4.3 context is not an error worth printing
+  GLFWwindow* window = createWindow(4);
+  glfwSetErrorCallback(glfwErrorCallback);
+  if (!window) window = createWindow(3);
   if (!window) {
     std::fprintf(stderr, "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
                          "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
@@ -172,6 +201,7 @@ int runWindow(const EditorOptions& options) {
     Renderer renderer;
     state.glRenderer = glRenderer;
     applyOptions(state, options);
+    chooseBackend(state, options);
     if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
     } else if (!options.meshPath.empty()) {
@@ -195,7 +225,8 @@ int runWindow(const EditorOptions& options) {
           for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
           rc = 1;
         } else {
-          std::printf("wrote %s\n", options.screenshotPath.c_str());
+          std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
+                      backendDisplayName(state.activeBackend()));
         }
       }
     } else {

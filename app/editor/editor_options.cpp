@@ -87,6 +87,10 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.height = h;
     } else if (a == "--hide-ui") {
       o.hideUi = true;
+    } else if (a == "--backend") {
+      const std::string& v = value();
+      if (v != "cpu" && v != "gpu") throw InputError(a, -1, "expected cpu or gpu, got '" + v + "'", "--backend gpu");
+      o.backend = v == "gpu" ? DeformBackend::Gpu : DeformBackend::Cpu;
     } else if (a.size() > 1 && a[0] == '-') {
       throw InputError(a, -1, "unknown option", "see somicage --help");
     } else {
@@ -133,7 +137,9 @@ std::string editorUsage() {
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,green,mvc\n"
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
-         "  --hide-ui                 viewports only, no panels\n";
+         "  --hide-ui                 viewports only, no panels\n"
+         "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
+         "                            (default: gpu on a hardware GPU, cpu otherwise)\n";
 }
 
 }  // namespace somicage::editor

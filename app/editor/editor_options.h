@@ -9,6 +9,10 @@
 
 namespace somicage::editor {
 
+// Where the editor evaluates the deformation every frame: core's evaluateFrame (OpenMP) or the OpenGL 4.3 compute
+// shader of render/gpu_deformer.h, which writes straight into the vertex buffers.
+enum class DeformBackend { Cpu, Gpu };
+
 struct EditorOptions {
   std::string meshPath, cagePath, posedPath;  // empty mesh and cage: the built-in demo
   std::string sessionPath;                    // --session FILE
@@ -20,6 +24,7 @@ struct EditorOptions {
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH
   bool hideUi = false;                        // --hide-ui: only the viewports (for clean screenshots)
+  std::optional<DeformBackend> backend;       // --backend cpu|gpu; default: GPU on a hardware GPU, else CPU
   bool help = false;                          // -h / --help
 };
 

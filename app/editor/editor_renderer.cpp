@@ -1,7 +1,11 @@
 #include "editor_renderer.h"
 
 #include <cmath>
+#include <exception>
+#include <limits>
+#include <string>
 
+#include "errors.h"
 #include "gl_context.h"
 
 namespace somicage::editor {
@@ -13,25 +17,85 @@ const Eigen::Vector3f kViewBackground(0.27f, 0.28f, 0.32f);
 
 Renderer::Renderer() = default;
 
-void Renderer::sync(const AppState& state) {
+bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, Method method, bool newScene) {
+  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(method);
+  if (!slot.gpu) slot.gpu = std::make_unique<render::GpuDeformer>();
+  const bool newDeformer = slot.uploaded != deformer;
+  if (newDeformer) {
+    slot.uploaded.reset();
+    slot.gpu->upload(*deformer);
+    slot.uploaded = deformer;
+  }
+  const bool current = slot.onGpu && slot.method == method && slot.deformGeneration == state.deformGeneration;
+  if (!newScene && !newDeformer && current) return false;
+  slot.gpu->deform(state.pose, state.params, *slot.mesh);
+  slot.onGpu = true;
+  return true;
+}
+
+void Renderer::sync(AppState& state) {
   if (!state.scene) return;
   const std::vector<Method> methods = state.viewMethods();
   if (meshes_.size() < methods.size()) meshes_.resize(methods.size());
+  for (std::size_t v = methods.size(); v < meshes_.size(); ++v) {  // hidden views give their GPU memory back
+    meshes_[v].gpu.reset();
+    meshes_[v].uploaded.reset();
+    meshes_[v].onGpu = false;
+  }
+  const bool gpuBackend = state.activeBackend() == DeformBackend::Gpu;
+  double gpuMs = 0.0, cpuMs = 0.0;
+  bool ranOnGpu = false, timed = false;
   for (std::size_t v = 0; v < methods.size(); ++v) {
     MeshSlot& slot = meshes_[v];
     if (!slot.mesh) slot.mesh = std::make_unique<render::MeshRenderer>();
-    const bool deformed = hasDeformer(state, methods[v]) && state.deformed.count(methods[v]) > 0;
     const bool newScene = slot.sceneGeneration != state.sceneGeneration;
     if (newScene) slot.mesh->setTopology(state.scene->meshTriangles);
+    if (state.activeBackend() == DeformBackend::Gpu && hasDeformer(state, methods[v])) {  // (a failure turns it off)
+      try {
+        if (syncGpu(slot, state, methods[v], newScene)) {
+          ranOnGpu = true;
+          cpuMs += slot.gpu->lastCpuMilliseconds();
+        }
+        const double ms = slot.gpu->lastGpuMilliseconds();
+        if (std::isfinite(ms)) {
+          gpuMs += ms;
+          timed = true;
+        }
+      } catch (const InputError& e) {  // bad parameters: as on the CPU path
+        state.errors.push_back(std::string("deformation failed: ") + e.what());
+      } catch (const std::exception& e) {  // the GPU cannot do it (shader, memory): fall back to the CPU for good
+        state.backend.gpuAvailable = false;
+        state.backend.gpuNote = std::string("the GPU deformation failed, using the CPU: ") + e.what();
+        state.errors.push_back(state.backend.gpuNote);
+        state.deformDirty = true;
+        slot.gpu.reset();
+        slot.uploaded.reset();
+        slot.onGpu = false;
+      }
+      slot.sceneGeneration = state.sceneGeneration;
+      slot.deformGeneration = state.deformGeneration;
+      slot.method = methods[v];
+      slot.showedDeformed = true;
+      continue;
+    }
+    if (slot.gpu) {  // back on the CPU: free the GPU copy of C
+      slot.gpu.reset();
+      slot.uploaded.reset();
+    }
+    const bool deformed = hasDeformer(state, methods[v]) && state.deformed.count(methods[v]) > 0;
     if (newScene || slot.method != methods[v] || slot.deformGeneration != state.deformGeneration ||
-        slot.showedDeformed != deformed) {
+        slot.showedDeformed != deformed || slot.onGpu) {
       slot.mesh->setPositions(displayedPoints(state, methods[v]));
       slot.sceneGeneration = state.sceneGeneration;
       slot.deformGeneration = state.deformGeneration;
       slot.method = methods[v];
       slot.showedDeformed = deformed;
+      slot.onGpu = false;
     }
   }
+  if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
+  if (gpuBackend && state.activeBackend() == DeformBackend::Gpu)
+    state.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
   if (cageScene_ != state.sceneGeneration) {
     cage_.setTopology(state.scene->restCage.faces);
     cageScene_ = state.sceneGeneration;

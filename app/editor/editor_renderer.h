@@ -1,6 +1,7 @@
 // The editor's Renderer: owns the GPU copies of the scene (one mesh per viewport, one cage) and draws the
 // viewports from AppState. Declared next to AppState and destroyed before the GL context. The GL calls
-// themselves live in render/; this file sees no GL header.
+// themselves live in render/; this file sees no GL header. With the GPU backend it also owns one GpuDeformer per
+// viewport, which deforms straight into that viewport's vertex buffers.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 
 #include "app_state.h"
 #include "cage_renderer.h"
+#include "gpu_deformer.h"
 #include "layout.h"
 #include "mesh_renderer.h"
 
@@ -19,8 +21,10 @@ class Renderer {
   Renderer();
 
   // Uploads what changed since the last call: topology when the scene changed, positions when the pose or
-  // the deformation changed, the selection flags when the pose generation changed.
-  void sync(const AppState& state);
+  // the deformation changed, the selection flags when the pose generation changed. With the GPU backend, deforms
+  // the changed views on the GPU instead (C uploaded once per deformer) and writes the timing into state.stats; a
+  // GPU failure switches the state to the CPU backend (backend.gpuAvailable = false, the reason in gpuNote).
+  void sync(AppState& state);
 
   // Clears the framebuffer and draws every viewport. views are in window pixels; framebufferScale converts
   // them to framebuffer pixels (HiDPI).
@@ -33,7 +37,13 @@ class Renderer {
     std::uint64_t sceneGeneration = ~0ull, deformGeneration = ~0ull;
     Method method = Method::Somigliana;
     bool showedDeformed = false;
+    // GPU backend: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
+    std::unique_ptr<render::GpuDeformer> gpu;
+    std::shared_ptr<const CageDeformer> uploaded;
+    bool onGpu = false;  // the vertex buffers hold the GPU's result
   };
+  // Deforms slot v on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.
+  bool syncGpu(MeshSlot& slot, const AppState& state, Method method, bool newScene);
   std::vector<MeshSlot> meshes_;
   render::CageRenderer cage_;
   std::uint64_t cageScene_ = ~0ull, cagePose_ = ~0ull;

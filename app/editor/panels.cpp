@@ -207,6 +207,22 @@ void drawControlPanel(AppState& state) {
   bool wire = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
   if (ImGui::Checkbox("wireframe", &wire)) state.wireframe = wire ? 1 : 0;
 
+  sectionHeader("Deformation backend");
+  {
+    int backend = static_cast<int>(state.backend.requested);
+    if (ImGui::RadioButton("CPU", backend == static_cast<int>(DeformBackend::Cpu))) setBackend(state, DeformBackend::Cpu);
+    ImGui::SameLine();
+    if (!state.backend.gpuAvailable) ImGui::BeginDisabled();
+    if (ImGui::RadioButton("GPU (compute shader)", backend == static_cast<int>(DeformBackend::Gpu)))
+      setBackend(state, DeformBackend::Gpu);
+    if (!state.backend.gpuAvailable) ImGui::EndDisabled();
+    if (!state.backend.gpuNote.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+      ImGui::TextWrapped("%s%s", state.backend.gpuAvailable ? "" : "GPU unavailable: ", state.backend.gpuNote.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
+
   sectionHeader("Precompute");
   if (state.worker.busy()) {
     const std::string stage = state.worker.stage();
@@ -239,11 +255,20 @@ void drawStatusBar(AppState& state) {
   if (state.scene) {
     char fps[32] = "- FPS";
     if (state.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.stats.fps);
-    ImGui::Text("mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   deform %.2f ms   %s   CPU (OpenMP, %d threads)   %s",
+    char backend[96];
+    if (state.activeBackend() == DeformBackend::Gpu) {
+      std::snprintf(backend, sizeof backend, "GPU (compute shader, %.2f ms on the CPU)", state.stats.lastDeformCpuMs);
+    } else {
+      std::snprintf(backend, sizeof backend, "CPU (OpenMP, %d threads)", state.stats.deformThreads);
+    }
+    char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
+    if (std::isfinite(state.stats.lastDeformMs))
+      std::snprintf(deform, sizeof deform, "deform %.2f ms", state.stats.lastDeformMs);
+    ImGui::Text("mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s   %s",
                 static_cast<long long>(state.scene->meshVertices.rows()),
                 static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
-                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, state.stats.lastDeformMs,
-                fps, state.stats.deformThreads, state.statusMessage.c_str());
+                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, backend,
+                state.statusMessage.c_str());
   } else {
     ImGui::Text("loading...   %s", state.statusMessage.c_str());
   }

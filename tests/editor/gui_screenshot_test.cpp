@@ -230,6 +230,43 @@ TEST(GuiScreenshot, FireHydrantCompareWithPanels) {
   EXPECT_GT(img.coverage(), 0.05);
 }
 
+// Fraction of pixels whose colour differs by more than `threshold` in some channel (same-size images).
+double colourDifference(const Image& a, const Image& b, int threshold) {
+  long n = 0;
+  for (std::size_t i = 0; i + 3 < a.rgba.size(); i += 4) {
+    bool differs = false;
+    for (int c = 0; c < 3; ++c)
+      differs |= std::abs(static_cast<int>(a.rgba[i + c]) - static_cast<int>(b.rgba[i + c])) > threshold;
+    n += differs;
+  }
+  return static_cast<double>(n) / (static_cast<double>(a.width) * a.height);
+}
+
+// The GPU backend (compute shader writing the vertex buffers, normals included) draws what the CPU backend draws:
+// the same silhouette, and the same shading up to a few grey levels (float positions and normals on the GPU).
+TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  const std::string args = quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
+                           " --compare somigliana,green --nu 0.3 --gamma 1 --local --hide-ui --size 960x480";
+  const Image gpu = screenshot(args + " --backend gpu", "sphere_posed_gpu");
+  if (readLog("sphere_posed_gpu").find("backend: GPU") == std::string::npos)
+    GTEST_SKIP() << "no OpenGL 4.3 compute shaders here:\n" << readLog("sphere_posed_gpu");
+  const Image cpu = screenshot(args + " --backend cpu", "sphere_posed_cpu");
+  ASSERT_GT(gpu.width, 0);
+  ASSERT_EQ(gpu.width, cpu.width);
+  ASSERT_EQ(gpu.height, cpu.height);
+  EXPECT_GT(gpu.coverage(0, gpu.width / 2), 0.03);
+  EXPECT_GT(gpu.coverage(gpu.width / 2, gpu.width), 0.03);
+  EXPECT_LT(maskDifference(gpu, 0, cpu, 0, gpu.width), 1e-3);
+  EXPECT_LT(colourDifference(gpu, cpu, 6), 2e-3);
+  // And it moved with the cage (not the rest mesh).
+  const Image rest = screenshot(
+      quote(f.mesh) + " " + quote(f.cage) + " --compare somigliana,green --hide-ui --size 960x480 --backend gpu",
+      "sphere_rest_gpu");
+  EXPECT_GT(maskDifference(rest, 0, gpu, 0, gpu.width), 0.01);
+}
+
 TEST(GuiScreenshot, BadFilesFailCleanly) {
   REQUIRE_DISPLAY();
   const int rc = runSomicage("/nonexistent/mesh.obj /nonexistent/cage.obj --screenshot " +

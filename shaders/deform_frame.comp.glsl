@@ -1,0 +1,96 @@
+#version 430 core
+// One frame of core/frame_evaluation.h on the GPU (render/gpu_deformer.cpp):
+//
+//   y_p   = C_p,main . W_main  (into the outputs from MAIN_OFFSET on)  +  C_p,tail . W_tail
+//   out_p = y_p                                  when OUTPUTS == DIM             (Green, mean value)
+//   out_p = T_p^-1 b_p, T_p = y_p[0 : DIM^2] row-major, b_p = y_p[DIM^2 :]   (Somigliana, Eq. 11)
+//
+// Compile-time constants, defined by render/gpu_deformer.cpp right after the #version line:
+//   DIM (2 or 3), OUTPUTS (DIM or DIM*DIM+DIM), MAIN_OFFSET (first output that W_main feeds),
+//   ROW_THREADS (invocations sharing one point: they read its row of C side by side, coalesced, and reduce in
+//   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group).
+// Storage is float throughout (C converted once at upload, W every frame): the error budget is in
+// render/gpu_deformer.h.
+
+#define MAIN_OUTPUTS (OUTPUTS - MAIN_OFFSET)
+
+layout(local_size_x = ROW_THREADS, local_size_y = GROUP_POINTS) in;
+
+// The rows [uFirstPoint, uFirstPoint + uNumPoints) of C (#P by uMainColumns + uTailColumns, row-major).
+layout(std430, binding = 0) readonly buffer Coordinates { float C[]; };
+// W_main (uMainColumns by MAIN_OUTPUTS, row-major), then W_tail (uTailColumns by OUTPUTS, row-major).
+layout(std430, binding = 1) readonly buffer Weights { float W[]; };
+// The mesh renderer's vertex buffer: #P by 3 floats (z = 0 in 2D).
+layout(std430, binding = 2) writeonly buffer Positions { float positions[]; };
+
+uniform uint uNumPoints;
+uniform uint uFirstPoint;
+uniform uint uMainColumns;
+uniform uint uTailColumns;
+
+#if ROW_THREADS > 1
+shared float partial[GROUP_POINTS][OUTPUTS][ROW_THREADS];
+#endif
+
+vec3 finish(float y[OUTPUTS]) {
+#if OUTPUTS == DIM
+#if DIM == 3
+  return vec3(y[0], y[1], y[2]);
+#else
+  return vec3(y[0], y[1], 0.0);
+#endif
+#elif DIM == 3
+  // mat3(...) fills columns, so this is T^T; solve T x = b.
+  const mat3 T = transpose(mat3(y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7], y[8]));
+  return inverse(T) * vec3(y[9], y[10], y[11]);
+#else
+  const float det = y[0] * y[3] - y[1] * y[2];
+  return vec3((y[3] * y[4] - y[1] * y[5]) / det, (y[0] * y[5] - y[2] * y[4]) / det, 0.0);
+#endif
+}
+
+void main() {
+  const uint lane = gl_LocalInvocationID.x;
+  const uint group = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  const uint point = group * uint(GROUP_POINTS) + gl_LocalInvocationID.y;  // within this chunk
+  const bool inRange = point < uNumPoints;
+
+  float y[OUTPUTS];
+  for (int j = 0; j < OUTPUTS; ++j) y[j] = 0.0;
+  if (inRange) {
+    const uint row = point * (uMainColumns + uTailColumns);
+    for (uint k = lane; k < uMainColumns; k += uint(ROW_THREADS)) {
+      const float c = C[row + k];
+      const uint w = k * uint(MAIN_OUTPUTS);
+      for (int j = 0; j < MAIN_OUTPUTS; ++j) y[MAIN_OFFSET + j] += c * W[w + uint(j)];
+    }
+    const uint tailW = uMainColumns * uint(MAIN_OUTPUTS);
+    for (uint k = lane; k < uTailColumns; k += uint(ROW_THREADS)) {
+      const float c = C[row + uMainColumns + k];
+      const uint w = tailW + k * uint(OUTPUTS);
+      for (int j = 0; j < OUTPUTS; ++j) y[j] += c * W[w + uint(j)];
+    }
+  }
+
+#if ROW_THREADS > 1
+  // Tree reduction over the lanes of each point (every invocation reaches every barrier).
+  const uint slot = gl_LocalInvocationID.y;
+  for (int j = 0; j < OUTPUTS; ++j) partial[slot][j][lane] = y[j];
+  barrier();
+  for (uint stride = uint(ROW_THREADS) / 2u; stride > 0u; stride /= 2u) {
+    if (lane < stride)
+      for (int j = 0; j < OUTPUTS; ++j) partial[slot][j][lane] += partial[slot][j][lane + stride];
+    barrier();
+  }
+  if (!inRange || lane != 0u) return;
+  for (int j = 0; j < OUTPUTS; ++j) y[j] = partial[slot][j][0];
+#else
+  if (!inRange) return;
+#endif
+
+  const vec3 x = finish(y);
+  const uint at = 3u * (uFirstPoint + point);
+  positions[at] = x.x;
+  positions[at + 1u] = x.y;
+  positions[at + 2u] = x.z;
+}
