@@ -1,5 +1,6 @@
 #include "cli/cli.h"
 
+#include <filesystem>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -43,7 +44,11 @@ const CliCommand* findCliCommand(const std::string& name) {
 bool isCliCommand(const char* firstArgument) {
   if (!firstArgument) return false;
   const std::string name = firstArgument;
-  return name == "--help" || name == "-h" || findCliCommand(name) != nullptr;
+  if (name == "--help" || name == "-h" || findCliCommand(name) != nullptr) return true;
+  // A bare word that is not a file is a mistyped command: the CLI answers with "did you mean", where the editor
+  // would only say it expected files.
+  const bool bareWord = !name.empty() && name[0] != '-' && name.find_first_of("./") == std::string::npos;
+  return bareWord && !std::filesystem::exists(name);
 }
 
 int runCli(int argc, char** argv) {
