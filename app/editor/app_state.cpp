@@ -6,7 +6,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <system_error>
 
+#include "drop.h"
 #include "errors.h"
 #include "obj_io.h"
 
@@ -57,6 +60,7 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
   request.scene = std::move(scene);
   request.methods = state.viewMethods();
   state.loadingScene = true;
+  state.pendingRecent.reset();
   state.worker.start(std::move(request));
 }
 
@@ -67,6 +71,7 @@ void requestSceneFiles(AppState& state, const std::string& meshPath, const std::
   request.methods = state.viewMethods();
   state.loadingScene = true;
   state.pendingPosedPath = posedPath;
+  state.pendingRecent = RecentEntry::files(meshPath, cagePath, posedPath);
   state.worker.start(std::move(request));
 }
 
@@ -92,11 +97,13 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   if (newScene) state.loadingScene = false;
   if (outcome.cancelled) {
     state.loadingScene = false;
+    state.pendingRecent.reset();
     state.statusMessage = "precomputation cancelled";
     return;
   }
   if (!outcome.error.empty()) {
     state.loadingScene = false;
+    state.pendingRecent.reset();
     state.errors.push_back(outcome.error);
     return;
   }
@@ -127,9 +134,11 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
       }
       state.pendingPose.reset();
     }
+    bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
         state.pose = loadPosedVertices(state.pendingPosedPath, state.scene->restCage);
+        posedLoaded = true;
       } catch (const std::exception& e) {
         state.errors.push_back(e.what());
       }
@@ -137,6 +146,12 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     }
     ++state.poseGeneration;
     state.statusMessage = "loaded " + state.scene->name;
+    if (state.pendingRecent && state.pendingRecent->mesh == state.scene->meshPath &&
+        state.pendingRecent->cage == state.scene->cagePath) {
+      if (!posedLoaded) state.pendingRecent->posed.clear();
+      noteRecent(state, *state.pendingRecent);
+    }
+    state.pendingRecent.reset();
   }
   for (auto& [m, d] : outcome.deformers) state.deformers[m] = d;
   state.deformDirty = true;
@@ -318,6 +333,7 @@ void applySession(AppState& state, const Session& s) {
     requestDemo(state, s.demoDim);
   } else {
     requestSceneFiles(state, s.meshPath, s.cagePath);
+    state.pendingRecent.reset();  // the session is the recent entry, not its files
   }
 }
 
@@ -340,6 +356,9 @@ void loadPosedCage(AppState& state, const std::string& path) {
     recordEdit(state, "Load pose");
     setPose(state, pose);
     state.statusMessage = "loaded pose " + path;
+    if (!state.scene->isDemo()) {
+      noteRecent(state, RecentEntry::files(state.scene->meshPath, state.scene->cagePath, path));
+    }
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
   }
@@ -373,9 +392,68 @@ void loadSessionFile(AppState& state, const std::string& path) {
   try {
     applySession(state, loadSession(path));
     state.statusMessage = "opened session " + path;
+    noteRecent(state, RecentEntry::sessionFile(path));
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
   }
+}
+
+// ---- dropped and recent files ----
+
+void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
+  const bool sceneReady = state.scene && !state.loadingScene;
+  const int cageVertices = sceneReady ? state.scene->restCage.numVertices() : -1;
+  int singleVertices = -1;
+  if (paths.size() == 1 && lowerExtension(paths.front()) == ".obj" && cageVertices > 0) {
+    singleVertices = countObjVertices(paths.front(), cageVertices);
+  }
+  const DropPlan plan = planDrop(paths, cageVertices, singleVertices);
+  switch (plan.kind) {
+    case DropPlan::Kind::Error:
+      if (paths.size() == 1 && state.loadingScene) {
+        state.errors.push_back("a scene is still loading: drop a posed cage again once it has arrived, or " +
+                               plan.message);
+      } else {
+        state.errors.push_back(plan.message);
+      }
+      break;
+    case DropPlan::Kind::Scene:
+      state.dialog.mesh = plan.mesh;  // the Open panel shows what was dropped
+      state.dialog.cage = plan.cage;
+      state.dialog.posed = plan.posed;
+      requestSceneFiles(state, plan.mesh, plan.cage, plan.posed);
+      state.statusMessage = "opening mesh " + plan.mesh + ", cage " + plan.cage +
+                            (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
+      break;
+    case DropPlan::Kind::Pose: loadPosedCage(state, plan.posed); break;
+    case DropPlan::Kind::Session: loadSessionFile(state, plan.session); break;
+  }
+}
+
+void noteRecent(AppState& state, RecentEntry entry) {
+  for (std::string* p : {&entry.mesh, &entry.cage, &entry.posed, &entry.session}) {
+    if (p->empty()) continue;
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(*p, ec);
+    if (!ec) *p = absolute.lexically_normal().string();
+  }
+  if (!state.recent.add(entry) || state.recentPath.empty()) return;
+  try {
+    saveRecentFiles(state.recentPath, state.recent);
+  } catch (const std::exception& e) {
+    state.statusMessage += "  (recent files not saved: " + std::string(e.what()) + ")";
+  }
+}
+
+void openRecent(AppState& state, const RecentEntry& entry) {
+  if (entry.kind == RecentEntry::Kind::Session) {
+    loadSessionFile(state, entry.session);
+    return;
+  }
+  state.dialog.mesh = entry.mesh;
+  state.dialog.cage = entry.cage;
+  state.dialog.posed = entry.posed;
+  requestSceneFiles(state, entry.mesh, entry.cage, entry.posed);
 }
 
 }  // namespace somicage::editor

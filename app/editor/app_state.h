@@ -17,6 +17,7 @@
 #include "editor_options.h"
 #include "history.h"
 #include "precompute_worker.h"
+#include "recent_files.h"
 #include "scene.h"
 #include "selection.h"
 #include "session.h"
@@ -97,6 +98,11 @@ struct AppState {
   std::optional<Eigen::MatrixXd> pendingPose;   // applied when the loading scene arrives
   std::optional<CameraState> pendingCamera;
   std::string pendingPosedPath;              // loaded against the new cage when it arrives
+  std::optional<RecentEntry> pendingRecent;  // the files being loaded; recorded when they arrive
+
+  // ---- recent files (the Open panel) ----
+  RecentFiles recent;
+  std::string recentPath;  // where `recent` is saved after each change; "" keeps it in memory (tests, --screenshot)
 
   // ---- status and messages ----
   Stats stats;
@@ -114,6 +120,7 @@ struct AppState {
   bool quitRequested = false;
   double viewAspect = 1.6;  // width / height of the first viewport, set by the frame loop
   bool frameRequested = false;  // frame the rest scene once the viewports are known
+  std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop
 
   // Methods shown, one per viewport.
   std::vector<Method> viewMethods() const;
@@ -180,6 +187,16 @@ void loadPosedCage(AppState& state, const std::string& path);
 void exportDeformedMesh(AppState& state, const std::string& path);
 void saveSessionFile(AppState& state, const std::string& path);
 void loadSessionFile(AppState& state, const std::string& path);
+
+// Opens files dropped on the window (see planDrop in drop.h): mesh + cage (+ posed cage) load on the worker like
+// the Open panel, one posed cage poses the current scene, a .json loads a session; anything else puts what to drop
+// in state.errors.
+void openDroppedFiles(AppState& state, const std::vector<std::string>& paths);
+
+// Recent files: records an opened entry (paths made absolute) and saves the list to state.recentPath when set (a
+// failure to save is reported in the status bar only); openRecent opens an entry like the Open panel.
+void noteRecent(AppState& state, RecentEntry entry);
+void openRecent(AppState& state, const RecentEntry& entry);
 
 // "Somigliana  nu=0.30 gamma=1.00 global" etc.
 std::string viewLabel(const AppState& state, Method method);

@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -68,6 +69,15 @@ void chooseBackend(AppState& state, const EditorOptions& options) {
     std::fprintf(stderr, "somicage: --backend gpu: %s; deforming on the CPU\n", reason.c_str());
 }
 
+// GLFW 3.3 drop callback: queues the paths (the window user pointer is the AppState); the frame loop opens them.
+void dropCallback(GLFWwindow* window, int count, const char** paths) {
+  auto* state = static_cast<AppState*>(glfwGetWindowUserPointer(window));
+  if (!state) return;
+  std::vector<std::string> dropped;
+  for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
+  state->droppedPaths = std::move(dropped);  // one drop per event; a newer one replaces an unhandled one
+}
+
 void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) {
   const std::string title = state.scene ? "SomiCage - " + state.scene->name : "SomiCage";
   if (title != shown) {
@@ -80,6 +90,11 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title) {
   glfwPollEvents();
   pollWorker(state);
+  if (!state.droppedPaths.empty()) {
+    std::vector<std::string> dropped;
+    dropped.swap(state.droppedPaths);
+    openDroppedFiles(state, dropped);
+  }
 
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
@@ -202,6 +217,14 @@ int runWindow(const EditorOptions& options) {
     state.glRenderer = glRenderer;
     applyOptions(state, options);
     chooseBackend(state, options);
+    // Recent files persist only in interactive use: a --screenshot run must not touch the user's list.
+    if (!headless) {
+      state.recentPath = recentFilesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+      state.recent = loadRecentFiles(state.recentPath);
+    }
+    // Events are polled only inside this block (frame()), so the pointer never outlives `state`.
+    glfwSetWindowUserPointer(window, &state);
+    glfwSetDropCallback(window, dropCallback);
     if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
     } else if (!options.meshPath.empty()) {
@@ -244,6 +267,8 @@ int runWindow(const EditorOptions& options) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
     rc = 1;
   }
+  glfwSetDropCallback(window, nullptr);  // `state` is gone
+  glfwSetWindowUserPointer(window, nullptr);
 
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

@@ -4,7 +4,9 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <system_error>
 
 #include "screenshot.h"
 
@@ -41,6 +43,42 @@ void sectionHeader(const char* title) {
 // Records an undo snapshot when a widget starts being edited, so a whole slider drag is one undo step.
 void undoOnActivate(AppState& state, const char* label) {
   if (ImGui::IsItemActivated()) recordEdit(state, label);
+}
+
+// The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
+// names it). Returns true when an entry was opened.
+bool drawRecentFiles(AppState& state) {
+  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
+  if (entries.empty()) return false;
+  sectionHeader("Recent");
+  bool opened = false;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const RecentEntry& e = entries[i];
+    std::string missing;
+    for (const std::string& path : e.paths()) {
+      std::error_code ec;
+      if (!std::filesystem::exists(path, ec)) {
+        missing = path;
+        break;
+      }
+    }
+    ImGui::PushID(static_cast<int>(i));
+    if (!missing.empty()) ImGui::BeginDisabled();
+    const bool clicked = ImGui::Selectable(e.label().c_str(), false, ImGuiSelectableFlags_DontClosePopups);
+    if (!missing.empty()) ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      std::string tip;
+      for (const std::string& path : e.paths()) tip += path + "\n";
+      if (!missing.empty()) tip += "missing: " + missing;
+      ImGui::SetTooltip("%s", tip.c_str());
+    }
+    ImGui::PopID();
+    if (clicked && !opened) {
+      openRecent(state, e);
+      opened = true;
+    }
+  }
+  return opened;
 }
 
 }  // namespace
@@ -96,7 +134,10 @@ void drawMainMenu(AppState& state) {
         "Select: click a handle, Shift+click toggles, drag on the background for a box (Shift adds).\n"
         "A selects all, Alt+A none. Drag a selected handle to move the selection in the view plane.\n"
         "G / R / S grab, rotate, scale; then X / Y / Z constrain; Enter or left click confirms, Esc or\n"
-        "right click cancels. Ctrl+Z undo, Ctrl+Shift+Z redo. F12 screenshot.");
+        "right click cancels. Ctrl+Z undo, Ctrl+Shift+Z redo. F12 screenshot.\n"
+        "Drop files on the window: a mesh and its cage (2 .obj; names with \"cage\" are cages, \"pose\",\n"
+        "\"posed\" or \"deformed\" posed cages, else the order), + a posed cage (3 .obj), one posed cage for\n"
+        "the current cage (1 .obj), or a session .json. File > Open lists the recent files.");
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
@@ -238,7 +279,9 @@ void drawControlPanel(AppState& state) {
       "Middle drag / Alt+drag: orbit. Shift+middle: pan. Wheel: zoom. F: frame.\n"
       "Click / Shift+click / box-drag: select handles. A / Alt+A: all / none.\n"
       "Drag a handle, or G R S (+ X Y Z), Enter confirms, Esc cancels.\n"
-      "Ctrl+Z / Ctrl+Shift+Z: undo / redo. F12: screenshot.");
+      "Ctrl+Z / Ctrl+Shift+Z: undo / redo. F12: screenshot.\n"
+      "Drop on the window: mesh + cage .obj (+ posed cage), one posed cage, or a session .json. "
+      "Open... lists the recent files.");
   ImGui::End();
 }
 
@@ -321,12 +364,14 @@ void drawPathDialog(AppState& state) {
     inputText("mesh (.obj)", d.mesh);
     inputText("cage (.obj)", d.cage);
     inputText("posed cage (optional)", d.posed);
+    ImGui::TextDisabled("or drop the files on the window");
   } else {
     inputText("path", d.path);
   }
   const bool ok = ImGui::Button("OK") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
   ImGui::SameLine();
-  const bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+  if (!ok && d.kind == PathDialog::Kind::OpenFiles && drawRecentFiles(state)) cancel = true;  // opened: just close
   if (ok) {
     switch (d.kind) {
       case PathDialog::Kind::OpenFiles: requestSceneFiles(state, d.mesh, d.cage, d.posed); break;
