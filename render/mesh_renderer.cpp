@@ -54,6 +54,7 @@ void MeshRenderer::draw(const ViewMatrices& view, const MeshStyle& style) const 
   glUniformMatrix4fv(m.program.uniform("uProjection"), 1, GL_FALSE, view.projection.data());
   glUniform3fv(m.program.uniform("uColor"), 1, style.color.data());
   glUniform1i(m.program.uniform("uOrthographic"), view.orthographic ? 1 : 0);
+  glUniform1i(m.program.uniform("uFlat"), style.flat ? 1 : 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);

@@ -12,6 +12,7 @@ namespace somicage::render {
 struct MeshStyle {
   Eigen::Vector3f color{0.80f, 0.66f, 0.48f};
   bool wireframe = false;  // triangle edges over the shading
+  bool flat = false;       // faceted shading (one normal per triangle) instead of smooth
   Eigen::Vector4f wireColor{0.15f, 0.12f, 0.10f, 0.22f};
 };
 

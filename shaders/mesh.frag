@@ -6,12 +6,13 @@ in vec3 vNormalView;
 
 uniform vec3 uColor;
 uniform bool uOrthographic;
+uniform bool uFlat;  // facet normals from screen-space derivatives instead of the smooth vertex normals
 
 out vec4 fragColor;
 
 void main() {
   vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vPositionView);
-  vec3 n = vNormalView;
+  vec3 n = uFlat ? cross(dFdx(vPositionView), dFdy(vPositionView)) : vNormalView;
   float len = length(n);
   n = len > 1e-12 ? n / len : toEye;
   if (dot(n, toEye) < 0.0) n = -n;

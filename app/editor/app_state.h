@@ -116,6 +116,7 @@ struct AppState {
   bool showCage = true;
   bool showMesh = true;
   int wireframe = -1;  // -1: automatic (on in 2D), 0 off, 1 on
+  bool flatShading = false;
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
   bool quitRequested = false;
   double viewAspect = 1.6;  // width / height of the first viewport, set by the frame loop

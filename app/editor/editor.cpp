@@ -46,6 +46,7 @@ void applyOptions(AppState& state, const EditorOptions& o) {
     state.compareMethods = o.compare;
   }
   state.hideUi = o.hideUi;
+  state.flatShading = o.flatShading;
 }
 
 // Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a

@@ -87,6 +87,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.height = h;
     } else if (a == "--hide-ui") {
       o.hideUi = true;
+    } else if (a == "--flat") {
+      o.flatShading = true;
     } else if (a == "--backend") {
       const std::string& v = value();
       if (v != "cpu" && v != "gpu") throw InputError(a, -1, "expected cpu or gpu, got '" + v + "'", "--backend gpu");
@@ -138,6 +140,7 @@ std::string editorUsage() {
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
+         "  --flat                    faceted shading instead of smooth\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n";
 }

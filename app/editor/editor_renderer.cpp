@@ -117,6 +117,7 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
   matrices.orthographic = state.camera.mode2D();
   render::MeshStyle meshStyle;
   meshStyle.wireframe = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
+  meshStyle.flat = state.flatShading;
   render::CageStyle cageStyle;
   if (state.dim() == 2) cageStyle.edgeColor = Eigen::Vector4f(0.25f, 0.45f, 0.95f, 1.0f);
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {

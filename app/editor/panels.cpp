@@ -247,6 +247,7 @@ void drawControlPanel(AppState& state) {
   ImGui::SameLine();
   bool wire = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
   if (ImGui::Checkbox("wireframe", &wire)) state.wireframe = wire ? 1 : 0;
+  ImGui::Checkbox("flat shading", &state.flatShading);
 
   sectionHeader("Deformation backend");
   {
