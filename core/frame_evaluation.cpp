@@ -20,6 +20,27 @@ FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumn
   return frame;
 }
 
+Eigen::MatrixXd tMatrixFromOutputs(const double* y, int dim) {
+  if (dim == 3) {
+    Eigen::Matrix3d T;
+    T << y[0], y[3] - y[8], y[4] + y[7], y[3] + y[8], y[1], y[5] - y[6], y[4] - y[7], y[5] + y[6], y[2];
+    return T;
+  }
+  Eigen::Matrix2d T;
+  T << y[0], y[2] + y[3], y[2] - y[3], y[1];
+  return T;
+}
+
+Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M) {
+  const Eigen::MatrixXd S = 0.5 * (M + M.transpose()), A = 0.5 * (M - M.transpose());
+  Eigen::VectorXd y(M.rows() * M.rows());
+  if (M.rows() == 3)
+    y << S(0, 0), S(1, 1), S(2, 2), S(0, 1), S(0, 2), S(1, 2), A(2, 1), A(0, 2), A(1, 0);
+  else
+    y << S(0, 0), S(1, 1), S(0, 1), A(0, 1);
+  return y;
+}
+
 namespace {
 
 constexpr int kMaxOutputs = 12;  // d * d + d for d = 3
@@ -80,10 +101,14 @@ void finish(const double* y, bool solve, double* out) {
     for (int a = 0; a < Dim; ++a) out[a] = y[a];
     return;
   }
-  const Eigen::Map<const Eigen::Matrix<double, Dim, Dim, Eigen::RowMajor>> T(y);
+  Eigen::Matrix<double, Dim, Dim> T;  // S + A, as tMatrixFromOutputs, without allocating
+  if constexpr (Dim == 3)
+    T << y[0], y[3] - y[8], y[4] + y[7], y[3] + y[8], y[1], y[5] - y[6], y[4] - y[7], y[5] + y[6], y[2];
+  else
+    T << y[0], y[2] + y[3], y[2] - y[3], y[1];
   const Eigen::Map<const Eigen::Matrix<double, Dim, 1>> rhs(y + Dim * Dim);
   Eigen::Map<Eigen::Matrix<double, Dim, 1>> result(out);
-  result = Eigen::Matrix<double, Dim, Dim>(T).inverse() * rhs;
+  result = T.inverse() * rhs;
 }
 
 template <typename Scalar, int Dim>

@@ -2,8 +2,12 @@
 //
 //   y_p   = C_p,main . W_main  (added to the output columns from W.mainOffset on)  +  C_p,tail . W_tail
 //   out_p = y_p                                       when the frame has d outputs (Green, mean value)
-//   out_p = T_p^-1 b_p, T_p = y_p[0 : d^2] row-major,  when it has d^2 + d outputs (Somigliana, Eq. 11)
-//           b_p = y_p[d^2 : d^2 + d]
+//   out_p = T_p^-1 b_p                                when it has d^2 + d outputs (Somigliana, Eq. 11), with
+//           b_p = y_p[d^2 : d^2 + d] and T_p = S + A split into its symmetric and antisymmetric parts:
+//             3D: S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w with omega = y[6..8];
+//             2D: S = (xx, yy, xy) = y[0..2], A = [[0, y3], [-y3, 0]].
+//           The split lets each output touch only the coordinates it needs (S the symmetric terms, A the
+//           antisymmetric ones): tMatrixFromOutputs / tOutputsFromMatrix convert.
 //
 // C (#P by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and the
 // parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
@@ -42,6 +46,10 @@ struct FrameWeights {
   Eigen::MatrixXd main;  // K_main by (outputs - mainOffset)
   Eigen::MatrixXd tail;  // K_tail by outputs
 };
+
+// T (d by d) from the first d^2 outputs of a solving frame, and the outputs of a matrix M (d^2 numbers).
+Eigen::MatrixXd tMatrixFromOutputs(const double* y, int dim);
+Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M);
 
 // out (#P by d, resized) from C and W as described above, with OpenMP over fixed blocks of points, so the result
 // does not depend on the thread count (threads = 0: the OpenMP default).

@@ -35,19 +35,15 @@ std::vector<Eigen::MatrixXd> vertexTermBasis(int d, double nu) {
   return basis;
 }
 
-// A d by d matrix, row-major, into columns [0, d^2) of row `row` of W.
-void setMatrixColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
-  const int d = static_cast<int>(M.rows());
-  for (int a = 0; a < d; ++a)
-    for (int b = 0; b < d; ++b) W(row, a * d + b) = M(a, b);
+// The T outputs (frame_evaluation.h: symmetric and antisymmetric parts) of a d by d matrix M into row `row` of W.
+void setTColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
+  const Eigen::VectorXd y = tOutputsFromMatrix(M);
+  W.row(row).head(y.size()) = y.transpose();
 }
 
-// The coordinate matrix C of frame_evaluation.h for the Somigliana deformer:
-//   main = the stored integrals (vertex terms, then face terms; somigliana_coordinates.h),
-//   tail = [ sum_i of the vertex terms | x | 1 ].
-// The sums give T(x) = R (sum_i T_i) R^T in one small product for the global variant. Points outside the cage
-// (winding < 1/2) have no Somigliana coordinates (sum_i T_i -> 0, Eq. 11 is undefined): their row is zero except
-// [x | 1], which the weights turn into T = I, b = s R x + t, the global similarity of the cage.
+// The column of vertex i's term k in C (term-major; see writeFrameRow).
+inline int vertexColumn(int i, int k, int numVertices) { return k * numVertices + i; }
+
 // Writes a point's row of C in the storage type: the integrals, their per-vertex sums, and [x | 1] for outside
 // points; and records its diagnostics. Rows are independent, so this runs on the integration's worker threads.
 template <typename Scalar>
@@ -66,7 +62,13 @@ void writeFrameRow(int p, const double* integrals, double winding, const Eigen::
     row[main + terms + dim] = 1;
     return;
   }
-  for (int k = 0; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  // Vertex terms term-major (all vertices' D, then all omega_x, ...): each output of a frame then reads one
+  // contiguous range (the symmetric part of T only the B terms, the antisymmetric part only the omega terms).
+  const int vertexColumns = numVertices * terms;
+  for (int i = 0; i < numVertices; ++i)
+    for (int k = 0; k < terms; ++k)
+      row[vertexColumn(i, k, numVertices)] = static_cast<Scalar>(integrals[i * terms + k]);
+  for (int k = vertexColumns; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
   for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
 }
 
@@ -96,6 +98,8 @@ class SomiglianaDeformer final : public CageDeformer {
 
     FrameWeights W;
     W.outputs = d * d + d;
+    // The global variant reads T(x) = R (sum_i T_i) R^T from the per-point sums in the tail; the local one takes
+    // the D part of T (alpha D I, unchanged by rotations) from the sums too, and the rest from the vertex terms.
     W.mainOffset = global ? d * d : 0;
     const int rhs = W.outputs - W.mainOffset - d;  // where the right-hand side starts in W.main
     W.main = Eigen::MatrixXd::Zero(coordinates_.mainColumns, W.outputs - W.mainOffset);
@@ -105,8 +109,8 @@ class SomiglianaDeformer final : public CageDeformer {
       const Eigen::VectorXd v = posed.row(i).transpose();
       for (int k = 0; k < terms; ++k) {
         const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
-        const int row = i * terms + k;
-        if (!global) setMatrixColumns(rotated, W.main, row);
+        const int row = vertexColumn(i, k, rest_.numVertices());
+        if (!global && k > 0) setTColumns(rotated, W.main, row);
         W.main.row(row).segment(rhs, d) = (rotated * v).transpose();
       }
     }
@@ -118,13 +122,16 @@ class SomiglianaDeformer final : public CageDeformer {
       W.main.row(row).segment(rhs, d) = (s * c.k1 * R * restNormals_.row(j).transpose()).transpose();
       for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) = (s * c.k2 * R.col(a)).transpose();
     }
-    if (global)
+    if (global) {
       for (int k = 0; k < terms; ++k)
-        setMatrixColumns(bc.global.rotation * basis[k] * bc.global.rotation.transpose(), W.tail, k);
+        setTColumns(bc.global.rotation * basis[k] * bc.global.rotation.transpose(), W.tail, k);
+    } else {
+      setTColumns(basis[0], W.tail, 0);  // sum_i R_i (alpha D_i I) R_i^T = alpha (sum_i D_i) I
+    }
     // Outside points: T = I and b = s R x + t.
     const Eigen::MatrixXd sR = bc.global.scale * bc.global.rotation;
     for (int a = 0; a < d; ++a) W.tail.row(terms + a).tail(d) = sR.col(a).transpose();
-    setMatrixColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
+    setTColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
     W.tail.row(terms + d).tail(d) = bc.global.translation.transpose();
     return W;
   }

@@ -40,12 +40,17 @@ vec3 finish(float y[OUTPUTS]) {
   return vec3(y[0], y[1], 0.0);
 #endif
 #elif DIM == 3
-  // mat3(...) fills columns, so this is T^T; solve T x = b.
-  const mat3 T = transpose(mat3(y[0], y[1], y[2], y[3], y[4], y[5], y[6], y[7], y[8]));
+  // T = S + A (core/frame_evaluation.h): S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w, omega = y[6..8].
+  // mat3(...) fills columns, so the rows below are written as columns and transposed; solve T x = b.
+  const mat3 T = transpose(mat3(y[0], y[3] - y[8], y[4] + y[7],
+                                y[3] + y[8], y[1], y[5] - y[6],
+                                y[4] - y[7], y[5] + y[6], y[2]));
   return inverse(T) * vec3(y[9], y[10], y[11]);
 #else
-  const float det = y[0] * y[3] - y[1] * y[2];
-  return vec3((y[3] * y[4] - y[1] * y[5]) / det, (y[0] * y[5] - y[2] * y[4]) / det, 0.0);
+  // T = [[y0, y2 + y3], [y2 - y3, y1]], b = (y4, y5).
+  const float t00 = y[0], t01 = y[2] + y[3], t10 = y[2] - y[3], t11 = y[1];
+  const float det = t00 * t11 - t01 * t10;
+  return vec3((t11 * y[4] - t01 * y[5]) / det, (t00 * y[5] - t10 * y[4]) / det, 0.0);
 #endif
 }
 
