@@ -97,9 +97,8 @@ FaceMap localFaceMap(const Cage& cage, const Eigen::MatrixXd& posed, int j) {
   const Eigen::Matrix3d faceMap = F * E.inverse();
   const Eigen::Matrix2d G = E.leftCols<2>().transpose() * E.leftCols<2>();
   const Eigen::Matrix2d Gposed = F.leftCols<2>().transpose() * F.leftCols<2>();
-  const double areaRatio = E.col(0).cross(E.col(1)).norm() > 0
-                               ? F.col(0).cross(F.col(1)).norm() / E.col(0).cross(E.col(1)).norm()
-                               : 1.0;
+  const double areaRatio =
+      E.col(0).cross(E.col(1)).norm() > 0 ? F.col(0).cross(F.col(1)).norm() / E.col(0).cross(E.col(1)).norm() : 1.0;
   // Mean of the two singular values: (s1 + s2)^2 = tr(G~ G^-1) + 2 A~/A.
   const double stretch = 0.5 * std::sqrt((Gposed * G.inverse()).trace() + 2 * areaRatio);
   return {closestRotation(faceMap), stretch};

@@ -110,9 +110,8 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
 
 }  // namespace
 
-void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
-                                    const IntegrationOptions& options, const ProgressCallback& progress,
-                                    const CoordinateRowSink& sink) {
+void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
+                                    const ProgressCallback& progress, const CoordinateRowSink& sink) {
   const int dim = cage.dim();
   SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
   SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");

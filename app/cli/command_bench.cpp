@@ -27,17 +27,18 @@ namespace {
 const char* const kCommand = "somicage bench";
 
 ArgParser benchOptions() {
-  return ArgParser(kCommand, {
-                                 {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
-                                 {"--cage", "C.obj", "the rest cage", true},
-                                 {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
-                                 {"--frames", "N", "frames timed per backend and variant (default 50)"},
-                                 {"--repeat", "R", "precomputes timed (default 3)"},
-                                 {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
-                                 {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
-                                 {"--threads", "T", "OpenMP threads (default: all cores)"},
-                                 {"--json", "", "print one JSON object"},
-                             });
+  return ArgParser(kCommand,
+                   {
+                       {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
+                       {"--cage", "C.obj", "the rest cage", true},
+                       {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
+                       {"--frames", "N", "frames timed per backend and variant (default 50)"},
+                       {"--repeat", "R", "precomputes timed (default 3)"},
+                       {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
+                       {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
+                       {"--threads", "T", "OpenMP threads (default: all cores)"},
+                       {"--json", "", "print one JSON object"},
+                   });
 }
 
 double median(std::vector<double> values) {
@@ -226,8 +227,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
   for (const auto& [name, ms] : deformMs) {
     const bool cpu = name.rfind("cpu", 0) == 0;
     std::printf("deform %-10s %.2f ms", name.c_str(), ms);
-    if (cpu) std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,
-                         bandwidth * 1e-9);
+    if (cpu)
+      std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,
+                  bandwidth * 1e-9);
     std::printf("\n");
   }
   if (!gpuNote.empty()) std::printf("gpu               %s\n", gpuNote.c_str());

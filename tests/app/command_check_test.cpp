@@ -56,6 +56,12 @@ TEST(CliCheck, JsonHasTheKeysAndTheNumbers) {
   EXPECT_LE(json["pou_max"].number, 1e-9);
   EXPECT_LE(json["pou_median"].number, json["pou_max"].number);
   EXPECT_GE(json["pou_median"].number, 0.0);
+  // Each method's identity error at rest, in cage diameters: exact integrals and MVC reproduce it to round-off.
+  ASSERT_TRUE(json.has("reproduction_error"));
+  for (const char* method : {"somigliana", "green", "mvc"}) {
+    ASSERT_TRUE(json["reproduction_error"].has(method)) << method;
+    EXPECT_LE(json["reproduction_error"][method].number, 1e-12) << method;
+  }
 }
 
 TEST(CliCheck, PolygonCage) {

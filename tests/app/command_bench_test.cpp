@@ -1,0 +1,43 @@
+// somicage bench, run as a process: --json prints one object with exactly the documented keys, and its numbers
+// are consistent (exact integrals at round-off, the baseline slower and less accurate, frames timed per variant).
+#include "cli_test_support.h"
+
+namespace somicage {
+namespace {
+
+using namespace somicage::test;
+
+TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
+  const RunResult r = runSomicage({"bench", "--mesh", dataFile("pyramid_mesh.obj"), "--cage", dataFile("cube_cage.obj"),
+                                   "--frames", "3", "--repeat", "2", "--baseline-quadrature", "8", "--baseline-points",
+                                   "5", "--threads", "1", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const Json json = JsonParser::parse(r.out);
+  ASSERT_EQ(json.type, Json::Type::Object);
+  const std::vector<std::string> keys = {
+      "mesh_vertices",    "cage_vertices", "cage_faces",          "threads",         "precompute_s",
+      "pou_max",          "pou_median",    "baseline_quadrature", "baseline_points", "baseline_speedup",
+      "baseline_pou_max", "deform_ms",     "nu_update_ms",        "coord_bytes",     "peak_rss_bytes"};
+  EXPECT_EQ(json.object.size(), keys.size());
+  for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
+  EXPECT_EQ(json["mesh_vertices"].number, 5);
+  EXPECT_EQ(json["cage_vertices"].number, 8);
+  EXPECT_EQ(json["threads"].number, 1);
+  EXPECT_EQ(json["baseline_quadrature"].number, 8);
+  EXPECT_EQ(json["baseline_points"].number, 5);
+  EXPECT_LE(json["pou_max"].number, 1e-12);
+  EXPECT_GT(json["baseline_speedup"].number, 1.0);  // 192 Gauss points per triangle against one closed form
+  ASSERT_EQ(json["deform_ms"].type, Json::Type::Object);
+  EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
+  EXPECT_GT(json["coord_bytes"].number, 0);
+  EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
+}
+
+TEST(CliBench, MissingMeshIsBadInput) {
+  const RunResult r = runSomicage({"bench", "--cage", dataFile("cube_cage.obj")});
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_NE(r.err.find("--mesh"), std::string::npos) << r;
+}
+
+}  // namespace
+}  // namespace somicage
