@@ -10,6 +10,7 @@
 #include <cctype>
 #include <chrono>
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,9 @@ struct ModelCase {
   std::string folder, mesh, cage, pose;  // pose may be empty
   double insideFraction;                 // the share of mesh vertices inside the cage (models/README.md)
 };
+
+// Names the case in test output (GoogleTest would print its bytes).
+inline void PrintTo(const ModelCase& c, std::ostream* out) { *out << c.folder << "/" << c.cage; }
 
 // Every triangle cage of the shared models, with its mesh and (where published) a posed cage.
 inline std::vector<ModelCase> modelCases() {
