@@ -40,26 +40,13 @@ std::string programLog(GLuint program) {
 GlComputeProgram::GlComputeProgram(const std::string& file, const std::string& defines)
     : GlHandle(glCreateProgram(), deleteProgram) {
   const std::string text = specialise(file, defines);
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* source = text.c_str();
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (ok != GL_TRUE) {
-    GLint length = 0;
-    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::vector<char> log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    glDeleteShader(shader);
-    const char* glsl = reinterpret_cast<const char*>(glGetString(GL_SHADING_LANGUAGE_VERSION));
-    throw std::runtime_error("failed to compile shaders/" + file + " (compute stage, driver GLSL " +
-                             (glsl ? glsl : "?") + ", with\n" + defines + "):\n" + log.data());
-  }
+  const GLuint shader =
+      compileShaderStage(GL_COMPUTE_SHADER, text, "shaders/" + file + " (compute stage, with\n" + defines + "\n");
   glAttachShader(id(), shader);
   glLinkProgram(id());
   glDetachShader(id(), shader);
   glDeleteShader(shader);
+  GLint ok = GL_FALSE;
   glGetProgramiv(id(), GL_LINK_STATUS, &ok);
   if (ok != GL_TRUE)
     throw std::runtime_error("failed to link the compute program shaders/" + file + ":\n" + programLog(id()));

@@ -42,9 +42,9 @@ void deleteTexture(GLuint id) { glDeleteTextures(1, &id); }
 void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 void deleteProgram(GLuint id) { glDeleteProgram(id); }
 
-// Compiles one stage; the caller deletes the shader.
-GLuint compileStage(GLenum stage, const std::string& file) {
-  const std::string text = shaderSource(file);
+}  // namespace
+
+GLuint compileShaderStage(GLenum stage, const std::string& text, const std::string& description) {
   const GLuint shader = glCreateShader(stage);
   const char* source = text.c_str();
   glShaderSource(shader, 1, &source, nullptr);
@@ -58,11 +58,18 @@ GLuint compileStage(GLenum stage, const std::string& file) {
     glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
     glDeleteShader(shader);
     const char* glsl = reinterpret_cast<const char*>(glGetString(GL_SHADING_LANGUAGE_VERSION));
-    throw std::runtime_error("failed to compile shaders/" + file + " (" +
-                             (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " stage, driver GLSL " +
-                             (glsl ? glsl : "?") + "):\n" + log.data());
+    throw std::runtime_error("failed to compile " + description + ", driver GLSL " + (glsl ? glsl : "?") + "):\n" +
+                             log.data());
   }
   return shader;
+}
+
+namespace {
+
+// Compiles one stage of an embedded shader; the caller deletes the shader.
+GLuint compileStage(GLenum stage, const std::string& file) {
+  return compileShaderStage(stage, shaderSource(file),
+                            "shaders/" + file + " (" + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") + " stage");
 }
 
 }  // namespace

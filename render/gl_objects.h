@@ -68,6 +68,10 @@ class GlVertexArray : public GlHandle {
   void setFloatAttribute(GLuint location, const GlBuffer& buffer, int components);
 };
 
+// Compiles GLSL text as one stage; the caller deletes the shader. On failure throws std::runtime_error with the
+// description (e.g. "shaders/mesh.vert (vertex stage"), the driver's GLSL version and its log.
+GLuint compileShaderStage(GLenum stage, const std::string& text, const std::string& description);
+
 // A linked program from two embedded shaders (shaders/<vertexFile>, shaders/<fragmentFile>).
 // A failed compile or link throws std::runtime_error with the file, the stage and the driver log.
 class GlProgram : public GlHandle {
