@@ -1,7 +1,5 @@
 #include "green_coordinates.h"
 
-#include <omp.h>
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cfloat>
@@ -11,6 +9,7 @@
 
 #include "boundary_conditions.h"
 #include "errors.h"
+#include "point_blocks.h"
 
 namespace somicage {
 
@@ -132,8 +131,6 @@ void integrateGreenEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, co
 // Deformer
 // ---------------------------------------------------------------------------------------------------------------
 
-int threadCount(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
-
 // C = [phi | psi | x | 1] (#P by #V + #F + d + 1); W = [v~ ; s_j n~_j ; (s R)^T ; t^T]:
 // x~ = sum_i phi_i v~_i + sum_j psi_j s_j n~_j inside the cage. Outside it the coordinates reproduce nothing
 // (sum_i phi_i = 0 there), so, as for the Somigliana deformer, such points keep only [x | 1] and follow the
@@ -209,42 +206,32 @@ GreenCoordinates computeGreenCoordinates(const Cage& cage, const Eigen::MatrixXd
       triangles.push_back(makeGreenTriangle(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
                                             cage.vertices.row(cage.faces(j, 2))));
   const double scale = 1 / (dim == 3 ? 4 * M_PI : 2 * M_PI);
-  const int numThreads = threadCount(threads);
-
-  // Blocks of about 2^18 (point, face) pairs, tens of milliseconds each: progress and cancellation are handled on
-  // the calling thread between blocks, and few barriers keep a busy machine from stalling the threads. Each point
-  // is computed on its own, so the result does not depend on the thread count.
-  const int blockSize = std::max(64, (1 << 18) / std::max(1, cage.numFaces()));
-  for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
-    if (!progress(static_cast<double>(blockStart) / numPoints)) throw Cancelled();
-    const int blockEnd = std::min(numPoints, blockStart + blockSize);
-#pragma omp parallel for schedule(dynamic, 16) num_threads(numThreads)
-    for (int p = blockStart; p < blockEnd; ++p) {
-      double* phi = coords.phi.row(p).data();
-      double* psi = coords.psi.row(p).data();
-      double D[3], S;
-      if (dim == 3) {
-        const Eigen::Vector3d x = points.row(p);
-        for (int j = 0; j < cage.numFaces(); ++j) {
-          if (triangles[j].degenerate) continue;
-          integrateGreenTriangle(triangles[j], x, D, S);
-          for (int k = 0; k < 3; ++k) phi[cage.faces(j, k)] += scale * D[k];
-          psi[j] = scale * S;
+  forEachPointInBlocks(
+      numPoints, cage.numFaces(), threads, progress, [] { return 0; },
+      [&](int, int p) {
+        double* phi = coords.phi.row(p).data();
+        double* psi = coords.psi.row(p).data();
+        double D[3], S;
+        if (dim == 3) {
+          const Eigen::Vector3d x = points.row(p);
+          for (int j = 0; j < cage.numFaces(); ++j) {
+            if (triangles[j].degenerate) continue;
+            integrateGreenTriangle(triangles[j], x, D, S);
+            for (int k = 0; k < 3; ++k) phi[cage.faces(j, k)] += scale * D[k];
+            psi[j] = scale * S;
+          }
+        } else {
+          const Eigen::Vector2d x = points.row(p);
+          for (int j = 0; j < cage.numFaces(); ++j) {
+            const Eigen::Vector2d p0 = cage.vertices.row(cage.faces(j, 0)), p1 = cage.vertices.row(cage.faces(j, 1));
+            if (p0 == p1) continue;
+            integrateGreenEdge(p0, p1, x, D, S);
+            phi[cage.faces(j, 0)] += scale * D[0];
+            phi[cage.faces(j, 1)] += scale * D[1];
+            psi[j] = scale * S;
+          }
         }
-      } else {
-        const Eigen::Vector2d x = points.row(p);
-        for (int j = 0; j < cage.numFaces(); ++j) {
-          const Eigen::Vector2d p0 = cage.vertices.row(cage.faces(j, 0)), p1 = cage.vertices.row(cage.faces(j, 1));
-          if (p0 == p1) continue;
-          integrateGreenEdge(p0, p1, x, D, S);
-          phi[cage.faces(j, 0)] += scale * D[0];
-          phi[cage.faces(j, 1)] += scale * D[1];
-          psi[j] = scale * S;
-        }
-      }
-    }
-  }
-  progress(1.0);
+      });
   return coords;
 }
 

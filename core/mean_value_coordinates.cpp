@@ -1,7 +1,5 @@
 #include "mean_value_coordinates.h"
 
-#include <omp.h>
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -9,6 +7,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "point_blocks.h"
 
 namespace somicage {
 
@@ -183,8 +182,6 @@ void meanValue3d(const Cage& cage, const std::vector<MeanValueFace>& faces, cons
 // Deformer
 // ---------------------------------------------------------------------------------------------------------------
 
-int threadCount(int requested) { return requested > 0 ? requested : omp_get_max_threads(); }
-
 // C = the normalised weights (#P by #V); W = v~.
 FrameCoordinates meanValueFrameCoordinates(RowMatrixXd weights, bool floatStorage) {
   const int columns = static_cast<int>(weights.cols());
@@ -250,24 +247,14 @@ RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd&
       faces.push_back(f);
     }
   }
-  const int numThreads = threadCount(threads);
-
-  // Blocks of about 2^18 (point, face) pairs, tens of milliseconds each: progress and cancellation are handled on
-  // the calling thread between blocks, and few barriers keep a busy machine from stalling the threads. Each point
-  // is computed on its own, so the result does not depend on the thread count.
-  const int blockSize = std::max(64, (1 << 18) / std::max(1, cage.numFaces()));
-  for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
-    if (!progress(static_cast<double>(blockStart) / numPoints)) throw Cancelled();
-    const int blockEnd = std::min(numPoints, blockStart + blockSize);
-#pragma omp parallel for schedule(dynamic, 16) num_threads(numThreads)
-    for (int p = blockStart; p < blockEnd; ++p) {
-      if (dim == 3)
-        meanValue3d(cage, faces, points.row(p).transpose(), snap, weights.row(p).data());
-      else
-        meanValue2d(cage, points.row(p).transpose(), snap, weights.row(p).data());
-    }
-  }
-  progress(1.0);
+  forEachPointInBlocks(
+      numPoints, cage.numFaces(), threads, progress, [] { return 0; },
+      [&](int, int p) {
+        if (dim == 3)
+          meanValue3d(cage, faces, points.row(p).transpose(), snap, weights.row(p).data());
+        else
+          meanValue2d(cage, points.row(p).transpose(), snap, weights.row(p).data());
+      });
   return weights;
 }
 

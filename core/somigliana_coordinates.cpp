@@ -1,7 +1,5 @@
 #include "somigliana_coordinates.h"
 
-#include <omp.h>
-
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -10,6 +8,7 @@
 #include "edge_integrals.h"
 #include "errors.h"
 #include "kelvin_kernels.h"
+#include "point_blocks.h"
 #include "triangle_integrals.h"
 #include "triangle_quadrature.h"
 
@@ -129,21 +128,11 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
                                          cage.vertices.row(cage.faces(j, 2))));
   }
   const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-
-  // Points are processed in blocks so that progress and cancellation are checked on the calling thread.
-  // Every point is integrated independently, so the result does not depend on the thread count.
-  const int blockSize = 256;
-  for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
-    if (!progress(static_cast<double>(blockStart) / std::max(numPoints, 1))) throw Cancelled();
-    const int blockEnd = std::min(numPoints, blockStart + blockSize);
-#pragma omp parallel num_threads(threads)
-    {
-      std::vector<double> rowBuffer(columns);
-      double* row = rowBuffer.data();
-#pragma omp for schedule(dynamic, 8)
-      for (int p = blockStart; p < blockEnd; ++p) {
-        std::fill(rowBuffer.begin(), rowBuffer.end(), 0.0);
+  auto rowBuffer = [columns] { return std::vector<double>(columns); };
+  forEachPointInBlocks(
+      numPoints, cage.numFaces(), options.threads, progress, rowBuffer, [&](std::vector<double>& buffer, int p) {
+        std::fill(buffer.begin(), buffer.end(), 0.0);
+        double* row = buffer.data();
         double angleSum = 0, winding;
         if (dim == 3) {
           const Eigen::Vector3d x = points.row(p);
@@ -175,10 +164,7 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
           winding = -angleSum / (2 * M_PI);
         }
         sink(p, row, winding);
-      }
-    }
-  }
-  progress(1.0);
+      });
 }
 
 SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,

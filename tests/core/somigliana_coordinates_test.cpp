@@ -158,7 +158,7 @@ TEST(SomiglianaCoordinates, GaussBaselineIsSelectableAndLessAccurateNearTheCage)
 
 TEST(SomiglianaCoordinates, ProgressCanCancel) {
   const Cage cage = test::makeIcosphere(1);
-  const Eigen::MatrixXd points = test::randomBallPoints(2000, 0.5, 1);
+  const Eigen::MatrixXd points = test::randomBallPoints(5000, 0.5, 1);  // several blocks of work
   int calls = 0;
   auto stopSoon = [&](double) { return ++calls < 3; };
   EXPECT_THROW(computeSomiglianaCoordinates(cage, points, {}, stopSoon), Cancelled);

@@ -1,0 +1,36 @@
+// The parallel loop every precompute shares: points on OpenMP threads, in blocks, with progress and cancellation
+// handled on the calling thread between blocks.
+#pragma once
+
+#include <omp.h>
+
+#include <algorithm>
+
+#include "errors.h"
+#include "progress.h"
+
+namespace somicage {
+
+// Calls perPoint(state, p) once for every p in [0, numPoints). Each thread makes its own state with makeState()
+// (scratch buffers). Blocks hold about 2^16 (point, face) pairs, about 10 ms each: frequent enough for
+// progress, rare enough that barriers do not stall a busy machine. Each point is computed on its own, so results do
+// not depend on the thread count (threads = 0: the OpenMP default). Throws Cancelled when progress returns false.
+template <typename MakeState, typename PerPoint>
+void forEachPointInBlocks(int numPoints, int facesPerPoint, int threads, const ProgressCallback& progress,
+                          MakeState makeState, PerPoint perPoint) {
+  const int blockSize = std::max(64, (1 << 16) / std::max(1, facesPerPoint));
+  const int numThreads = threads > 0 ? threads : omp_get_max_threads();
+  for (int blockStart = 0; blockStart < numPoints; blockStart += blockSize) {
+    if (!progress(static_cast<double>(blockStart) / numPoints)) throw Cancelled();
+    const int blockEnd = std::min(numPoints, blockStart + blockSize);
+#pragma omp parallel num_threads(numThreads)
+    {
+      auto state = makeState();
+#pragma omp for schedule(dynamic, 16)
+      for (int p = blockStart; p < blockEnd; ++p) perPoint(state, p);
+    }
+  }
+  progress(1.0);
+}
+
+}  // namespace somicage
