@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "somigliana_coordinates.h"
@@ -20,13 +21,16 @@ class ModelsTest : public ::testing::TestWithParam<ModelCase> {};
 TEST_P(ModelsTest, CageLoadsAndPartitionOfUnityHolds) {
   const ModelCase& c = GetParam();
 #ifdef SOMICAGE_SANITIZE
-  const int stride = 25;  // instrumented code is ~20x slower; a subsample still visits every region of the mesh
+  const int stride = 0;  // instrumented code is ~20x slower: at most kMaxModelPoints points, spread over the mesh
 #else
   const int stride = 1;
 #endif
   Cage cage;
   Eigen::MatrixXd points;
   if (!test::loadModel(c, cage, points, stride)) return;
+  // The inside share is exact on the whole mesh (within 0.02 of models/README.md); a subsample only estimates it,
+  // within three binomial standard deviations.
+  const double shareTolerance = stride == 1 ? 0.02 : 0.02 + 1.5 / std::sqrt(static_cast<double>(points.rows()));
 
   const SomiglianaCoordinates coords = computeSomiglianaCoordinates(cage, points);
   const Eigen::VectorXd residual = partitionOfUnityResidual(coords);
@@ -35,7 +39,7 @@ TEST_P(ModelsTest, CageLoadsAndPartitionOfUnityHolds) {
   for (int p = 0; p < coords.numPoints(); ++p)
     if (coords.winding(p) > 0.5) worst = std::max(worst, residual(p)), ++inside;
   EXPECT_LE(worst, 1e-9) << c.cage;
-  EXPECT_NEAR(static_cast<double>(inside) / coords.numPoints(), c.insideFraction, 0.02) << c.cage;
+  EXPECT_NEAR(static_cast<double>(inside) / coords.numPoints(), c.insideFraction, shareTolerance) << c.cage;
   RecordProperty("pou_max", std::to_string(worst));
 
   if (c.pose.empty()) return;
