@@ -39,6 +39,13 @@ Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices) {
   return A;
 }
 
+void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points) {
+  const int dim = cage.dim();
+  SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
+  SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");
+  SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
+}
+
 double cageDiameter(const Eigen::MatrixXd& vertices) {
   if (vertices.rows() == 0) return 0.0;
   return (vertices.colwise().maxCoeff() - vertices.colwise().minCoeff()).norm();

@@ -25,6 +25,10 @@ Cage makePolygonCage(const Eigen::MatrixXd& loop);
 Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices);
 Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices);
 
+// Internal precondition of every precompute: a 2D or 3D cage whose faces have d corners, and points (#P by d) of
+// the same dimension. Input boundaries (obj_io, the CLI) report bad input before it gets here.
+void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points);
+
 // Largest distance between two cage vertices (bounding-box diagonal, cheap and scale-faithful).
 double cageDiameter(const Eigen::MatrixXd& vertices);
 

@@ -217,9 +217,7 @@ class MeanValueDeformer : public CageDeformer {
 RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                                         const ProgressCallback& progress) {
   const int dim = cage.dim();
-  SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
-  SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");
-  SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
+  assertCageAndPoints(cage, points);
 
   const int numPoints = static_cast<int>(points.rows());
   RowMatrixXd weights = RowMatrixXd::Zero(numPoints, cage.numVertices());

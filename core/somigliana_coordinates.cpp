@@ -112,9 +112,7 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
 void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
                                     const ProgressCallback& progress, const CoordinateRowSink& sink) {
   const int dim = cage.dim();
-  SOMICAGE_ASSERT(dim == 2 || dim == 3, "cages are 2D or 3D");
-  SOMICAGE_ASSERT(points.cols() == dim, "points and cage have the same dimension");
-  SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
+  assertCageAndPoints(cage, points);
 
   const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
   const int numPoints = static_cast<int>(points.rows());
