@@ -19,6 +19,16 @@ namespace somicage {
 // ---------------------------------------------------------------------------------------------------------------
 namespace {
 
+void clear(EdgeIntegrals& out) {
+  out.S = 0;
+  out.M.setZero();
+  out.angle = 0;
+  for (int k = 0; k < 2; ++k) {
+    out.D[k] = out.A[k] = 0;
+    out.B[k].setZero();
+  }
+}
+
 // t - atan(t), accurate for small t (the difference cancels as t^3/3).
 double tMinusAtan(double t) {
   if (std::abs(t) >= 0.5) return t - std::atan(t);
@@ -52,13 +62,7 @@ double atanMinusRational(double t) {
 void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
-  out.S = 0;
-  out.M.setZero();
-  out.angle = 0;
-  for (int k = 0; k < 2; ++k) {
-    out.D[k] = out.A[k] = 0;
-    out.B[k].setZero();
-  }
+  clear(out);
   if (l == 0) return;  // a zero-length edge carries no boundary
 
   const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x()), d = x - p0;
@@ -194,13 +198,7 @@ const GaussRule& gaussLegendre(int n) {
 
 void integrateEdgeGauss(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, int segments,
                         int pointsPerSegment, EdgeIntegrals& out) {
-  out.S = 0;
-  out.M.setZero();
-  out.angle = 0;
-  for (int k = 0; k < 2; ++k) {
-    out.D[k] = out.A[k] = 0;
-    out.B[k].setZero();
-  }
+  clear(out);
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
   if (l == 0 || segments < 1 || pointsPerSegment < 1) return;

@@ -20,17 +20,6 @@ FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumn
   return frame;
 }
 
-Eigen::MatrixXd tMatrixFromOutputs(const double* y, int dim) {
-  if (dim == 3) {
-    Eigen::Matrix3d T;
-    T << y[0], y[3] - y[8], y[4] + y[7], y[3] + y[8], y[1], y[5] - y[6], y[4] - y[7], y[5] + y[6], y[2];
-    return T;
-  }
-  Eigen::Matrix2d T;
-  T << y[0], y[2] + y[3], y[2] - y[3], y[1];
-  return T;
-}
-
 Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M) {
   const Eigen::MatrixXd S = 0.5 * (M + M.transpose()), A = 0.5 * (M - M.transpose());
   Eigen::VectorXd y(M.rows() * M.rows());
@@ -101,7 +90,7 @@ void finish(const double* y, bool solve, double* out) {
     for (int a = 0; a < Dim; ++a) out[a] = y[a];
     return;
   }
-  Eigen::Matrix<double, Dim, Dim> T;  // S + A, as tMatrixFromOutputs, without allocating
+  Eigen::Matrix<double, Dim, Dim> T;  // S + A (frame_evaluation.h)
   if constexpr (Dim == 3)
     T << y[0], y[3] - y[8], y[4] + y[7], y[3] + y[8], y[1], y[5] - y[6], y[4] - y[7], y[5] + y[6], y[2];
   else

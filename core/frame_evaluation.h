@@ -7,7 +7,7 @@
 //             3D: S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w with omega = y[6..8];
 //             2D: S = (xx, yy, xy) = y[0..2], A = [[0, y3], [-y3, 0]].
 //           The split lets each output touch only the coordinates it needs (S the symmetric terms, A the
-//           antisymmetric ones): tMatrixFromOutputs / tOutputsFromMatrix convert.
+//           antisymmetric ones): tOutputsFromMatrix converts a matrix into them.
 //
 // C (#P by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and the
 // parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
@@ -47,8 +47,7 @@ struct FrameWeights {
   Eigen::MatrixXd tail;  // K_tail by outputs
 };
 
-// T (d by d) from the first d^2 outputs of a solving frame, and the outputs of a matrix M (d^2 numbers).
-Eigen::MatrixXd tMatrixFromOutputs(const double* y, int dim);
+// The T outputs (d^2 numbers, layout above) of a d by d matrix M.
 Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M);
 
 // out (#P by d, resized) from C and W as described above, with OpenMP over fixed blocks of points, so the result
