@@ -263,6 +263,118 @@ void findIntersection(const Cage& cage, CageReport& report) {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
+// 3D: faces that meet other than at what they share. Bounding boxes swept along the longest axis, then orientation
+// tests: two triangles meet iff an edge of one meets the other (closed sets, coplanar included).
+// ---------------------------------------------------------------------------------------------------------------
+
+using Point3 = Eigen::Vector3d;
+
+// The side of plane abc that d lies on: 0 within a relative 1e-12 of the plane, where the rounding of the
+// determinant could give either sign (an edge lying in a face's plane would otherwise seem to cross it).
+int orient3d(const Point3& a, const Point3& b, const Point3& c, const Point3& d) {
+  const Point3 u = b - a, v = c - a, w = d - a;
+  const double volume = u.dot(v.cross(w)), scale = u.norm() * v.norm() * w.norm();
+  return std::abs(volume) <= 1e-12 * scale ? 0 : (volume > 0.0) - (volume < 0.0);
+}
+
+// Segment pq against the closed triangle abc lying in the same plane: 2D tests in the plane of the larger normal
+// components.
+bool coplanarSegmentMeetsTriangle(const Point3& p, const Point3& q, const Point3 (&t)[3]) {
+  const Point3 normal = (t[1] - t[0]).cross(t[2] - t[0]).cwiseAbs();
+  int drop = 0;
+  normal.maxCoeff(&drop);
+  const auto flat = [drop](const Point3& x) { return Eigen::Vector2d(x[(drop + 1) % 3], x[(drop + 2) % 3]); };
+  const Eigen::Vector2d a = flat(t[0]), b = flat(t[1]), c = flat(t[2]);
+  const double turn = orient(a, b, c);
+  const auto inside = [&](const Eigen::Vector2d& x) {
+    const double s0 = orient(a, b, x) * turn, s1 = orient(b, c, x) * turn, s2 = orient(c, a, x) * turn;
+    return s0 >= 0.0 && s1 >= 0.0 && s2 >= 0.0;
+  };
+  Segment s{flat(p), flat(q), 0, 1};
+  if (inside(s.p) || inside(s.q)) return true;
+  const Eigen::Vector2d corners[3] = {a, b, c};
+  for (int k = 0; k < 3; ++k) {
+    if (segmentsMeet(s, Segment{corners[k], corners[(k + 1) % 3], 2, 3})) return true;
+  }
+  return false;
+}
+
+// Segment pq against the closed triangle t.
+bool segmentMeetsTriangle(const Point3& p, const Point3& q, const Point3 (&t)[3]) {
+  const int sp = orient3d(t[0], t[1], t[2], p), sq = orient3d(t[0], t[1], t[2], q);
+  if (sp == 0 && sq == 0) return coplanarSegmentMeetsTriangle(p, q, t);
+  if (sp == sq) return false;
+  // The line pq crosses the plane: inside the triangle iff it passes each edge on the same side (or on it).
+  const int s0 = orient3d(p, q, t[0], t[1]), s1 = orient3d(p, q, t[1], t[2]), s2 = orient3d(p, q, t[2], t[0]);
+  return !((s0 > 0 || s1 > 0 || s2 > 0) && (s0 < 0 || s1 < 0 || s2 < 0));
+}
+
+// Faces i and j (non-degenerate, distinct) meet other than along the vertices they share.
+bool facesIntersect(const Cage& cage, int i, int j) {
+  const auto corner = [&](int face, int k) -> Point3 { return cage.vertices.row(cage.faces(face, k)).transpose(); };
+  int sharedI[3], sharedJ[3], shared = 0;
+  for (int k = 0; k < 3; ++k) {
+    for (int l = 0; l < 3; ++l) {
+      if (cage.faces(i, k) == cage.faces(j, l)) sharedI[shared] = k, sharedJ[shared] = l, ++shared;
+    }
+  }
+  const Point3 ti[3] = {corner(i, 0), corner(i, 1), corner(i, 2)}, tj[3] = {corner(j, 0), corner(j, 1), corner(j, 2)};
+  if (shared == 0) {  // any contact counts
+    for (int k = 0; k < 3; ++k) {
+      if (segmentMeetsTriangle(ti[k], ti[(k + 1) % 3], tj) || segmentMeetsTriangle(tj[k], tj[(k + 1) % 3], ti))
+        return true;
+    }
+    return false;
+  }
+  if (shared == 1) {
+    // Both intersections with the other plane start at the shared vertex; they overlap beyond it iff the edge
+    // opposite to it in one triangle meets the other triangle.
+    const int k = sharedI[0], l = sharedJ[0];
+    return segmentMeetsTriangle(ti[(k + 1) % 3], ti[(k + 2) % 3], tj) ||
+           segmentMeetsTriangle(tj[(l + 1) % 3], tj[(l + 2) % 3], ti);
+  }
+  if (shared == 2) {
+    // Across the shared edge the faces overlap only when folded flat onto each other: the far corners on the
+    // same side of the edge, at an opening angle below kFoldTolerance.
+    const Point3 o = ti[sharedI[0]], e = (ti[sharedI[1]] - o).normalized();
+    const Point3 a = ti[3 - sharedI[0] - sharedI[1]] - o, b = tj[3 - sharedJ[0] - sharedJ[1]] - o;
+    const Point3 pa = a - a.dot(e) * e, pb = b - b.dot(e) * e;
+    return std::atan2(pa.cross(pb).norm(), pa.dot(pb)) <= CageReport::kFoldTolerance;
+  }
+  return false;  // the same three vertices: a non-manifold duplicate, reported as such
+}
+
+void findIntersections3d(const Cage& cage, CageReport& report) {
+  const Eigen::MatrixXd& V = cage.vertices;
+  std::vector<char> skip(cage.numFaces(), 0);
+  for (const int j : report.degenerateFaces) skip[j] = 1;  // no plane to test against
+  std::vector<Eigen::AlignedBox3d> boxes(cage.numFaces());
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    for (int k = 0; k < 3; ++k) boxes[j].extend(Point3(V.row(cage.faces(j, k)).transpose()));
+  }
+  int axis = 0;
+  (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(&axis);
+  std::vector<int> order;
+  for (int j = 0; j < cage.numFaces(); ++j)
+    if (!skip[j]) order.push_back(j);
+  std::sort(order.begin(), order.end(), [&](int x, int y) {
+    return std::make_pair(boxes[x].min()[axis], x) < std::make_pair(boxes[y].min()[axis], y);
+  });
+  std::vector<int> active;  // faces whose box may still overlap the next one along the axis
+  for (const int j : order) {
+    const double start = boxes[j].min()[axis];
+    active.erase(std::remove_if(active.begin(), active.end(), [&](int i) { return boxes[i].max()[axis] < start; }),
+                 active.end());
+    for (const int i : active) {
+      if (boxes[i].intersects(boxes[j]) && facesIntersect(cage, i, j))
+        report.intersectingFaces.push_back({std::min(i, j), std::max(i, j)});
+    }
+    active.push_back(j);
+  }
+  std::sort(report.intersectingFaces.begin(), report.intersectingFaces.end());
+}
+
+// ---------------------------------------------------------------------------------------------------------------
 // Messages
 // ---------------------------------------------------------------------------------------------------------------
 
@@ -316,7 +428,11 @@ CageReport validateCage(const Cage& cage) {
   classifyRidges(cage, report);
   countComponents(cage, report);
   measureGeometry(cage, report);
-  if (cage.dim() == 2) findIntersection(cage, report);
+  if (cage.dim() == 2) {
+    findIntersection(cage, report);
+  } else {
+    findIntersections3d(cage, report);
+  }
   return report;
 }
 
@@ -364,7 +480,7 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
     problems.push_back("the polygon has " + std::to_string(report.components) +
                        " separate loops: a 2D cage is one simple polygon");
   }
-  if (!report.intersectingFaces.empty()) {
+  if (!is3d && !report.intersectingFaces.empty()) {
     problems.push_back("the polygon intersects itself: " +
                        listSome(report.intersectingFaces,
                                 [](const std::array<int, 2>& p) {
@@ -408,6 +524,30 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
                        "; remove them (a pose must then drop them too)");
   }
   return problems;
+}
+
+void requireValidCage(const CageReport& report, const std::string& source) {
+  if (report.valid()) return;
+  const std::vector<std::string> problems = describeCageProblems(report);
+  const std::string more =
+      problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more problems)" : "";
+  throw InputError(source, -1, "the cage cannot be used: " + problems.front() + more,
+                   "run 'somicage check --cage " + source + "' for the full report");
+}
+
+std::vector<std::string> describeCageWarnings(const CageReport& report) {
+  std::vector<std::string> warnings;
+  if (report.dim == 3 && !report.intersectingFaces.empty()) {
+    warnings.push_back("the cage intersects itself: " +
+                       count(report.intersectingFaces.size(), "pair of faces meets", "pairs of faces meet") +
+                       " away from their shared edges and vertices (" +
+                       listSome(report.intersectingFaces,
+                                [](const std::array<int, 2>& p) {
+                                  return "faces " + std::to_string(p[0]) + " and " + std::to_string(p[1]);
+                                }) +
+                       "); points in the overlap count as inside twice and deform poorly: move the vertices apart");
+  }
+  return warnings;
 }
 
 }  // namespace somicage

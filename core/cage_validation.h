@@ -2,7 +2,8 @@
 //   3D: a closed, edge-manifold triangle mesh, consistently oriented, with outward normals (signed volume > 0);
 //   2D: a simple polygon (no two edges cross or touch), counter-clockwise (signed area > 0).
 // Both: no degenerate faces (near-zero area or length) and no two vertices at the same position.
-// Cost: O(F log F + V log V). Indices in the report are 0-based.
+// Also lists 3D self-intersections (a warning: describeCageWarnings).
+// Cost: O(F log F + V log V), plus the face pairs whose bounding boxes overlap in 3D. Indices are 0-based.
 #pragma once
 
 #include <array>
@@ -37,8 +38,12 @@ struct CageReport {
   std::vector<std::array<int, 2>> duplicateVertices;
   // Vertices that no face uses: they get zero coordinates and never move anything.
   std::vector<int> unreferencedVertices;
-  // 2D: pairs of non-adjacent edges that cross or touch, or adjacent edges that fold back onto each other.
-  // The sweep stops at the first such pair, so at most one is listed.
+  // Pairs (i, j), i < j, of faces that meet other than at the vertices they share.
+  // 2D (a problem): non-adjacent edges that cross or touch, or adjacent edges that fold back onto each other. The
+  //   sweep stops at the first such pair, so at most one is listed.
+  // 3D (a warning only, see describeCageWarnings): every pair of non-degenerate triangles that cross or touch, or
+  //   that share an edge and are folded onto each other (opening angle <= kFoldTolerance). The coordinates stay
+  //   defined, but a point in the overlap is inside twice (winding number 2) and deforms poorly.
   std::vector<std::array<int, 2>> intersectingFaces;
 
   int components = 0;         // connected components of the face graph
@@ -47,6 +52,7 @@ struct CageReport {
 
   static constexpr double kDegenerateTolerance = 1e-10;
   static constexpr double kDuplicateTolerance = 1e-10;
+  static constexpr double kFoldTolerance = 1e-9;  // radians
 
   bool indicesValid() const { return invalidFaces.empty(); }
   bool closed() const { return indicesValid() && boundaryRidges.empty(); }
@@ -64,5 +70,13 @@ CageReport validateCage(const Cage& cage);
 // One entry per kind of problem, in order of severity: what is wrong, naming (the first few) elements, and what to
 // do about it. Empty exactly when report.valid().
 std::vector<std::string> describeCageProblems(const CageReport& report);
+
+// Throws InputError(source, ...) with the first problem (and how many more there are) unless report.valid(); the
+// hint points to 'somicage check', which lists them all.
+void requireValidCage(const CageReport& report, const std::string& source);
+
+// What makes a valid cage deform poorly without making it unusable (3D self-intersections), in the same form:
+// what is wrong, naming (the first few) elements, and what to do about it. Empty when there is nothing to say.
+std::vector<std::string> describeCageWarnings(const CageReport& report);
 
 }  // namespace somicage

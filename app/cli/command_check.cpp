@@ -1,9 +1,11 @@
-// somicage check: is the cage usable (cage_validation.h), and how well do its Somigliana coordinates reproduce
-// the identity (partition of unity, Eq. 9) at the points of a mesh?
+// somicage check: is the cage valid as given (cage_validation.h), what would repairCage fix (cage_repair.h), and how
+// well do the Somigliana coordinates of the cage the other commands use reproduce the identity (partition of
+// unity, Eq. 9) at the points of a mesh?
 #include <algorithm>
 #include <iostream>
 #include <sstream>
 
+#include "cage_repair.h"
 #include "cage_validation.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
@@ -97,8 +99,15 @@ std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, 
   return errors;
 }
 
+// What the other commands make of the cage: the repairs they apply, whether it is usable then, and the warnings.
+struct RepairOutcome {
+  std::vector<std::string> fixes, warnings;
+  bool usable = false;
+  int intersectingFaces = 0;  // 3D: pairs of faces that meet
+};
+
 void writeJson(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-               const std::vector<std::string>& problems, const UnityCheck& unity,
+               const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
                const std::vector<std::pair<std::string, double>>& reproduction) {
   JsonObjectWriter json(std::cout);
   json.field("cage", cagePath);
@@ -129,6 +138,14 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
   json.field("duplicate_vertices", static_cast<int>(report.duplicateVertices.size()));
   json.field("unreferenced_vertices", static_cast<int>(report.unreferencedVertices.size()));
   json.field("problems", problems);
+  json.field("repairs", repair.fixes);
+  json.field("usable", repair.usable);
+  json.field("warnings", repair.warnings);
+  if (report.dim == 3) {
+    json.field("intersecting_face_pairs", repair.intersectingFaces);
+  } else {
+    json.null("intersecting_face_pairs");  // 2D: a self-intersecting polygon is a problem, listed above
+  }
   json.field("mesh_vertices", unity.points);
   json.field("pou_computed", unity.computed);
   json.field("inside_points", unity.inside);
@@ -152,7 +169,7 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
 }
 
 void writeReport(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-                 const std::vector<std::string>& problems, const UnityCheck& unity,
+                 const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
                  const std::vector<std::pair<std::string, double>>& reproduction) {
   const auto yesNo = [](bool value) { return value ? "yes" : "NO"; };
   std::ostringstream out;
@@ -184,12 +201,23 @@ void writeReport(const std::string& cagePath, const std::string& meshPath, const
       out << "; partition of unity not computed: fix the cage first\n";
     }
   }
+  if (!problems.empty()) {
+    out << "problems (indices are 0-based):\n";
+    for (const std::string& problem : problems) out << "  - " << problem << "\n";
+  }
+  if (!repair.fixes.empty()) {
+    out << "repairs that deform, bench and the editor apply (the file is not changed):\n";
+    for (const std::string& fix : repair.fixes) out << "  - " << fix << "\n";
+  }
+  if (!repair.warnings.empty()) {
+    out << "warnings:\n";
+    for (const std::string& warning : repair.warnings) out << "  - " << warning << "\n";
+  }
   if (problems.empty()) {
     out << "result: the cage is valid\n";
   } else {
-    out << "problems (indices are 0-based):\n";
-    for (const std::string& problem : problems) out << "  - " << problem << "\n";
-    out << "result: the cage has " << problems.size() << (problems.size() == 1 ? " problem" : " problems") << "\n";
+    out << "result: the cage has " << problems.size() << (problems.size() == 1 ? " problem" : " problems")
+        << (repair.usable ? "; repaired as above, it is usable" : "") << "\n";
   }
   std::cout << out.str();
 }
@@ -202,7 +230,8 @@ std::string checkUsage() {
       << "Checks that the cage is closed, edge-manifold, consistently oriented and outward (3D), or a simple\n"
       << "counter-clockwise polygon (2D), with no degenerate faces or duplicate vertices. With --mesh, computes the\n"
       << "Somigliana coordinates of the mesh vertices and the partition-of-unity residual max |sum_i T_i - I| over\n"
-      << "those inside the cage (winding number >= 0.5). Exit status: 0 the cage is valid, 1 it has problems.\n\n"
+      << "those inside the cage (winding number >= 0.5). Lists what deform would repair (face orientation) and\n"
+      << "warns about 3D self-intersections. Exit status: 0 the cage is valid as given, 1 it has problems.\n\n"
       << "options:\n"
       << checkOptions().optionHelp();
   return out.str();
@@ -224,6 +253,14 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   if (!meshPath.empty()) mesh = loadMesh(meshPath);
   const CageReport report = validateCage(cage);
   const std::vector<std::string> problems = describeCageProblems(report);
+  // The numbers below are those of the cage that deform uses: the repaired one.
+  const CageRepair repaired = repairCage(cage);
+  const CageReport repairedReport = repaired.fixes.empty() ? report : validateCage(repaired.cage);
+  RepairOutcome repair;
+  repair.fixes = repaired.fixes;
+  repair.usable = repairedReport.valid();
+  repair.warnings = describeCageWarnings(repairedReport);
+  repair.intersectingFaces = static_cast<int>(repairedReport.intersectingFaces.size());
 
   UnityCheck unity;
   unity.points = mesh.numVertices();
@@ -232,13 +269,13 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
     const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
     Eigen::VectorXd winding;
-    unity = checkPartitionOfUnity(cage, points, threads, winding);
-    reproduction = checkReproduction(cage, points, winding, threads);
+    unity = checkPartitionOfUnity(repaired.cage, points, threads, winding);
+    reproduction = checkReproduction(repaired.cage, points, winding, threads);
   }
   if (args.has("--json")) {
-    writeJson(cagePath, meshPath, report, problems, unity, reproduction);
+    writeJson(cagePath, meshPath, report, problems, repair, unity, reproduction);
   } else {
-    writeReport(cagePath, meshPath, report, problems, unity, reproduction);
+    writeReport(cagePath, meshPath, report, problems, repair, unity, reproduction);
   }
   return report.valid() ? kExitOk : kExitFailure;
 }

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "cage_repair.h"
+#include "cage_validation.h"
 #include "obj_io.h"
 
 namespace somicage::editor {
@@ -133,7 +135,12 @@ Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
 
 Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
-  s.restCage = loadCage(cagePath);
+  CageRepair repair = repairCage(loadCage(cagePath));
+  const CageReport report = validateCage(repair.cage);
+  requireValidCage(report, cagePath);
+  s.restCage = std::move(repair.cage);
+  for (const std::string& fix : repair.fixes) s.notices.push_back("cage repaired: " + fix);
+  for (const std::string& warning : describeCageWarnings(report)) s.notices.push_back("cage warning: " + warning);
   const PolygonMesh mesh = loadMesh(meshPath);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
   s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());

@@ -94,9 +94,9 @@ TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {
 TEST(CliErrors, BadFilesExitTwoWithOneMessage) {
   ScratchDir dir;
   Cage cube = loadCage(dataFile("cube_cage.obj"));
-  cube.faces = cube.faces.rowwise().reverse().eval();
-  const std::string insideOut = dir.file("inside_out.obj");
-  saveObj(insideOut, cube.vertices, cageTopology(cube));
+  cube.faces.conservativeResize(11, 3);  // a hole: no repair makes that usable
+  const std::string open = dir.file("open.obj");
+  saveObj(open, cube.vertices, cageTopology(cube));
   const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj");
   const std::string missing = dir.file("missing.obj");
   const std::string badFace = dataFile("bad_face_out_of_range.obj");
@@ -117,9 +117,12 @@ TEST(CliErrors, BadFilesExitTwoWithOneMessage) {
       {"pose with another vertex count",
        {"deform", "--cage", cage, "--posed", mesh, "--mesh", mesh, "--out", out},
        "the posed cage has 5 vertices, the rest cage has 8"},
-      {"inside-out cage",
-       {"deform", "--cage", insideOut, "--posed", insideOut, "--mesh", mesh, "--out", out},
-       insideOut + ": the cage cannot be used: the faces point inward"},
+      {"open cage",
+       {"deform", "--cage", open, "--posed", open, "--mesh", mesh, "--out", out},
+       open + ": the cage cannot be used: the cage is not closed: 3 edges have only one face"},
+      {"open cage in bench",
+       {"bench", "--cage", open, "--mesh", mesh},
+       open + ": the cage cannot be used: the cage is not closed"},
       {"output folder missing",
        {"deform", "--cage", cage, "--posed", cage, "--mesh", mesh, "--out", dir.file("no/such/folder/out.obj")},
        "cannot create a file in this folder: No such file or directory"},

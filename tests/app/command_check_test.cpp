@@ -39,7 +39,11 @@ TEST(CliCheck, JsonHasTheKeysAndTheNumbers) {
                                                      {"valid", Json::Type::Bool},
                                                      {"problems", Json::Type::Array},
                                                      {"precompute_s", Json::Type::Number},
-                                                     {"inside_points", Json::Type::Number}};
+                                                     {"inside_points", Json::Type::Number},
+                                                     {"repairs", Json::Type::Array},
+                                                     {"usable", Json::Type::Bool},
+                                                     {"warnings", Json::Type::Array},
+                                                     {"intersecting_face_pairs", Json::Type::Number}};
   for (const auto& [key, type] : keys) {
     ASSERT_TRUE(json.has(key)) << key;
     EXPECT_EQ(json[key].type, type) << key;
@@ -100,6 +104,45 @@ TEST(CliCheck, CageWithProblemsExitsOne) {
   EXPECT_EQ(r.exitCode, 1) << r;
   EXPECT_NE(r.out.find("outward NO"), std::string::npos) << r;
   EXPECT_NE(r.out.find("result: the cage has 1 problem"), std::string::npos) << r;
+}
+
+// check reports the file as given (exit 1), then what deform would repair; the coordinates are the repaired cage's.
+TEST(CliCheck, RepairableCageListsTheRepair) {
+  const std::string flipped = dataFile("cube_cage_flipped_faces.obj");
+  const Json json = checkJson({"--cage", flipped, "--mesh", dataFile("pyramid_mesh.obj")}, 1);
+  ASSERT_TRUE(json.has("repairs"));
+  EXPECT_FALSE(json["valid"].boolean);
+  EXPECT_FALSE(json["consistently_oriented"].boolean);
+  EXPECT_TRUE(json["usable"].boolean);
+  ASSERT_EQ(json["repairs"].array.size(), 1u);
+  EXPECT_EQ(json["repairs"].array[0].string, "flipped 3 faces (1, 4, 7) to match their neighbours' orientation");
+  EXPECT_EQ(json["inside_points"].number, 5);
+  EXPECT_LE(json["pou_max"].number, 1e-9);
+
+  const RunResult r = runSomicage({"check", "--cage", flipped});
+  EXPECT_EQ(r.exitCode, 1) << r;
+  EXPECT_NE(r.out.find("consistently oriented NO"), std::string::npos) << r;
+  EXPECT_NE(r.out.find("repairs that deform, bench and the editor apply (the file is not changed):\n"
+                       "  - flipped 3 faces (1, 4, 7)"),
+            std::string::npos)
+      << r;
+  EXPECT_NE(r.out.find("result: the cage has 1 problem; repaired as above, it is usable"), std::string::npos) << r;
+}
+
+TEST(CliCheck, SelfIntersectingCageIsValidWithAWarning) {
+  const std::string pierced = dataFile("cube_pierced_by_spike.obj");
+  const Json json = checkJson({"--cage", pierced}, 0);
+  ASSERT_TRUE(json.has("warnings"));
+  EXPECT_TRUE(json["valid"].boolean);
+  EXPECT_TRUE(json["repairs"].array.empty());
+  EXPECT_EQ(json["intersecting_face_pairs"].number, 3);
+  ASSERT_EQ(json["warnings"].array.size(), 1u);
+  EXPECT_NE(json["warnings"].array[0].string.find("faces 0 and 13, faces 0 and 14, faces 0 and 15"), std::string::npos);
+
+  const RunResult r = runSomicage({"check", "--cage", pierced});
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_NE(r.out.find("warnings:\n  - the cage intersects itself"), std::string::npos) << r;
+  EXPECT_NE(r.out.find("result: the cage is valid"), std::string::npos) << r;
 }
 
 TEST(CliCheck, ReadableReport) {

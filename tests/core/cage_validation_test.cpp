@@ -9,6 +9,8 @@
 #include <random>
 
 #include "obj_io.h"
+#include "test_models.h"
+#include "test_shapes.h"
 
 namespace somicage {
 namespace {
@@ -173,6 +175,112 @@ TEST(CageValidation, SharedMeshesHaveTheirDocumentedDefects) {
   EXPECT_LT(horse.signedVolume, 0.0);
   EXPECT_TRUE(mentions(describeCageProblems(horse), "the faces point inward"));
 }
+
+// ---------------------------------------------------------------------------------------------------------------
+// 3D self-intersections (a warning, not a problem)
+// ---------------------------------------------------------------------------------------------------------------
+
+Cage withTetrahedron(const Cage& cage, const Eigen::Matrix<double, 4, 3>& corners) {
+  Cage both = cage;
+  const int base = cage.numVertices();
+  both.vertices.conservativeResize(base + 4, 3);
+  both.vertices.bottomRows(4) = corners;
+  both.faces.conservativeResize(cage.numFaces() + 4, 3);
+  both.faces.bottomRows(4) << base, base + 2, base + 1, base, base + 1, base + 3, base + 1, base + 2, base + 3, base,
+      base + 3, base + 2;
+  return both;
+}
+
+TEST(CageValidation, ShapesWithoutSelfIntersections) {
+  // Faces that share an edge or a vertex are not reported; nor are the many nearly flat fans of a fine sphere.
+  EXPECT_TRUE(validateCage(cube()).intersectingFaces.empty());
+  EXPECT_TRUE(validateCage(test::makeCube()).intersectingFaces.empty());
+  const CageReport sphere = validateCage(test::makeIcosphere(4));  // 5120 faces
+  EXPECT_TRUE(sphere.intersectingFaces.empty())
+      << "faces " << sphere.intersectingFaces[0][0] << " and " << sphere.intersectingFaces[0][1];
+  EXPECT_TRUE(validateCage(test::makeExtrudedL()).intersectingFaces.empty());
+  EXPECT_TRUE(describeCageWarnings(sphere).empty());
+}
+
+TEST(CageValidation, SpikeThroughAFaceIsAWarningNamingTheFaces) {
+  // A thin tetrahedron (faces 12-15; 12 is its base, inside the cube) pierces the cube's face 10, (1, 3, 7) on
+  // x = +1, with its three side faces.
+  Eigen::Matrix<double, 4, 3> spike;
+  spike << 0.5, 0.5, -0.4, 0.5, 0.35, -0.32, 0.5, 0.35, -0.48, 1.5, 0.4, -0.4;
+  const Cage pierced = withTetrahedron(test::makeCube(), spike);
+  const CageReport report = validateCage(pierced);
+  EXPECT_EQ(report.intersectingFaces, (std::vector<std::array<int, 2>>{{10, 13}, {10, 14}, {10, 15}}));
+  EXPECT_TRUE(report.valid()) << joined(describeCageProblems(report));  // a warning only
+  const auto warnings = describeCageWarnings(report);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_TRUE(mentions(warnings, "the cage intersects itself: 3 pairs of faces meet")) << joined(warnings);
+  EXPECT_TRUE(mentions(warnings, "faces 10 and 13, faces 10 and 14, faces 10 and 15")) << joined(warnings);
+
+  spike(3, 0) = 0.9;  // the tip stays inside: nothing meets
+  EXPECT_TRUE(validateCage(withTetrahedron(test::makeCube(), spike)).intersectingFaces.empty());
+  spike(3, 0) = 1.0;  // the tip touches face 10: touching counts
+  EXPECT_EQ(validateCage(withTetrahedron(test::makeCube(), spike)).intersectingFaces,
+            (std::vector<std::array<int, 2>>{{10, 13}, {10, 14}, {10, 15}}));
+}
+
+TEST(CageValidation, FacesSharingAVertexMeetOnlyThere) {
+  // Two tetrahedra with a common corner (vertex 0). Faces 0-3 are the unit corner tetrahedron; face 0 lies in z = 0.
+  Cage corner;
+  corner.vertices.resize(7, 3);
+  corner.vertices << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+  corner.faces.resize(8, 3);
+  corner.faces << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3,  // the first tetrahedron
+      0, 4, 5, 0, 6, 4, 0, 5, 6, 4, 6, 5;              // the mirrored one: touches at vertex 0 only
+  EXPECT_TRUE(validateCage(corner).intersectingFaces.empty());
+
+  // Move the second one into the first, through its face 0 (z = 0): faces 4 and 5 cross that plane beyond the
+  // shared vertex, inside face 0, and so does face 7, which shares no vertex with it.
+  corner.vertices.bottomRows(3) << 0.3, 0.3, -0.2, 0.4, 0.1, 0.3, 0.1, 0.4, 0.3;
+  EXPECT_EQ(validateCage(corner).intersectingFaces, (std::vector<std::array<int, 2>>{{0, 4}, {0, 5}, {0, 7}}));
+}
+
+TEST(CageValidation, FacesFoldedOntoEachOtherAcrossTheirEdge) {
+  Cage fold;
+  fold.vertices.resize(4, 3);
+  fold.vertices << 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.3, 0.5, 0;
+  fold.faces.resize(2, 3);
+  fold.faces << 0, 1, 2, 1, 0, 3;
+  EXPECT_EQ(validateCage(fold).intersectingFaces, (std::vector<std::array<int, 2>>{{0, 1}}));
+  fold.vertices.row(3) << 0.3, -0.5, 0;  // flat, on the other side: fine
+  EXPECT_TRUE(validateCage(fold).intersectingFaces.empty());
+  fold.vertices.row(3) << 0.3, 0.5, 0.01;  // folded but still apart
+  EXPECT_TRUE(validateCage(fold).intersectingFaces.empty());
+}
+
+TEST(CageValidation, OverlappingBoxesMeetOnlyAcrossTheBoxes) {
+  Cage two;
+  const Cage one = test::makeCube();
+  two.vertices.resize(16, 3);
+  two.vertices << one.vertices, one.vertices.rowwise() + Eigen::RowVector3d(1.0, 0.5, 0.25);
+  two.faces.resize(24, 3);
+  two.faces << one.faces, one.faces.array() + 8;
+  const CageReport report = validateCage(two);
+  EXPECT_FALSE(report.intersectingFaces.empty());
+  for (const auto& pair : report.intersectingFaces) EXPECT_TRUE(pair[0] < 12 && pair[1] >= 12);
+  EXPECT_FALSE(describeCageWarnings(report).empty());
+}
+
+// The published triangle cages are free of self-intersections, except the bunny's: 21 pairs of its faces cross
+// (not just touch), which an exact rational evaluation of the same
+// tests over every pair of overlapping bounding boxes confirms.
+class CageValidationModels : public ::testing::TestWithParam<test::ModelCase> {};
+
+TEST_P(CageValidationModels, SelfIntersectionsAsPublished) {
+  const test::ModelCase& c = GetParam();
+  if (test::skipIfModelAbsent(c)) return;
+  const CageReport report = validateCage(loadCage(test::modelPath(c, c.cage)));
+  const size_t expected = c.cage == "bunny-cage-robust.obj" ? 21 : 0;
+  EXPECT_EQ(report.intersectingFaces.size(), expected) << joined(describeCageWarnings(report));
+  EXPECT_TRUE(report.valid()) << joined(describeCageProblems(report));
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedModels, CageValidationModels, ::testing::ValuesIn(test::modelCases()),
+                         test::modelCaseName);
 
 // ---------------------------------------------------------------------------------------------------------------
 // 2D

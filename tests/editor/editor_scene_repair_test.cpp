@@ -1,0 +1,78 @@
+// Loading files into the editor repairs the cage as the command line does (core/cage_repair.h), keeps what was
+// done as notices that the status bar shows, and refuses a cage that stays invalid.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "app_state.h"
+#include "errors.h"
+#include "obj_io.h"
+#include "scene.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+// The cube [-1, 1]^3, outward, and a point set inside it, written to a fresh folder.
+struct CubeFiles {
+  std::filesystem::path dir;
+  Cage cube;
+  std::string mesh;
+
+  explicit CubeFiles(const std::string& name) : dir(std::filesystem::path(::testing::TempDir()) / name) {
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    cube.vertices.resize(8, 3);
+    for (int i = 0; i < 8; ++i) cube.vertices.row(i) << (i & 1 ? 1 : -1), (i & 2 ? 1 : -1), (i & 4 ? 1 : -1);
+    cube.faces.resize(12, 3);
+    cube.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1,
+        7, 5;
+    mesh = (dir / "points.obj").string();
+    saveObj(mesh, Eigen::MatrixXd::Random(20, 3) * 0.5, PolygonMesh{});
+  }
+  ~CubeFiles() { std::filesystem::remove_all(dir); }
+
+  std::string cage(const std::string& name, const Cage& cage) const {
+    const std::string path = (dir / name).string();
+    saveObj(path, cage.vertices, cageTopology(cage));
+    return path;
+  }
+};
+
+}  // namespace
+
+TEST(EditorSceneRepair, FlippedFacesAreRepairedWithANotice) {
+  const CubeFiles files("somicage_scene_repair");
+  Cage flipped = files.cube;
+  for (int j : {2, 9}) flipped.faces.row(j) = flipped.faces.row(j).reverse().eval();
+  const Scene scene = loadScene(files.mesh, files.cage("flipped.obj", flipped));
+  EXPECT_EQ(scene.restCage.faces, files.cube.faces);
+  EXPECT_EQ(scene.restCage.vertices, files.cube.vertices);
+  EXPECT_EQ(scene.notices,
+            std::vector<std::string>{"cage repaired: flipped 2 faces (2, 9) to match their neighbours' orientation"});
+  EXPECT_TRUE(loadScene(files.mesh, files.cage("clean.obj", files.cube)).notices.empty());
+
+  // The status bar says what was repaired.
+  AppState state;
+  PrecomputeOutcome outcome;
+  outcome.scene = std::make_shared<const Scene>(scene);
+  installOutcome(state, outcome);
+  EXPECT_NE(state.statusMessage.find("; cage repaired: flipped 2 faces (2, 9)"), std::string::npos)
+      << state.statusMessage;
+  EXPECT_TRUE(state.errors.empty());
+}
+
+TEST(EditorSceneRepair, CageThatStaysInvalidIsRefused) {
+  const CubeFiles files("somicage_scene_refuse");
+  Cage open = files.cube;
+  open.faces.conservativeResize(11, 3);
+  const std::string path = files.cage("open.obj", open);
+  try {
+    loadScene(files.mesh, path);
+    FAIL() << "an open cage was accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), path);
+    EXPECT_NE(e.problem().find("the cage cannot be used: the cage is not closed"), std::string::npos) << e.what();
+  }
+}
