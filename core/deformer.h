@@ -3,10 +3,13 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "cage.h"
+#include "exterior_points.h"
 #include "frame_evaluation.h"
 #include "progress.h"
 #include "somigliana_coordinates.h"
@@ -39,6 +42,14 @@ struct PrecomputeOptions {
 struct PrecomputeDiagnostics {
   Eigen::VectorXd winding;        // generalised winding number w.r.t. the rest cage: 1 inside, 0 outside
   Eigen::VectorXd unityResidual;  // Somigliana: max |sum_i T_i - I| (Eq. 9); meaningful inside only
+  // Somigliana, Green: how each point is deformed; the ones not Inside follow the exterior rule of
+  // exterior_points.h (outside the cage, on it, or with unreliable integrals).
+  std::vector<PointRegion> regions;
+
+  int exteriorCount() const {
+    return static_cast<int>(
+        std::count_if(regions.begin(), regions.end(), [](PointRegion r) { return r != PointRegion::Inside; }));
+  }
 };
 
 // A method's precomputed coordinates (the matrix C of frame_evaluation.h) and its per-frame weights.
@@ -54,7 +65,7 @@ class CageDeformer {
 
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
-  int numPoints() const { return coordinates_.rows(); }
+  int numPoints() const { return coordinates_.numPoints(); }
 
   // The deformed points (#P by d, resized) for a posed cage: evaluateFrame(C, frameWeights(...)).
   void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& out) const;

@@ -193,6 +193,18 @@ void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, in
     evaluateScalar(C.floats, C.mainColumns, W, dim, threads, out);
   else
     evaluateScalar(C.doubles, C.mainColumns, W, dim, threads, out);
+  blendExteriorPoints(C.exteriorBlends, out);
+}
+
+void blendExteriorPoints(const std::vector<ExteriorBlend>& blends, Eigen::MatrixXd& out) {
+  if (blends.empty()) return;
+  const Eigen::Index numPoints = out.rows() - 2 * static_cast<Eigen::Index>(blends.size());
+  SOMICAGE_ASSERT(numPoints >= 0, "two extra rows per exterior point");
+  for (std::size_t e = 0; e < blends.size(); ++e) {
+    const Eigen::Index proxy = numPoints + 2 * static_cast<Eigen::Index>(e);
+    out.row(blends[e].point) += blends[e].weight * (out.row(proxy) - out.row(proxy + 1));  // S(x) + w (phi - S)(x_in)
+  }
+  out.conservativeResize(numPoints, Eigen::NoChange);
 }
 
 }  // namespace somicage

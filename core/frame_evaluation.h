@@ -9,17 +9,30 @@
 //           The split lets each output touch only the coordinates it needs (S the symmetric terms, A the
 //           antisymmetric ones): tOutputsFromMatrix converts a matrix into them.
 //
-// C (#P by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and the
-// parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
+// C (#P + 2 #E by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and
+// the parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
+//
+// Exterior points (outside the cage, on it, or with unreliable integrals; core/exterior_points.h) add two rows
+// each after the #P point rows: exterior point e (point p, weight w) has its proxy x_in at row P + 2e and the
+// anchor [0 | x_in | 1] at row P + 2e + 1, and its own row is [0 | x | 1]. After every row is evaluated,
+//   out_p += w (out_{P+2e} - out_{P+2e+1})        i.e.  x~ = S(x) + w(d) [phi(x_in) - S(x_in)]
+// and only the #P point rows are returned.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <vector>
 
 namespace somicage {
 
 template <typename Scalar>
 using CoordinateMatrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+// One exterior point: its index p < #P and its weight w(d) in [0, 1] (see above and core/exterior_points.h).
+struct ExteriorBlend {
+  int point = 0;
+  double weight = 0;
+};
 
 // The coordinate matrix C, stored in double or in float (exactly one of the two is non-empty). Float halves the
 // memory and the bytes read per frame at ~1e-7 relative error per entry: the editor's choice; the command line
@@ -27,14 +40,14 @@ using CoordinateMatrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic, E
 struct FrameCoordinates {
   CoordinateMatrix<double> doubles;
   CoordinateMatrix<float> floats;
-  int mainColumns = 0;  // K_main: the remaining columns are the tail
+  int mainColumns = 0;                        // K_main: the remaining columns are the tail
+  std::vector<ExteriorBlend> exteriorBlends;  // #E, by ascending point; their rows follow the #P point rows
 
   bool isFloat() const { return floats.size() > 0 || doubles.size() == 0; }
-  int rows() const { return static_cast<int>(isFloat() ? floats.rows() : doubles.rows()); }
+  int rows() const { return static_cast<int>(isFloat() ? floats.rows() : doubles.rows()); }  // #P + 2 #E
+  int numPoints() const { return rows() - 2 * static_cast<int>(exteriorBlends.size()); }     // #P
   int columns() const { return static_cast<int>(isFloat() ? floats.cols() : doubles.cols()); }
-  std::size_t bytes() const {
-    return isFloat() ? floats.size() * sizeof(float) : doubles.size() * sizeof(double);
-  }
+  std::size_t bytes() const { return isFloat() ? floats.size() * sizeof(float) : doubles.size() * sizeof(double); }
 };
 
 // C in the requested storage (the double matrix is moved, or converted to float).
@@ -51,7 +64,11 @@ struct FrameWeights {
 Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M);
 
 // out (#P by d, resized) from C and W as described above, with OpenMP over fixed blocks of points, so the result
-// does not depend on the thread count (threads = 0: the OpenMP default).
+// does not depend on the thread count (threads = 0: the OpenMP default). Exterior points included.
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out);
+
+// The exterior blend on out = every row of C evaluated (#P + 2 #E by d): adds w (proxy - anchor) to each exterior
+// point's row and keeps the first #P rows.
+void blendExteriorPoints(const std::vector<ExteriorBlend>& blends, Eigen::MatrixXd& out);
 
 }  // namespace somicage

@@ -9,6 +9,7 @@
 
 #include "boundary_conditions.h"
 #include "errors.h"
+#include "exterior_points.h"
 #include "point_blocks.h"
 
 namespace somicage {
@@ -131,31 +132,61 @@ void integrateGreenEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, co
 // Deformer
 // ---------------------------------------------------------------------------------------------------------------
 
-// C = [phi | psi | x | 1] (#P by #V + #F + d + 1); W = [v~ ; s_j n~_j ; (s R)^T ; t^T]:
+// Whether a point's Green coordinates can be used: finite, and reproducing constants (sum_i phi_i = 1).
+bool reliableGreenRow(const GreenCoordinates& coords, int p) {
+  return coords.phi.row(p).allFinite() && coords.psi.row(p).allFinite() &&
+         std::abs(coords.phi.row(p).sum() - 1) <= kUnreliableResidual;
+}
+
+// C = [phi | psi | x | 1] (#P + 2 #E by #V + #F + d + 1); W = [v~ ; s_j n~_j ; (s R)^T ; t^T]:
 // x~ = sum_i phi_i v~_i + sum_j psi_j s_j n~_j inside the cage. Outside it the coordinates reproduce nothing
-// (sum_i phi_i = 0 there), so, as for the Somigliana deformer, such points keep only [x | 1] and follow the
-// cage's best-fit similarity s R x + t.
-FrameCoordinates greenFrameCoordinates(const GreenCoordinates& coords, const Eigen::MatrixXd& points,
-                                       bool floatStorage) {
-  const int main = static_cast<int>(coords.phi.cols() + coords.psi.cols()), d = static_cast<int>(points.cols());
-  CoordinateMatrix<double> C = CoordinateMatrix<double>::Zero(coords.phi.rows(), main + d + 1);
-  for (int p = 0; p < C.rows(); ++p) {
-    if (coords.phi.row(p).sum() >= 0.5) {  // the double layer of the hats sums to the winding number
-      C.row(p).head(main) << coords.phi.row(p), coords.psi.row(p);
-    } else {
-      C.row(p).segment(main, d) = points.row(p);
-      C(p, main + d) = 1;
-    }
+// (sum_i phi_i = 0 there), so, as for the Somigliana deformer, such points (and points on the cage) get the row
+// [0 | x | 1] and the two exterior rows of exterior_points.h: their proxy's coordinates and its anchor.
+FrameCoordinates greenFrameCoordinates(const Cage& cage, const GreenCoordinates& coords, const Eigen::MatrixXd& points,
+                                       const PrecomputeOptions& options, PrecomputeDiagnostics& diagnostics) {
+  const int numPoints = static_cast<int>(points.rows());
+  diagnostics.winding = coords.phi.rowwise().sum();  // the double layer of the hats sums to the winding number
+  diagnostics.regions.resize(static_cast<std::size_t>(numPoints));
+  for (int p = 0; p < numPoints; ++p) {
+    diagnostics.regions[static_cast<std::size_t>(p)] =
+        classifyPoint(diagnostics.winding(p), reliableGreenRow(coords, p));
   }
-  return makeFrameCoordinates(std::move(C), main, floatStorage);
+  ExteriorPlan plan = planExteriorPoints(cage, points, diagnostics.regions, options.threads);
+  const int exterior = static_cast<int>(plan.blends.size());
+  const int main = static_cast<int>(coords.phi.cols() + coords.psi.cols()), columns = main + cage.dim() + 1;
+  CoordinateMatrix<double> C(numPoints + 2 * exterior, columns);
+  auto writeRow = [&](const GreenCoordinates& from, const Eigen::MatrixXd& at, int p, bool useCoordinates, int row) {
+    if (useCoordinates) {
+      C.row(row) << from.phi.row(p), from.psi.row(p), Eigen::RowVectorXd::Zero(columns - main);
+    } else {
+      writeSimilarityRow(at, p, C.row(row).data(), columns);
+    }
+  };
+  for (int p = 0; p < numPoints; ++p)
+    writeRow(coords, points, p, diagnostics.regions[static_cast<std::size_t>(p)] == PointRegion::Inside, p);
+  integrateProxies(cage, plan, [&](const Eigen::MatrixXd& proxies, const std::vector<int>& which) {
+    const GreenCoordinates proxyCoords = computeGreenCoordinates(cage, proxies, options.threads);
+    std::vector<bool> reliable(which.size());
+    for (std::size_t k = 0; k < which.size(); ++k) {
+      const int e = which[k];
+      reliable[k] = reliableGreenRow(proxyCoords, static_cast<int>(k));
+      writeRow(proxyCoords, proxies, static_cast<int>(k), reliable[k], numPoints + 2 * e);
+    }
+    return reliable;
+  });
+  // A proxy that failed everywhere holds [0 | x_in | 1] like its anchor: its point follows S alone.
+  for (int e = 0; e < exterior; ++e) writeRow(coords, plan.proxies, e, false, numPoints + 2 * e + 1);
+  FrameCoordinates frame = makeFrameCoordinates(std::move(C), main, options.floatStorage);
+  frame.exteriorBlends = std::move(plan.blends);
+  return frame;
 }
 
 class GreenDeformer : public CageDeformer {
  public:
   GreenDeformer(const Cage& restCage, const GreenCoordinates& coords, const Eigen::MatrixXd& points,
                 const PrecomputeOptions& options)
-      : CageDeformer(greenFrameCoordinates(coords, points, options.floatStorage), options.threads), rest_(restCage) {
-    diagnostics_.winding = coords.phi.rowwise().sum();  // the double layer of the hats sums to the winding number
+      : CageDeformer(FrameCoordinates{}, options.threads), rest_(restCage) {
+    coordinates_ = greenFrameCoordinates(restCage, coords, points, options, diagnostics_);
   }
 
   Method method() const override { return Method::Green; }

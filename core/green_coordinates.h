@@ -47,7 +47,8 @@ Eigen::VectorXd greenFaceScales(const Cage& restCage, const Eigen::MatrixXd& pos
 
 // The deformer: precomputes the coordinates; every frame is then one product C W (frame_evaluation.h) with
 // C = [phi | psi] (#P by #V + #F) and W = [v~_i ; s_j n~_j] (#V + #F by d). It ignores everything in DeformParams.
-// Points outside the cage (sum_i phi_i = 0) get no special treatment: Green coordinates do not reproduce them.
+// Points outside the cage (sum_i phi_i = 0 there), on it, or with unreliable coordinates follow the exterior rule
+// of exterior_points.h.
 std::unique_ptr<CageDeformer> makeGreenDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
                                                 const PrecomputeOptions& options, const ProgressCallback& progress);
 

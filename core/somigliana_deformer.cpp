@@ -1,9 +1,11 @@
 #include "somigliana_deformer.h"
 
+#include <cmath>
 #include <vector>
 
 #include "boundary_conditions.h"
 #include "errors.h"
+#include "exterior_points.h"
 
 namespace somicage {
 
@@ -44,24 +46,29 @@ void setTColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
 // The column of vertex i's term k in C (term-major; see writeFrameRow).
 inline int vertexColumn(int i, int k, int numVertices) { return k * numVertices + i; }
 
-// Writes a point's row of C in the storage type: the integrals, their per-vertex sums, and [x | 1] for outside
-// points; and records its diagnostics. Rows are independent, so this runs on the integration's worker threads.
+// Writes a point's row of C in the storage type: its integrals and their per-vertex sums where they are
+// reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region and its
+// partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
 template <typename Scalar>
-void writeFrameRow(int p, const double* integrals, double winding, const Eigen::MatrixXd& points, int dim,
-                   int numVertices, CoordinateMatrix<Scalar>& C, PrecomputeDiagnostics& diagnostics) {
-  const int terms = vertexTermCount(dim), main = static_cast<int>(C.cols()) - terms - dim - 1;
-  Scalar* row = C.row(p).data();
+PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::MatrixXd& points, int p,
+                          int numVertices, bool exactIntegrals, Scalar* row, int columns, double& residual) {
+  const int dim = static_cast<int>(points.cols());
+  const int terms = vertexTermCount(dim), main = columns - terms - dim - 1;
   double sums[vertexTermCount(3)] = {0};
   for (int i = 0; i < numVertices; ++i)
     for (int k = 0; k < terms; ++k) sums[k] += integrals[i * terms + k];
-  diagnostics.winding(p) = winding;
-  diagnostics.unityResidual(p) = unityResidualOfSums(sums, dim);
-  std::fill(row, row + C.cols(), Scalar(0));
-  if (winding < 0.5) {
-    for (int a = 0; a < dim; ++a) row[main + terms + a] = static_cast<Scalar>(points(p, a));
-    row[main + terms + dim] = 1;
-    return;
+  residual = unityResidualOfSums(sums, dim);
+  // NaN and infinity survive a sum: one vectorised reduction checks the whole row (7x cheaper than allFinite).
+  const bool finite = std::isfinite(Eigen::Map<const Eigen::ArrayXd>(integrals, main).sum());
+  // The Gauss baseline misses Eq. 9 by up to 1e-1 near the cage (docs/engine.md): only exact integrals are held
+  // to kUnreliableResidual.
+  const bool reliable = finite && (!exactIntegrals || residual <= kUnreliableResidual);
+  const PointRegion region = classifyPoint(winding, reliable);
+  if (region != PointRegion::Inside) {
+    writeSimilarityRow(points, p, row, columns);
+    return region;
   }
+  std::fill(row, row + columns, Scalar(0));
   // Vertex terms term-major (all vertices' D, then all omega_x, ...): each output of a frame then reads one
   // contiguous range (the symmetric part of T only the B terms, the antisymmetric part only the omega terms).
   const int vertexColumns = numVertices * terms;
@@ -70,6 +77,41 @@ void writeFrameRow(int p, const double* integrals, double winding, const Eigen::
       row[vertexColumn(i, k, numVertices)] = static_cast<Scalar>(integrals[i * terms + k]);
   for (int k = vertexColumns; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
   for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
+  return region;
+}
+
+// Fills C (#P + 2 #E rows) in its storage type: the points' rows, then for every exterior point its proxy's row
+// (the proxy's own integrals) and its anchor [0 | x_in | 1] (frame_evaluation.h). Rows go straight into C: no
+// second, double-precision copy of the coordinates; adding the exterior rows reallocates in place.
+template <typename Scalar>
+void fillFrameCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& integration,
+                          const ProgressCallback& progress, int columns, CoordinateMatrix<Scalar>& C,
+                          std::vector<ExteriorBlend>& blends, PrecomputeDiagnostics& diagnostics) {
+  const int numPoints = static_cast<int>(points.rows()), numVertices = cage.numVertices();
+  const bool exact = integration.rule == IntegrationOptions::Rule::ClosedForm;
+  C.resize(numPoints, columns);
+  integrateSomiglianaCoordinates(cage, points, integration, progress, [&](int p, const double* row, double w) {
+    diagnostics.winding(p) = w;
+    diagnostics.regions[static_cast<std::size_t>(p)] =
+        writeFrameRow(row, w, points, p, numVertices, exact, C.row(p).data(), columns, diagnostics.unityResidual(p));
+  });
+  ExteriorPlan plan = planExteriorPoints(cage, points, diagnostics.regions, integration.threads);
+  if (plan.blends.empty()) return;
+  C.conservativeResize(numPoints + 2 * static_cast<Eigen::Index>(plan.blends.size()), columns);
+  integrateProxies(cage, plan, [&](const Eigen::MatrixXd& proxies, const std::vector<int>& which) {
+    std::vector<char> reliable(which.size());  // one per proxy, written from the worker threads
+    integrateSomiglianaCoordinates(cage, proxies, integration, noProgress, [&](int k, const double* row, double w) {
+      double residual;
+      Scalar* proxyRow = C.row(numPoints + 2 * which[static_cast<std::size_t>(k)]).data();
+      reliable[static_cast<std::size_t>(k)] =
+          writeFrameRow(row, w, proxies, k, numVertices, exact, proxyRow, columns, residual) == PointRegion::Inside;
+    });
+    return std::vector<bool>(reliable.begin(), reliable.end());
+  });
+  // A proxy that failed everywhere holds [0 | x_in | 1] like its anchor: its point follows S alone.
+  for (int e = 0; e < static_cast<int>(plan.blends.size()); ++e)
+    writeSimilarityRow(plan.proxies, e, C.row(numPoints + 2 * e + 1).data(), columns);
+  blends = std::move(plan.blends);
 }
 
 class SomiglianaDeformer final : public CageDeformer {
@@ -128,7 +170,7 @@ class SomiglianaDeformer final : public CageDeformer {
     } else {
       setTColumns(basis[0], W.tail, 0);  // sum_i R_i (alpha D_i I) R_i^T = alpha (sum_i D_i) I
     }
-    // Outside points: T = I and b = s R x + t.
+    // Rows [0 | x | 1] (exterior points, exterior_points.h): T = I and b = s R x + t.
     const Eigen::MatrixXd sR = bc.global.scale * bc.global.rotation;
     for (int a = 0; a < d; ++a) W.tail.row(terms + a).tail(d) = sR.col(a).transpose();
     setTColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
@@ -151,21 +193,16 @@ std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const
   const int d = restCage.dim(), numPoints = static_cast<int>(points.rows());
   const int main = restCage.numVertices() * vertexTermCount(d) + restCage.numFaces() * faceTermCount(d);
   const int columns = main + vertexTermCount(d) + d + 1;
-  PrecomputeDiagnostics diagnostics{Eigen::VectorXd(numPoints), Eigen::VectorXd(numPoints)};
+  PrecomputeDiagnostics diagnostics{Eigen::VectorXd(numPoints), Eigen::VectorXd(numPoints),
+                                    std::vector<PointRegion>(static_cast<std::size_t>(numPoints))};
   FrameCoordinates frame;
   frame.mainColumns = main;
-  // Rows go straight into C in its storage type: no second, double-precision copy of the coordinates.
-  if (options.floatStorage) {
-    frame.floats.resize(numPoints, columns);
-    integrateSomiglianaCoordinates(restCage, points, integration, progress, [&](int p, const double* row, double w) {
-      writeFrameRow(p, row, w, points, d, restCage.numVertices(), frame.floats, diagnostics);
-    });
-  } else {
-    frame.doubles.resize(numPoints, columns);
-    integrateSomiglianaCoordinates(restCage, points, integration, progress, [&](int p, const double* row, double w) {
-      writeFrameRow(p, row, w, points, d, restCage.numVertices(), frame.doubles, diagnostics);
-    });
-  }
+  if (options.floatStorage)
+    fillFrameCoordinates(restCage, points, integration, progress, columns, frame.floats, frame.exteriorBlends,
+                         diagnostics);
+  else
+    fillFrameCoordinates(restCage, points, integration, progress, columns, frame.doubles, frame.exteriorBlends,
+                         diagnostics);
   return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads);
 }
 

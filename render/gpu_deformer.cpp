@@ -20,6 +20,7 @@ namespace somicage::render {
 namespace {
 
 constexpr int kNormalGroup = 64;  // local_size_x of face_normals / vertex_normals.comp.glsl
+constexpr int kBlendGroup = 64;   // local_size_x of exterior_blend.comp.glsl
 constexpr int kQueryRing = 4;     // timer queries in flight before timing skips a frame
 
 using Clock = std::chrono::steady_clock;
@@ -58,6 +59,7 @@ struct GpuDeformer::Impl {
   GpuDeformerLayout layout;
   const CageDeformer* deformer = nullptr;
   int numPoints = 0, dim = 0, mainColumns = 0, tailColumns = 0;
+  int numBlends = 0;  // exterior points #E: C has #P + 2 #E rows (core/frame_evaluation.h)
 
   // Row chunks of C, each small enough for one storage block binding (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and
   // starting at an offset the driver accepts (GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT).
@@ -67,9 +69,10 @@ struct GpuDeformer::Impl {
   std::vector<Chunk> chunks;
 
   GlBuffer coordinates, weights, faceNormals, adjacencyOffsets, adjacencyFaces;
+  GlBuffer blends, extraRows;  // the exterior blends (point, weight) and their proxy and anchor rows (2 #E by 3)
   std::vector<float> weightStaging;
   std::map<std::tuple<int, int, int>, GlComputeProgram> kernels;  // (dim, outputs, mainOffset)
-  std::unique_ptr<GlComputeProgram> facePass, vertexPass;
+  std::unique_ptr<GlComputeProgram> facePass, vertexPass, blendPass;
 
   // The triangles the adjacency was built for (compared every frame: cheap next to the frame itself).
   Eigen::MatrixXi adjacencyTriangles;
@@ -250,8 +253,19 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
                       static_cast<GLsizeiptr>(sizeof(float) * static_cast<std::size_t>(slice.size())), slice.data());
     }
   }
+  // ---- the exterior blends, and room for their rows (never a 0-byte buffer) ----
+  struct GpuBlend {
+    GLuint point;
+    float weight;
+  };
+  std::vector<GpuBlend> blends(std::max<std::size_t>(C.exteriorBlends.size(), 1), GpuBlend{0, 0.0f});
+  for (std::size_t e = 0; e < C.exteriorBlends.size(); ++e)
+    blends[e] = {static_cast<GLuint>(C.exteriorBlends[e].point), static_cast<float>(C.exteriorBlends[e].weight)};
+  m.blends.upload(GL_SHADER_STORAGE_BUFFER, blends.data(), sizeof(GpuBlend) * blends.size(), GL_STATIC_DRAW);
+  m.extraRows.upload(GL_SHADER_STORAGE_BUFFER, nullptr, sizeof(float) * 6 * blends.size(), GL_DYNAMIC_COPY);
   throwOnGlError("uploading " + std::to_string(bytes >> 20) + " MiB of coordinates to the GPU");
-  m.numPoints = rows;
+  m.numPoints = C.numPoints();
+  m.numBlends = static_cast<int>(C.exteriorBlends.size());
   m.dim = deformer.dim();
   m.mainColumns = C.mainColumns;
   m.tailColumns = columns - C.mainColumns;
@@ -290,8 +304,10 @@ void GpuDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParam
   kernel.use();
   glUniform1ui(kernel.uniform("uMainColumns"), static_cast<GLuint>(m.mainColumns));
   glUniform1ui(kernel.uniform("uTailColumns"), static_cast<GLuint>(m.tailColumns));
+  glUniform1ui(kernel.uniform("uMeshPoints"), static_cast<GLuint>(m.numPoints));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.weights.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.positions);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.extraRows.id());
   const std::size_t rowBytes = sizeof(float) * static_cast<std::size_t>(m.mainColumns + m.tailColumns);
   for (const Impl::Chunk& chunk : m.chunks) {
     if (rowBytes > 0) {
@@ -304,7 +320,19 @@ void GpuDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParam
     dispatchLinear(ceilDiv(static_cast<std::size_t>(chunk.count), static_cast<std::size_t>(m.layout.groupPoints)));
   }
 
-  // ---- passes 2 and 3: smooth vertex normals ----
+  // ---- pass 2: exterior points, x~ = S(x) + w (phi(x_in) - S(x_in)) ----
+  if (m.numBlends > 0) {
+    if (!m.blendPass) m.blendPass = std::make_unique<GlComputeProgram>("exterior_blend.comp.glsl");
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    m.blendPass->use();
+    glUniform1ui(m.blendPass->uniform("uNumBlends"), static_cast<GLuint>(m.numBlends));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, m.blends.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.extraRows.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.positions);
+    dispatchLinear(ceilDiv(static_cast<std::size_t>(m.numBlends), kBlendGroup));
+  }
+
+  // ---- passes 3 and 4: smooth vertex normals ----
   const Eigen::MatrixXi& triangles = target.triangles();
   m.ensureAdjacency(triangles, m.numPoints);
   if (!m.facePass) m.facePass = std::make_unique<GlComputeProgram>("face_normals.comp.glsl");

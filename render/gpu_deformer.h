@@ -1,5 +1,5 @@
 // The editor's per-frame deformation on the GPU: an OpenGL 4.3 compute shader that evaluates exactly what
-// evaluateFrame() (core/frame_evaluation.h) does on the CPU, for every method, and writes the deformed positions
+// evaluateFrame() (core/frame_evaluation.h) does on the CPU, for every method and with the exterior blend, and writes the deformed positions
 // straight into a MeshRenderer's vertex buffer; two more passes compute its smooth vertex normals there. Per frame
 // only W (K by at most 12 floats) goes up; positions never come back to the CPU (readBack() is for tests).
 // No GL types in this header; create, use and destroy only while the GL context that initOpenGl() loaded is
@@ -39,8 +39,8 @@ class GpuDeformer {
   GpuDeformer(GpuDeformer&&) noexcept;
   GpuDeformer& operator=(GpuDeformer&&) noexcept;
 
-  // Uploads C = deformer.frameCoordinates() (#P by K, converted to float when stored in double), once per
-  // precompute. Keeps a reference to `deformer` for frameWeights(): it must outlive this upload.
+  // Uploads C = deformer.frameCoordinates() (#P + 2 #E by K, converted to float when stored in double) and its
+  // exterior blends, once per precompute. Keeps a reference to `deformer` for frameWeights(): it must outlive this upload.
   void upload(const CageDeformer& deformer);
   bool uploaded() const;
   int numPoints() const;

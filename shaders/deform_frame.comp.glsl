@@ -9,6 +9,8 @@
 //   DIM (2 or 3), OUTPUTS (DIM or DIM*DIM+DIM), MAIN_OFFSET (first output that W_main feeds),
 //   ROW_THREADS (invocations sharing one point: they read its row of C side by side, coalesced, and reduce in
 //   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group).
+// Rows from uMeshPoints on are the exterior points' proxy and anchor rows (core/frame_evaluation.h): they go to
+// the Extra buffer, which shaders/exterior_blend.comp.glsl then folds into the positions.
 // Storage is float throughout (C converted once at upload, W every frame): the error budget is in
 // render/gpu_deformer.h.
 
@@ -22,7 +24,10 @@ layout(std430, binding = 0) readonly buffer Coordinates { float C[]; };
 layout(std430, binding = 1) readonly buffer Weights { float W[]; };
 // The mesh renderer's vertex buffer: #P by 3 floats (z = 0 in 2D).
 layout(std430, binding = 2) writeonly buffer Positions { float positions[]; };
+// The proxy and anchor rows: 2 #E by 3 floats.
+layout(std430, binding = 3) writeonly buffer Extra { float extra[]; };
 
+uniform uint uMeshPoints;  // #P: rows of C from here on are exterior rows
 uniform uint uNumPoints;
 uniform uint uFirstPoint;
 uniform uint uMainColumns;
@@ -94,8 +99,15 @@ void main() {
 #endif
 
   const vec3 x = finish(y);
-  const uint at = 3u * (uFirstPoint + point);
-  positions[at] = x.x;
-  positions[at + 1u] = x.y;
-  positions[at + 2u] = x.z;
+  const uint row = uFirstPoint + point;
+  if (row < uMeshPoints) {
+    positions[3u * row] = x.x;
+    positions[3u * row + 1u] = x.y;
+    positions[3u * row + 2u] = x.z;
+  } else {
+    const uint at = 3u * (row - uMeshPoints);
+    extra[at] = x.x;
+    extra[at + 1u] = x.y;
+    extra[at + 2u] = x.z;
+  }
 }

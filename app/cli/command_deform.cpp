@@ -1,10 +1,9 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same core calls
-// (loadCage, makeDeformer, CageDeformer::deform, saveObj).
+// (loadCage + repairCage, makeDeformer, CageDeformer::deform, saveObj).
 #include <cmath>
 #include <iostream>
 #include <sstream>
 
-#include "cage_validation.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -90,15 +89,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
 
   // Inputs.
-  const Cage cage = loadCage(cagePath);
-  const CageReport report = validateCage(cage);
-  if (!report.valid()) {
-    const std::vector<std::string> problems = describeCageProblems(report);
-    const std::string more =
-        problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more problems)" : "";
-    throw InputError(cagePath, -1, "the cage cannot be used: " + problems.front() + more,
-                     "run 'somicage check --cage " + cagePath + "' for the full report");
-  }
+  const Cage cage = loadUsableCage(cagePath);
   const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
   const PolygonMesh mesh = loadMesh(meshPath);
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
@@ -112,6 +103,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
+  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {
@@ -119,11 +111,11 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
     deformer = makeDeformer(method, cage, points, options, progress.callback());
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
-  const Eigen::VectorXd& winding = deformer->diagnostics().winding;
-  const Eigen::Index outside = (winding.array() < 0.5).count();
-  if (outside > 0 && method != Method::MeanValue) {
-    std::cerr << kCommand << ": warning: " << outside << " of " << points.rows() << " points of " << meshPath
-              << " lie outside the cage; they follow the cage's best-fit similarity (docs/engine.md)\n";
+  const int exterior = deformer->diagnostics().exteriorCount();
+  if (exterior > 0) {
+    std::cerr << kCommand << ": warning: " << exterior << " of " << points.rows() << " points of " << meshPath
+              << " lie outside the cage (or on it); they follow the cage's best-fit similarity, blended smoothly "
+              << "into the deformation inside (docs/engine.md, \"Points outside the cage\")\n";
   }
   const CliClock::time_point deformStart = CliClock::now();
   const Eigen::MatrixXd deformed = deformer->deform(posed, params);
@@ -140,7 +132,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
                      std::to_string(bad) + " of " + std::to_string(deformed.rows()) +
                          " points could not be deformed; the first is vertex " + std::to_string(firstBad) + " at (" +
                          where.str() + ")",
-                     "nothing was written: points on the cage itself are singular, move them off the cage");
+                     "nothing was written; this is a bug (every point gets a finite position, docs/engine.md): "
+                     "please report it with the input files");
   }
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z

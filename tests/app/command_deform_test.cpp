@@ -138,6 +138,43 @@ TEST(CliDeform, SharedModelsDeform) {
             1e-8 * cageDiameter(loadCage(quads).vertices));
 }
 
+// A cage with reversed faces, or inside out, is repaired with a note on stderr and gives exactly the clean cage's
+// result; a self-intersecting cage deforms with a warning.
+TEST(CliDeform, RepairedCageGivesTheCleanCagesResult) {
+  ScratchDir dir;
+  const std::string clean = dataFile("cube_cage.obj"), flipped = dataFile("cube_cage_flipped_faces.obj");
+  const std::string mesh = dataFile("pyramid_mesh.obj");
+  Cage cube = loadCage(clean);
+  Eigen::MatrixXd bent = cube.vertices;
+  bent.col(0) *= 1.3;
+  bent(7, 2) += 0.4;
+  const std::string posed = dir.file("posed.obj");
+  saveObj(posed, bent, cageTopology(cube));
+  cube.faces = cube.faces.rowwise().reverse().eval();
+  const std::string insideOut = dir.file("inside_out.obj");
+  saveObj(insideOut, cube.vertices, cageTopology(cube));
+
+  const RunResult expected = deform(clean, posed, mesh, dir.file("clean.obj"), {"--variant", "local"});
+  ASSERT_EQ(expected.exitCode, 0) << expected;
+  EXPECT_EQ(expected.err.find("note:"), std::string::npos) << expected;
+  const std::pair<std::string, std::string> cases[] = {
+      {flipped, "flipped 3 faces (1, 4, 7) to match their neighbours' orientation"},
+      {insideOut, "the cage's normals pointed inward (signed volume -8): flipped all 12 faces"}};
+  for (const auto& [cage, fix] : cases) {
+    SCOPED_TRACE(cage);
+    const RunResult r = deform(cage, posed, mesh, dir.file("repaired.obj"), {"--variant", "local"});
+    ASSERT_EQ(r.exitCode, 0) << r;
+    EXPECT_EQ(r.err.rfind("somicage: note: " + cage + ": " + fix + "\n", 0), 0u) << "the first line: " << r;
+    EXPECT_EQ(readFile(dir.file("repaired.obj")), readFile(dir.file("clean.obj")));
+  }
+
+  const std::string pierced = dataFile("cube_pierced_by_spike.obj");
+  const RunResult r = deform(pierced, pierced, mesh, dir.file("pierced.obj"), {});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_EQ(r.err.rfind("somicage: warning: " + pierced + ": the cage intersects itself: 3 pairs of faces meet", 0), 0u)
+      << r;
+}
+
 TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
   ScratchDir dir;
   const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj"), out = dir.file("out.obj");

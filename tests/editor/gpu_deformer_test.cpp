@@ -191,6 +191,35 @@ TEST_P(GpuDeformerTest, MatchesCpu) {
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, GpuDeformerTest, ::testing::ValuesIn(allCases()), caseName);
 
+// Points outside the cage, in the blend band and beyond, and exactly on it (core/exterior_points.h): the GPU's
+// second pass (shaders/exterior_blend.comp.glsl) gives what the CPU's blend gives, within the same tolerance.
+TEST(GpuDeformer, ExteriorPointsMatchCpu) {
+  REQUIRE_GPU();
+  for (int dim : {3, 2}) {
+    TestScene scene = dim == 3 ? scene3d() : scene2d();
+    const Eigen::Index n = scene.points.rows();
+    for (Eigen::Index p = 1; p < n; p += 9) scene.points.row(p) *= (p % 2 == 0 ? 2.8 : 5.0);  // band and beyond
+    scene.points.row(n - 1) = scene.cage.vertices.row(0);                                     // on the cage
+    scene.points.row(n - 2) = 0.5 * (scene.cage.vertices.row(0) + scene.cage.vertices.row(1));
+    for (Method method : {Method::Somigliana, Method::Green}) {
+      for (bool floatStorage : {false, true}) {
+        PrecomputeOptions options;
+        options.floatStorage = floatStorage;
+        const auto deformer = makeDeformer(method, scene.cage, scene.points, options);
+        ASSERT_GE(deformer->frameCoordinates().exteriorBlends.size(), static_cast<std::size_t>(n / 9));
+        for (int rowThreads : {1, 32}) {
+          render::GpuDeformerLayout layout;
+          layout.rowThreads = rowThreads;
+          const Comparison r = compare(*deformer, scene.posed, {0.5, 0.3, 1.0, true}, scene.triangles, layout);
+          EXPECT_LE(r.positionError, kPositionTolerance)
+              << dim << "D " << methodName(method) << (floatStorage ? ", float C, " : ", double C, ") << rowThreads
+              << " invocations per point, worst point " << r.worstPoint;
+        }
+      }
+    }
+  }
+}
+
 // Several frames in a row reuse the uploaded C and the compiled kernels; switching the variant (global <-> local
 // changes W's shape and the kernel) and the pose between frames must not leave stale state behind.
 TEST(GpuDeformer, FramesInARowAndRestPose) {
