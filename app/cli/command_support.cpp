@@ -3,8 +3,15 @@
 #include <omp.h>
 
 #include <cstdio>
+#include <iostream>
+
+#include "cage_repair.h"
+#include "cage_validation.h"
+#include "memory_estimate.h"
 
 namespace somicage {
+
+constexpr std::size_t kBigPrecomputeBytes = 1000000000;  // 1 GB
 
 double secondsSince(CliClock::time_point start) {
   return std::chrono::duration<double>(CliClock::now() - start).count();
@@ -24,6 +31,30 @@ std::string formatNumber(double value, int digits) {
 
 void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
+}
+
+Cage loadUsableCage(const std::string& path) {
+  CageRepair repair = repairCage(loadCage(path));
+  for (const std::string& fix : repair.fixes) std::cerr << "somicage: note: " << path << ": " << fix << "\n";
+  const CageReport report = validateCage(repair.cage);
+  for (const std::string& warning : describeCageWarnings(report))
+    std::cerr << "somicage: warning: " << path << ": " << warning << "\n";
+  requireValidCage(report, path);
+  return std::move(repair.cage);
+}
+
+void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                             const PrecomputeOptions& options, const std::string& meshPath) {
+  const MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(),
+                                                           points, options.floatStorage, options.threads);
+  const std::optional<std::size_t> available = availableMemoryBytes();
+  requireMemory(estimate, available, meshPath, memoryHint(false));  // neither command offers another storage
+  // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
+  const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
+  if (big)
+    std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
+              << formatBytes(estimate.total()) << " in all ("
+              << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
 }
 
 Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim) { return mesh.vertices.leftCols(dim); }

@@ -5,6 +5,7 @@
 #include <new>
 
 #include "errors.h"
+#include "memory_estimate.h"
 
 namespace somicage::editor {
 
@@ -16,6 +17,18 @@ const char* displayName(Method m) {
     case Method::MeanValue: return "MVC";
   }
   return "?";
+}
+
+// Refuses a request whose deformers would not fit in the free memory, before any of them is built.
+void requireMemoryFor(const PrecomputeRequest& request) {
+  const Scene& scene = *request.scene;
+  MemoryEstimate estimate;
+  for (Method m : request.methods)
+    estimate += estimatePrecomputeMemory(m, scene.dim(), scene.restCage.numVertices(), scene.restCage.numFaces(),
+                                         static_cast<std::size_t>(scene.meshVertices.rows()),
+                                         request.options.floatStorage, request.options.threads);
+  requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
+                memoryHint(!request.options.floatStorage));
 }
 }  // namespace
 
@@ -74,6 +87,7 @@ void PrecomputeWorker::run(PrecomputeRequest request, std::uint64_t id) {
       request.scene = std::make_shared<const Scene>(request.loadScene());
     }
     out.scene = request.scene;
+    requireMemoryFor(request);
     const std::size_t n = request.methods.size();
     for (std::size_t k = 0; k < n; ++k) {
       if (cancel_) throw Cancelled();

@@ -1,5 +1,6 @@
 // Runs scene loading and makeDeformer() on a worker thread, with progress and cancellation, so the UI stays
-// responsive and keeps showing the old scene until the new one is ready. No GL.
+// responsive and keeps showing the old scene until the new one is ready. A request whose deformers would not fit in
+// the free memory fails before any precompute, with the estimate in its error (core/memory_estimate.h). No GL.
 #pragma once
 
 #include <atomic>

@@ -1,0 +1,84 @@
+// The memory check of somicage deform and bench, run as a process with SOMICAGE_MEMORY_LIMIT_BYTES standing in for
+// the free memory: a precompute that would not fit is refused (exit 2, one line naming the mesh, the sizes and what
+// to do, nothing written); a big one announces its estimate first; a small one keeps its single summary line.
+#include <cstdlib>
+
+#include "cli_test_support.h"
+
+namespace somicage {
+namespace {
+
+using namespace somicage::test;
+
+// SOMICAGE_MEMORY_LIMIT_BYTES for the processes started in a scope (runSomicage passes the environment on).
+class MemoryLimit {
+ public:
+  explicit MemoryLimit(const std::string& bytes) { ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", bytes.c_str(), 1); }
+  ~MemoryLimit() { ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES"); }
+};
+
+std::vector<std::string> deformArgs(const std::string& out) {
+  return {"deform",
+          "--cage",
+          dataFile("cube_cage.obj"),
+          "--posed",
+          dataFile("cube_cage.obj"),
+          "--mesh",
+          dataFile("pyramid_mesh.obj"),
+          "--out",
+          out};
+}
+
+std::vector<std::string> benchArgs() {
+  return {"bench",    "--cage", dataFile("cube_cage.obj"), "--mesh", dataFile("pyramid_mesh.obj"), "--frames", "1",
+          "--repeat", "1",      "--baseline-points",       "0"};
+}
+
+// The pyramid's 5 points in the cube cage need about 8 kB (double, somigliana) and 5 kB (float, bench).
+TEST(CliMemory, RefusesAPrecomputeThatDoesNotFit) {
+  ScratchDir dir;
+  const MemoryLimit limit("1000");
+  for (const std::vector<std::string>& args : {deformArgs(dir.file("out.obj")), benchArgs()}) {
+    SCOPED_TRACE(args[0]);
+    const RunResult r = runSomicage(args);
+    EXPECT_EQ(r.exitCode, 2) << r;
+    EXPECT_TRUE(r.out.empty()) << r;
+    EXPECT_EQ(r.errLines(), 1) << r;
+    for (const char* part : {"pyramid_mesh.obj: the coordinates of 5 points need", "but only 1 kB are free",
+                             "decimate the mesh", "SOMICAGE_MEMORY_LIMIT_BYTES"})
+      EXPECT_NE(r.err.find(part), std::string::npos) << part << "\n" << r;
+  }
+  EXPECT_FALSE(fs::exists(dir.file("out.obj"))) << "nothing may be written when the precompute is refused";
+}
+
+TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
+  ScratchDir dir;
+  const MemoryLimit limit("50000");  // the ~8 kB needed fit in 85% of it, and take more than 10%
+  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  EXPECT_EQ(r.exitCode, 0) << r;
+  // 5 points by 142 columns (8 vertices, 12 faces) in double; the rest depends on the thread count.
+  EXPECT_NE(r.err.find("somicage deform: estimated memory: 6 kB of coordinates, "), std::string::npos) << r;
+  EXPECT_NE(r.err.find(" in all (50 kB free)\n"), std::string::npos) << r;
+  EXPECT_LT(r.err.find("estimated memory"), r.err.find("precompute")) << "the estimate comes first: " << r;
+  EXPECT_TRUE(fs::exists(dir.file("out.obj")));
+}
+
+TEST(CliMemory, ASmallPrecomputeKeepsItsSingleSummaryLine) {
+  ScratchDir dir;
+  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  EXPECT_EQ(r.exitCode, 0) << r;
+  EXPECT_EQ(r.errLines(), 1) << r;
+  EXPECT_EQ(r.err.find("estimated memory"), std::string::npos) << r;
+}
+
+TEST(CliMemory, AMalformedLimitIsABadInput) {
+  ScratchDir dir;
+  const MemoryLimit limit("8 GB");
+  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  EXPECT_EQ(r.exitCode, 2) << r;
+  EXPECT_EQ(r.errLines(), 1) << r;
+  EXPECT_NE(r.err.find("SOMICAGE_MEMORY_LIMIT_BYTES: '8 GB' is not a whole number of bytes"), std::string::npos) << r;
+}
+
+}  // namespace
+}  // namespace somicage

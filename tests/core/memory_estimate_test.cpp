@@ -1,0 +1,160 @@
+// Memory estimates before a precompute: the coordinate bytes equal what each deformer stores (exactly, every
+// method, 2D and 3D, float and double, points inside and outside the cage), and the refusal when the estimate
+// exceeds the free memory (made deterministic with SOMICAGE_MEMORY_LIMIT_BYTES).
+#include "memory_estimate.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "errors.h"
+#include "test_shapes.h"
+
+namespace somicage {
+namespace {
+
+// Sets an environment variable for the scope of a test and restores the previous state.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::string& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old, hadOld_ = true;
+    ::setenv(name, value.c_str(), 1);
+  }
+  ~ScopedEnv() {
+    if (hadOld_)
+      ::setenv(name_, old_.c_str(), 1);
+    else
+      ::unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::string old_;
+  bool hadOld_ = false;
+};
+
+// Runs check on every (method, dimension, storage) over the L cage, with 57 points drawn from [lo, hi]^d.
+template <typename Check>
+void forEachDeformer(double lo, double hi, Check check) {
+  const Cage cages[] = {test::makeExtrudedL(), makePolygonCage(test::lLoop())};
+  for (const Cage& cage : cages) {
+    const Eigen::MatrixXd points = test::randomBoxPoints(57, cage.dim(), lo, hi, 7);
+    for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue}) {
+      for (bool floatStorage : {false, true}) {
+        PrecomputeOptions options;
+        options.floatStorage = floatStorage;
+        options.threads = 1;
+        const std::unique_ptr<CageDeformer> deformer = makeDeformer(method, cage, points, options);
+        const std::size_t estimate = estimateCoordinateBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(),
+                                                             points.rows(), floatStorage);
+        check(*deformer, estimate,
+              methodName(method) + " " + std::to_string(cage.dim()) + "D " + (floatStorage ? "float" : "double"));
+      }
+    }
+  }
+}
+
+TEST(MemoryEstimate, CoordinateBytesEqualWhatEachDeformerStoresForPointsInside) {
+  // [0.1, 0.9]^d lies inside the L (which spans [0, 2]^2, and z in [0, 1]): one row of C per point.
+  forEachDeformer(0.1, 0.9, [](const CageDeformer& deformer, std::size_t estimate, const std::string& name) {
+    EXPECT_EQ(estimate, deformer.frameCoordinates().bytes()) << name;
+  });
+}
+
+TEST(MemoryEstimate, PointsOutsideTheCageOnlyAddWholeRows) {
+  // Points from -0.5 to 2.5: some outside. The estimate is exact per point row; rows a deformer adds for its
+  // exterior points (frame_evaluation.h) come on top, so the estimate is then a lower bound by those rows.
+  forEachDeformer(-0.5, 2.5, [](const CageDeformer& deformer, std::size_t estimate, const std::string& name) {
+    const FrameCoordinates& C = deformer.frameCoordinates();
+    const std::size_t rowBytes = estimate / static_cast<std::size_t>(deformer.numPoints());
+    EXPECT_EQ(rowBytes * static_cast<std::size_t>(deformer.numPoints()), estimate) << name;
+    EXPECT_EQ(C.bytes(), rowBytes * static_cast<std::size_t>(C.rows())) << name;
+    EXPECT_LE(estimate, C.bytes()) << name;
+  });
+}
+
+TEST(MemoryEstimate, TheWholeEstimateAddsTheWorkingMemoryAndTheOutput) {
+  const MemoryEstimate e = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, 1000, true, 1);
+  EXPECT_EQ(e.coordinates, estimateCoordinateBytes(Method::Somigliana, 3, 49, 94, 1000, true));
+  EXPECT_EQ(e.output, 2 * 1000 * 3 * sizeof(double));  // the frame and the kernel's row-major buffer
+  EXPECT_EQ(e.total(), e.coordinates + e.working + e.output);
+}
+
+TEST(MemoryEstimate, DoubleCopiesBeforeFloatStorageAreCounted) {
+  // Green and mean value coordinates are computed in double and converted: float storage does not halve the peak.
+  const std::size_t P = 1000000;
+  for (Method method : {Method::Green, Method::MeanValue}) {
+    const MemoryEstimate f = estimatePrecomputeMemory(method, 3, 49, 94, P, true, 2);
+    EXPECT_GE(f.working, 2 * f.coordinates) << methodName(method);
+  }
+  // Somigliana writes rows straight into C: its working memory is the diagnostics and the row buffers only.
+  const MemoryEstimate s = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, P, true, 2);
+  EXPECT_EQ(s.working, 2 * P * sizeof(double) + 2 * (49 * 10 + 94 * 4) * sizeof(double));
+  EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 4) * sizeof(float));
+}
+
+TEST(MemoryEstimate, SeveralDeformersAddTheirCoordinatesNotTheirWorkingMemory) {
+  MemoryEstimate sum = estimatePrecomputeMemory(Method::Somigliana, 3, 20, 36, 1000, true, 1);
+  const MemoryEstimate green = estimatePrecomputeMemory(Method::Green, 3, 20, 36, 1000, true, 1);
+  const std::size_t coordinates = sum.coordinates + green.coordinates, working = std::max(sum.working, green.working);
+  sum += green;
+  EXPECT_EQ(sum.coordinates, coordinates);
+  EXPECT_EQ(sum.working, working);  // built one after the other
+}
+
+TEST(MemoryEstimate, RefusesWithTheSizesAndAHintWhenItDoesNotFit) {
+  const MemoryEstimate e = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, 12000000, false, 2);
+  ASSERT_GT(e.total(), 40000000000u);  // about 86 GB in double
+  try {
+    requireMemory(e, std::size_t(22900000000), "mesh.obj", memoryHint(true));
+    FAIL() << "no refusal";
+  } catch (const InputError& error) {
+    const std::string message = error.what();
+    EXPECT_EQ(error.source(), "mesh.obj");
+    EXPECT_NE(message.find("12,000,000 points need"), std::string::npos) << message;
+    EXPECT_NE(message.find("but only 22.9 GB are free"), std::string::npos) << message;
+    EXPECT_NE(message.find("decimate the mesh"), std::string::npos) << message;
+    EXPECT_NE(message.find("store the coordinates in float"), std::string::npos) << message;
+  }
+  // The safety margin: 85% of the free memory may be used, not more.
+  const double limit = e.total() / kMemorySafetyFraction;
+  EXPECT_NO_THROW(requireMemory(e, static_cast<std::size_t>(limit * 1.001), "mesh.obj", ""));
+  EXPECT_THROW(requireMemory(e, static_cast<std::size_t>(limit * 0.999), "mesh.obj", ""), InputError);
+  EXPECT_NO_THROW(requireMemory(e, std::nullopt, "mesh.obj", ""));  // unknown: no refusal
+}
+
+TEST(MemoryEstimate, TheEnvironmentOverridesTheFreeMemory) {
+  {
+    ScopedEnv limit(kMemoryLimitVariable, "123456789");
+    EXPECT_EQ(availableMemoryBytes(), std::optional<std::size_t>(123456789));
+  }
+  for (const char* bad : {"", "12 GB", "-5", "1e9", "99999999999999999999999"}) {
+    ScopedEnv limit(kMemoryLimitVariable, bad);
+    EXPECT_THROW(availableMemoryBytes(), InputError) << "'" << bad << "'";
+  }
+}
+
+TEST(MemoryEstimate, FreeMemoryOfThisMachineIsKnownOnLinux) {
+  if (std::getenv(kMemoryLimitVariable)) GTEST_SKIP() << kMemoryLimitVariable << " is set";
+#ifdef __linux__
+  const std::optional<std::size_t> free = availableMemoryBytes();
+  ASSERT_TRUE(free.has_value());
+  EXPECT_GT(*free, std::size_t(1) << 24);  // a test machine has more than 16 MiB free
+#else
+  GTEST_SKIP() << "not Linux";
+#endif
+}
+
+TEST(MemoryEstimate, Formatting) {
+  EXPECT_EQ(formatCount(0), "0");
+  EXPECT_EQ(formatCount(999), "999");
+  EXPECT_EQ(formatCount(1000), "1,000");
+  EXPECT_EQ(formatCount(12000000), "12,000,000");
+  EXPECT_EQ(formatBytes(137000000), "137 MB");
+  EXPECT_EQ(formatBytes(41230000000), "41.2 GB");
+  EXPECT_EQ(formatBytes(512), "512 bytes");
+}
+
+}  // namespace
+}  // namespace somicage
