@@ -146,6 +146,7 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     }
     ++state.poseGeneration;
     state.statusMessage = "loaded " + state.scene->name;
+    for (const std::string& notice : state.scene->notices) state.statusMessage += "; " + notice;
     if (state.pendingRecent && state.pendingRecent->mesh == state.scene->meshPath &&
         state.pendingRecent->cage == state.scene->cagePath) {
       if (!posedLoaded) state.pendingRecent->posed.clear();
@@ -336,6 +337,15 @@ void applySession(AppState& state, const Session& s) {
     state.pendingRecent.reset();  // the session is the recent entry, not its files
   }
 }
+
+void acceptRestoreOffer(AppState& state) {
+  if (!state.restoreOffer) return;
+  applySession(state, *state.restoreOffer);
+  state.statusMessage = "restored the session from " + state.restoreOfferTime;
+  state.restoreOffer.reset();
+}
+
+void discardRestoreOffer(AppState& state) { state.restoreOffer.reset(); }
 
 void savePosedCage(AppState& state, const std::string& path) {
   if (!state.scene) return;

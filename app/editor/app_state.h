@@ -104,6 +104,10 @@ struct AppState {
   RecentFiles recent;
   std::string recentPath;  // where `recent` is saved after each change; "" keeps it in memory (tests, --screenshot)
 
+  // ---- crash recovery (autosave.h) ----
+  std::optional<Session> restoreOffer;  // a crashed run's session: the Restore / Discard modal asks about it
+  std::string restoreOfferTime;         // when it was saved, "2026-11-23 19:40"
+
   // ---- status and messages ----
   Stats stats;
   std::vector<std::string> errors;  // shown one at a time in a modal
@@ -188,6 +192,10 @@ void loadPosedCage(AppState& state, const std::string& path);
 void exportDeformedMesh(AppState& state, const std::string& path);
 void saveSessionFile(AppState& state, const std::string& path);
 void loadSessionFile(AppState& state, const std::string& path);
+
+// Crash recovery: applies state.restoreOffer (the Restore button, --restore-autosave) or drops it (Discard).
+void acceptRestoreOffer(AppState& state);
+void discardRestoreOffer(AppState& state);
 
 // Opens files dropped on the window (see planDrop in drop.h): mesh + cage (+ posed cage) load on the worker like
 // the Open panel, one posed cage poses the current scene, a .json loads a session; anything else puts what to drop

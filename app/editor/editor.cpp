@@ -10,10 +10,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app_state.h"
+#include "autosave.h"
 #include "editor_options.h"
 #include "editor_renderer.h"
 #include "errors.h"
@@ -120,6 +122,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawPathDialog(state);
   }
   drawErrorModal(state);
+  drawRestoreModal(state);
   handleInput(state, views);
 
   updateDeformation(state);
@@ -144,6 +147,17 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   glfwSwapBuffers(window);
   updateTitle(window, state, title);
+}
+
+// Writes the session when the interval has passed and it changed; not while a scene loads (the pose would not match
+// the files) or while a crashed session waits for Restore / Discard (it would be overwritten).
+void autosaveTick(Autosave& autosave, AppState& state) {
+  if (!state.scene || state.loadingScene || state.restoreOffer) return;
+  try {
+    autosave.tick(makeSession(state), glfwGetTime());
+  } catch (const std::exception& e) {
+    state.statusMessage = std::string("autosave failed: ") + e.what();
+  }
 }
 
 // Waits until the worker has delivered every deformer the views need (or failed).
@@ -226,7 +240,28 @@ int runWindow(const EditorOptions& options) {
     // Events are polled only inside this block (frame()), so the pointer never outlives `state`.
     glfwSetWindowUserPointer(window, &state);
     glfwSetDropCallback(window, dropCallback);
-    if (!options.sessionPath.empty()) {
+    // Crash safety (autosave.h): interactive runs autosave and offer a crashed run's session; a --screenshot run
+    // only reads one when asked to restore it, and never writes the user's files.
+    std::optional<Autosave> autosave;
+    const AutosavePaths autosaveFiles = autosavePaths(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+    AutosaveLeftover leftover;
+    if (!headless) {
+      autosave.emplace(autosaveFiles);
+      leftover = autosave->begin();
+    } else if (options.restoreAutosave) {
+      leftover = findAutosaveLeftover(autosaveFiles);
+    }
+    if (!leftover.error.empty()) state.errors.push_back(leftover.error);
+    if (leftover.otherEditorRunning)
+      state.statusMessage = "another SomiCage editor is running: this one does not autosave";
+    state.restoreOffer = leftover.session;
+    state.restoreOfferTime = leftover.savedAt;
+    if (options.restoreAutosave && !state.restoreOffer)
+      std::fprintf(stderr, "somicage: --restore-autosave: no session of a crashed run to restore\n");
+
+    if (options.restoreAutosave && state.restoreOffer) {
+      acceptRestoreOffer(state);
+    } else if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
     } else if (!options.meshPath.empty()) {
       requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
@@ -257,12 +292,14 @@ int runWindow(const EditorOptions& options) {
       auto last = std::chrono::steady_clock::now();
       while (!glfwWindowShouldClose(window) && !state.quitRequested) {
         frame(window, state, renderer, title);
+        if (autosave) autosaveTick(*autosave, state);
         const auto now = std::chrono::steady_clock::now();
         const double dt = std::chrono::duration<double>(now - last).count();
         last = now;
         if (dt > 0) state.stats.fps = state.stats.fps > 0 ? 0.9 * state.stats.fps + 0.1 / dt : 1.0 / dt;
       }
       state.worker.cancel();
+      if (autosave) autosave->finish();  // a clean exit: nothing to restore next time
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());

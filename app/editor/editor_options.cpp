@@ -87,6 +87,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.height = h;
     } else if (a == "--hide-ui") {
       o.hideUi = true;
+    } else if (a == "--restore-autosave") {
+      o.restoreAutosave = true;
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -141,6 +143,7 @@ std::string editorUsage() {
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n";
 }

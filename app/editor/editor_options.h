@@ -26,6 +26,7 @@ struct EditorOptions {
   bool flatShading = false;                  // --flat: faceted shading
   bool hideUi = false;                        // --hide-ui: only the viewports (for clean screenshots)
   std::optional<DeformBackend> backend;       // --backend cpu|gpu; default: GPU on a hardware GPU, else CPU
+  bool restoreAutosave = false;               // --restore-autosave: restore a crashed session without asking
   bool help = false;                          // -h / --help
 };
 

@@ -199,7 +199,7 @@ void drawControlPanel(AppState& state) {
     p.blend = 1.0;
   }
   float blend = static_cast<float>(p.blend);
-  if (ImGui::SliderFloat("blend", &blend, 0.0f, 1.0f, "%.2f")) p.blend = blend;
+  if (ImGui::SliderFloat("blend", &blend, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.blend = blend;
   undoOnActivate(state, "blend");
 
   bool infinite = std::isinf(p.nu);
@@ -209,13 +209,14 @@ void drawControlPanel(AppState& state) {
   }
   if (!infinite) {
     float nu = static_cast<float>(p.nu);
-    if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f")) p.nu = nu;
+    // Typed values (Ctrl+click) are clamped too: nu in (-1, 0.5); +-infinity only through the checkbox.
+    if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) p.nu = nu;
     undoOnActivate(state, "nu");
   } else {
     ImGui::TextDisabled("nu = inf (Green-like limit)");
   }
   float gamma = static_cast<float>(p.gamma);
-  if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f")) p.gamma = gamma;
+  if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.gamma = gamma;
   undoOnActivate(state, "gamma");
   if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) {
     DeformParams before = state.params;
@@ -390,6 +391,27 @@ void drawPathDialog(AppState& state) {
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
+}
+
+void drawRestoreModal(AppState& state) {
+  if (!state.restoreOffer || !state.errors.empty()) return;  // one modal at a time: the errors first
+  const char* title = "Restore session";
+  if (!ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  ImGui::SetNextWindowSize(ImVec2(480, 0), ImGuiCond_Appearing);
+  if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::TextWrapped("SomiCage did not exit cleanly last time. Restore the session from %s?",
+                       state.restoreOfferTime.c_str());
+    if (ImGui::Button("Restore") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
+      acceptRestoreOffer(state);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Discard") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+      discardRestoreOffer(state);
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
 }
 
 void drawErrorModal(AppState& state) {

@@ -21,5 +21,7 @@ void drawStatusBar(AppState& state);
 void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views);
 void drawPathDialog(AppState& state);
 void drawErrorModal(AppState& state);
+// "Restore the session from <time>?" Restore / Discard, while state.restoreOffer holds a crashed run's session.
+void drawRestoreModal(AppState& state);
 
 }  // namespace somicage::editor

@@ -1,7 +1,10 @@
 // Demo scenes, the precompute worker (progress, cancel, errors) and the AppState deformation loop.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <cstdlib>
+#include <thread>
 
 #include "app_state.h"
 #include "precompute_worker.h"
@@ -121,4 +124,110 @@ TEST(EditorAppState, SessionOfTheDemoRoundTripsThroughTheState) {
   EXPECT_EQ(s.demoDim, 2);
   EXPECT_EQ(s.pose, state.pose);
   EXPECT_EQ(s.params.gamma, 1.5);
+}
+
+// ---- a request that fails or is cancelled leaves the current scene and its deformers as they were ----
+
+namespace {
+
+// The 3D demo with Somigliana and Green deformers installed.
+void loadDemo(AppState& state) {
+  state.compare = true;
+  state.compareMethods = {Method::Somigliana, Method::Green};
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  installOutcome(state, std::move(*out));
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_EQ(state.deformers.size(), 2u);
+}
+
+// What must survive: the scene, its deformers (the same objects), the pose, and a working deformation.
+void expectSceneKept(AppState& state, const std::shared_ptr<const Scene>& scene, const DeformerSet& deformers,
+                     const Eigen::MatrixXd& pose) {
+  EXPECT_EQ(state.scene, scene);
+  EXPECT_EQ(state.deformers, deformers);
+  EXPECT_EQ(state.pose, pose);
+  EXPECT_FALSE(state.loadingScene);
+  state.deformDirty = true;
+  EXPECT_TRUE(updateDeformation(state));
+  EXPECT_GT((displayedPoints(state, Method::Somigliana) - scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
+}
+
+// A bent pose, so that a kept deformation is told apart from the rest mesh.
+void bend(AppState& state) {
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i)
+    if (pose(i, 0) > 2.0) pose(i, 1) += 0.5;
+  setPose(state, pose);
+}
+
+}  // namespace
+
+TEST(EditorWorker, AFailedLoadKeepsTheCurrentScene) {
+  AppState state;
+  loadDemo(state);
+  bend(state);
+  const auto scene = state.scene;
+  const DeformerSet deformers = state.deformers;
+  const Eigen::MatrixXd pose = state.pose;
+  requestSceneFiles(state, "/nonexistent/mesh.obj", "/nonexistent/cage.obj");
+  EXPECT_TRUE(state.loadingScene);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  installOutcome(state, std::move(*out));
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors.front().find("/nonexistent/"), std::string::npos) << state.errors.front();  // names the file
+  expectSceneKept(state, scene, deformers, pose);
+}
+
+TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
+  AppState state;
+  loadDemo(state);
+  bend(state);
+  const auto scene = state.scene;
+  const DeformerSet deformers = state.deformers;
+  const Eigen::MatrixXd pose = state.pose;
+  ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "10000", 1);  // 10 kB: far less than the 2D demo needs
+  requestDemo(state, 2);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->deformers.empty());
+  installOutcome(state, std::move(*out));
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors.front().find("points need"), std::string::npos) << state.errors.front();
+  EXPECT_NE(state.errors.front().find("but only 10 kB are free"), std::string::npos) << state.errors.front();
+  expectSceneKept(state, scene, deformers, pose);
+}
+
+TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
+  AppState state;
+  loadDemo(state);
+  bend(state);
+  const auto scene = state.scene;
+  const DeformerSet deformers = state.deformers;
+  const Eigen::MatrixXd pose = state.pose;
+  // A loader that waits for the cancel, so that it lands before any precompute (deterministically).
+  PrecomputeRequest request;
+  PrecomputeWorker& worker = state.worker;
+  std::atomic<bool> loading{false}, cancelled{false};
+  request.loadScene = [&]() {
+    loading = true;
+    while (!cancelled) std::this_thread::yield();
+    return makeDemoScene(2);
+  };
+  request.methods = {Method::Somigliana};
+  state.loadingScene = true;
+  worker.start(std::move(request));
+  while (!loading) std::this_thread::yield();
+  worker.cancel();
+  cancelled = true;
+  std::optional<PrecomputeOutcome> out = worker.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->cancelled);
+  installOutcome(state, std::move(*out));
+  EXPECT_TRUE(state.errors.empty());
+  EXPECT_EQ(state.statusMessage, "precomputation cancelled");
+  expectSceneKept(state, scene, deformers, pose);
 }

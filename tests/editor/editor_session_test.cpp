@@ -101,3 +101,55 @@ TEST(EditorJson, StringsWithEscapesRoundTrip) {
   EXPECT_EQ(w.find("s")->asString(), v.find("s")->asString());
   EXPECT_EQ(parseJson("\"\\u00e9\"", "t").asString(), "\xc3\xa9");
 }
+
+// Found by tests/fuzz/fuzz_session_loader (inputs in tests/fuzz/corpus/session/regress_*.json): a huge or NaN
+// demoDim was cast to int (undefined behaviour), and strtod let nan, inf, 1e999 and hexadecimal through as numbers.
+TEST(EditorSession, NonFiniteNumbersAreRejectedWithTheirField) {
+  const std::string good = sessionToJson(sample());
+  const auto rejects = [&](const std::string& from, const std::string& to, const std::string& expected) {
+    std::string text = good;
+    ASSERT_NE(text.find(from), std::string::npos) << from;
+    text.replace(text.find(from), from.size(), to);
+    try {
+      sessionFromJson(text, "s.json");
+      ADD_FAILURE() << "accepted " << to;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "s.json");
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  };
+  rejects("\"demoDim\": 3", "\"demoDim\": 1e300", "\"demoDim\" must be 2 or 3");
+  rejects("\"demoDim\": 3", "\"demoDim\": -nan", "malformed number");
+  rejects("\"demoDim\": 3", "\"demoDim\": -inf", "malformed number");
+  rejects("\"demoDim\": 3", "\"demoDim\": 0x3", "malformed number");
+  rejects("\"yaw\": -1.25", "\"yaw\": \"inf\"", "field \"yaw\" must be a number");
+  rejects("0.10000000000000001, 0.20000000000000001", "1e999, 0.2", "number out of range");
+  rejects("\"mesh\": \"", "\"mesh\": \"\\u00zz", "4 hexadecimal digits");
+  // nu alone may be infinite.
+  EXPECT_EQ(sessionFromJson(good, "s.json").params.nu, -std::numeric_limits<double>::infinity());
+}
+
+TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
+  const std::string good = sessionToJson(sample());
+  const auto messageFor = [](const std::string& text) {
+    try {
+      sessionFromJson(text, "s.json");
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "s.json");
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  std::string newer = good;
+  ASSERT_NE(newer.find("\"version\": 1"), std::string::npos);
+  newer.replace(newer.find("\"version\": 1"), 12, "\"version\": 2");
+  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads version 1)"), std::string::npos)
+      << messageFor(newer);
+  std::string other = good;
+  other.replace(other.find("somicage-session"), 16, "somicage-recent!");
+  EXPECT_NE(messageFor(other).find("not a SomiCage session"), std::string::npos) << messageFor(other);
+  // Truncated (a crash mid-write of a non-atomic copy): a syntax error with the line, not a crash.
+  const std::string truncated = good.substr(0, good.size() / 2);
+  EXPECT_NE(messageFor(truncated).find("s.json:"), std::string::npos) << messageFor(truncated);
+  EXPECT_NE(messageFor("").find("s.json"), std::string::npos) << messageFor("");
+}
