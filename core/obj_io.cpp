@@ -87,6 +87,14 @@ class LineCursor {
   long lineNumber_ = 0;
 };
 
+// The 1-based line that holds text[offset].
+long lineAt(std::string_view text, size_t offset) {
+  LineCursor cursor(text.substr(0, offset + 1));
+  std::string_view line;
+  while (cursor.next(line)) continue;
+  return cursor.lineNumber();
+}
+
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
 std::vector<std::string_view> splitTokens(std::string_view s) {
@@ -515,6 +523,11 @@ PolygonMesh parseObj(const std::string& rawText, const std::string& source) {
   if (text.empty()) {
     throw InputError(source, -1, "the file is empty", "an OBJ file lists vertices as `v x y z` lines");
   }
+  // tinyobjloader reads each line as a C string: a NUL byte would end it there, and its faces would differ from ours.
+  if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
+    throw InputError(source, lineAt(text, nul), "the file contains a NUL byte: it is not a text OBJ file",
+                     "export the model again as a text .obj file");
+  }
   const ObjScan scan = scanObj(text, source);
   const int vertexCount = static_cast<int>(scan.coordinates.size() / 3);
   if (vertexCount == 0) {
@@ -649,9 +662,12 @@ Cage cageFromMesh(const PolygonMesh& mesh, const std::string& source) {
 Cage loadCage(const std::string& path) { return cageFromMesh(loadMesh(path), path); }
 
 Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage) {
-  const PolygonMesh mesh = loadMesh(path);
+  return posedVerticesFromMesh(loadMesh(path), restCage, path);
+}
+
+Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source) {
   if (mesh.numVertices() != restCage.numVertices()) {
-    throw InputError(path, -1,
+    throw InputError(source, -1,
                      "the posed cage has " + std::to_string(mesh.numVertices()) + " vertices, the rest cage has " +
                          std::to_string(restCage.numVertices()),
                      "a pose lists the rest cage's vertices, in the same order");

@@ -1,5 +1,7 @@
 #include "json.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -157,7 +159,12 @@ class Parser {
       const char* begin = text_.c_str() + pos_;
       char* end = nullptr;
       const double x = std::strtod(begin, &end);
-      if (end == begin) fail("malformed number");
+      // strtod also reads nan, inf and hexadecimal, and overflows to inf: JSON has only finite decimals.
+      const bool decimal = std::all_of(begin, static_cast<const char*>(end), [](char d) {
+        return (d >= '0' && d <= '9') || d == '-' || d == '+' || d == '.' || d == 'e' || d == 'E';
+      });
+      if (end == begin || !decimal) fail("malformed number");
+      if (!std::isfinite(x)) fail("number out of range (JSON numbers must be finite)");
       pos_ += static_cast<std::size_t>(end - begin);
       return JsonValue::number(x);
     }
@@ -186,7 +193,12 @@ class Parser {
         case 'b': out += '\b'; break;
         case 'f': out += '\f'; break;
         case 'u': {
-          if (pos_ + 4 > text_.size()) fail("short \\u escape");
+          if (pos_ + 4 > text_.size() ||
+              !std::all_of(text_.begin() + static_cast<std::ptrdiff_t>(pos_),
+                           text_.begin() + static_cast<std::ptrdiff_t>(pos_ + 4),
+                           [](char h) { return std::isxdigit(static_cast<unsigned char>(h)) != 0; })) {
+            fail("a \\u escape needs 4 hexadecimal digits");
+          }
           const unsigned code = static_cast<unsigned>(std::strtoul(text_.substr(pos_, 4).c_str(), nullptr, 16));
           pos_ += 4;
           if (code < 0x80) {

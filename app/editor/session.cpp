@@ -33,9 +33,10 @@ struct Reader {
     if (!v) fail("missing field \"" + key + "\"");
     return *v;
   }
-  double number(const JsonValue& obj, const std::string& key) const {
+  // Only nu may be infinite (written as "inf" / "-inf"); every other number must be finite.
+  double number(const JsonValue& obj, const std::string& key, bool allowInfinity = false) const {
     const JsonValue& v = get(obj, key);
-    if (v.isString()) {
+    if (allowInfinity && v.isString()) {
       if (v.asString() == "inf") return std::numeric_limits<double>::infinity();
       if (v.asString() == "-inf") return -std::numeric_limits<double>::infinity();
     }
@@ -116,8 +117,9 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   Session s;
   s.meshPath = r.string(root, "mesh");
   s.cagePath = r.string(root, "cage");
-  s.demoDim = static_cast<int>(r.number(root, "demoDim"));
-  if (s.demoDim != 2 && s.demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
+  const double demoDim = r.number(root, "demoDim");  // compared before the cast: a huge value does not fit an int
+  if (demoDim != 2 && demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
+  s.demoDim = static_cast<int>(demoDim);
   const JsonValue& pose = r.get(root, "pose");
   if (!pose.isArray()) r.fail("\"pose\" must be an array of rows");
   if (!pose.items().empty()) {
@@ -136,7 +138,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.method = r.method(r.string(root, "method"));
   const JsonValue& params = r.get(root, "params");
   s.params.blend = r.number(params, "blend");
-  s.params.nu = r.number(params, "nu");
+  s.params.nu = r.number(params, "nu", true);
   s.params.gamma = r.number(params, "gamma");
   s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
   try {

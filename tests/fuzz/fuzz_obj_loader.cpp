@@ -1,0 +1,74 @@
+// libFuzzer target: the OBJ loaders (core/obj_io.h) on arbitrary bytes, as `somicage deform` and the editor read
+// them: parse (loadMesh), turn into a cage (loadCage), read as a pose (loadPosedVertices).
+// Contract: no crash and no sanitizer report; bad input throws InputError; what is accepted is well formed
+// (finite coordinates, indices in range).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "errors.h"
+#include "obj_io.h"
+
+namespace {
+
+void require(bool condition, const char* what) {
+  if (condition) return;
+  std::fprintf(stderr, "fuzz_obj_loader: contract violated: %s\n", what);
+  std::abort();
+}
+
+bool indicesInRange(const std::vector<std::vector<int>>& elements, int vertexCount) {
+  for (const std::vector<int>& element : elements) {
+    for (int v : element) {
+      if (v < 0 || v >= vertexCount) return false;
+    }
+  }
+  return true;
+}
+
+// A unit square: a rest cage whose vertex count a fuzzed pose rarely matches (the mismatch error path).
+somicage::Cage squareCage() {
+  Eigen::MatrixXd loop(4, 2);
+  loop << 0, 0, 1, 0, 1, 1, 0, 1;
+  return somicage::makePolygonCage(loop);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const std::string source = "fuzz.obj";
+
+  somicage::PolygonMesh mesh;
+  try {
+    mesh = somicage::parseObj(text, source);
+  } catch (const somicage::InputError&) {
+    return 0;
+  }
+  require(mesh.vertices.cols() == 3, "a parsed mesh has 3 coordinates per vertex");
+  require(mesh.vertices.allFinite(), "a parsed mesh has finite coordinates");
+  require(indicesInRange(mesh.faces, mesh.numVertices()), "face indices are in range");
+  require(indicesInRange(mesh.lines, mesh.numVertices()), "line indices are in range");
+
+  try {
+    (void)somicage::posedVerticesFromMesh(mesh, squareCage(), source);
+  } catch (const somicage::InputError&) {
+  }
+
+  somicage::Cage cage;
+  try {
+    cage = somicage::cageFromMesh(mesh, source);
+  } catch (const somicage::InputError&) {
+    return 0;
+  }
+  require(cage.dim() == 2 || cage.dim() == 3, "a cage is 2D or 3D");
+  require(cage.faces.cols() == cage.dim(), "a cage's faces have d corners");
+  require(cage.faces.size() == 0 || (cage.faces.minCoeff() >= 0 && cage.faces.maxCoeff() < cage.numVertices()),
+          "cage face indices are in range");
+
+  const Eigen::MatrixXd pose = somicage::posedVerticesFromMesh(mesh, cage, source);
+  require(pose.rows() == cage.numVertices() && pose.cols() == cage.dim(), "a cage is its own pose");
+  return 0;
+}
