@@ -16,6 +16,7 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
+#include "cuda/cuda_backend.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
 #include "somigliana_deformer.h"
@@ -77,6 +78,21 @@ double timeFrames(const CageDeformer& deformer, const Eigen::MatrixXd& posed, De
   return median(times);
 }
 
+// Median per-frame milliseconds on the CUDA backend: the weights built on the host, C already on the device, the
+// points copied back (what a frame costs an application that uses the result on the CPU).
+double timeCudaFrames(const CageDeformer& deformer, CudaFrameEvaluator& cuda, const Eigen::MatrixXd& posed,
+                      const DeformParams& params, int frames) {
+  Eigen::MatrixXd out;
+  cuda.evaluate(deformer.frameWeights(posed, params), out);  // warm-up: weight buffer and kernel load
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f) {
+    const CliClock::time_point start = CliClock::now();
+    cuda.evaluate(deformer.frameWeights(posed, params), out);
+    times.push_back(1e3 * secondsSince(start));
+  }
+  return median(times);
+}
+
 // Bytes per second of a large memcpy: the bandwidth a frame that streams the coordinates can hope for.
 double copyBandwidth(std::size_t bytes) {
   std::vector<char> a(bytes, 1), b(bytes);
@@ -118,7 +134,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const bool json = options.has("--json");
   setThreadCount(threads);
 
-  const Cage cage = loadCage(options.text("--cage"));
+  const Cage cage = loadUsableCage(options.text("--cage"));
   const Eigen::MatrixXd points = meshPoints(loadMesh(options.text("--mesh")), cage.dim());
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
@@ -128,6 +144,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
   precompute.integration.threads = threads;
 
   // Precompute as the editor does: exact integrals, stored in float.
+  requirePrecomputeMemory(kCommand, Method::Somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
+                          options.text("--mesh"));
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
   for (int r = 0; r < repeat; ++r) {
@@ -154,6 +172,17 @@ int runBenchCommand(const std::vector<std::string>& args) {
     }
   } else {
     gpuNote = "built without the editor's OpenGL backend";
+  }
+  if (cudaStatus().available) {
+    try {
+      CudaFrameEvaluator cuda(deformer->frameCoordinates(), deformer->dim());
+      for (const auto& [name, blend] : {std::pair<const char*, double>{"cuda_global", 0.0}, {"cuda_local", 1.0}})
+        deformMs.emplace_back(name, timeCudaFrames(*deformer, cuda, posed, {blend, 0.3, 1.0, true}, frames));
+    } catch (const CudaError& e) {
+      std::cerr << "CUDA: skipped (" << e.what() << ")\n";
+    }
+  } else {
+    std::cerr << "CUDA: skipped (" << cudaStatus().reason << ")\n";
   }
   const double nuUpdateMs = timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, true);
 

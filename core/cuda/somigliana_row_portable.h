@@ -1,0 +1,53 @@
+// One point's row of nu-independent 3D Somigliana terms (the layout of SomiglianaCoordinates::values:
+// 10 terms per cage vertex, then 4 per face; core/somigliana_coordinates.h), summed face by face in the same order
+// and with the same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
+#pragma once
+
+#include "cuda/triangle_integrals_portable.h"
+
+namespace somicage {
+
+// A cage face as the kernels need it: its frame (which holds the unit normal n) and its corner vertices.
+struct PortableFace {
+  PortableTriangleFrame frame;
+  int corners[3];
+};
+
+constexpr int kPortableVertexTerms = 10;  // vertexTermCount(3)
+constexpr int kPortableFaceTerms = 4;     // faceTermCount(3)
+
+// Overwrites the row of point x: numVertices * 10 + numFaces * 4 numbers, entry k at row[k * stride] (stride 1
+// for a contiguous row; the kernels use the number of points, so that neighbouring threads write neighbouring
+// addresses). Returns the generalised winding number -sum_j W_j / 4pi.
+SOMICAGE_HD inline double integrateSomiglianaRowPortable(const PortableFace* faces, int numFaces, int numVertices,
+                                                         const double x[3], double* row, long stride) {
+  const int vertexColumns = numVertices * kPortableVertexTerms;
+  for (long k = 0; k < vertexColumns + static_cast<long>(numFaces) * kPortableFaceTerms; ++k) row[k * stride] = 0;
+  double angleSum = 0;
+  PortableTriangleIntegrals I;
+  for (int j = 0; j < numFaces; ++j) {
+    const PortableFace& face = faces[j];
+    if (face.frame.degenerate) continue;
+    integrateTrianglePortable(face.frame, x, I);
+    const double* n = face.frame.n;
+    for (int k = 0; k < 3; ++k) {
+      double* t = row + static_cast<long>(face.corners[k]) * kPortableVertexTerms * stride;
+      const double* V = I.V[k];
+      const double(*B)[3] = I.B[k];
+      t[0] += I.D[k];
+      // omega = V x n: (n V^T - V n^T) w = (V x n) x w
+      t[1 * stride] += V[1] * n[2] - V[2] * n[1];
+      t[2 * stride] += V[2] * n[0] - V[0] * n[2];
+      t[3 * stride] += V[0] * n[1] - V[1] * n[0];
+      t[4 * stride] += B[0][0], t[5 * stride] += B[1][1], t[6 * stride] += B[2][2];
+      t[7 * stride] += B[0][1], t[8 * stride] += B[0][2], t[9 * stride] += B[1][2];
+    }
+    double* f = row + (vertexColumns + static_cast<long>(j) * kPortableFaceTerms) * stride;
+    f[0] += I.S;
+    for (int i = 0; i < 3; ++i) f[(1 + i) * stride] += I.M[i][0] * n[0] + I.M[i][1] * n[1] + I.M[i][2] * n[2];
+    angleSum += I.solidAngle;
+  }
+  return -angleSum / (4 * 3.14159265358979323846);
+}
+
+}  // namespace somicage

@@ -1,0 +1,99 @@
+// The CUDA frame kernel's per-point code (core/cuda/frame_point_portable.h), run on the host with the 32 lanes of a
+// warp summed in a loop, against the CPU frame (CageDeformer::deform). This checks the kernel's weight layout and
+// its T^-1 b solve without a GPU; only the shuffle reduction is device-only.
+//
+// Tolerances, in cage diameters: 1e-5 from float coordinates (the CPU multiplies in float, this in double),
+// 1e-9 from double coordinates.
+#include <gtest/gtest.h>
+
+#include <random>
+#include <vector>
+
+#include "cuda/frame_point_portable.h"
+#include "deformer.h"
+#include "test_shapes.h"
+
+namespace somicage {
+namespace {
+
+constexpr int kLanes = 32;
+
+template <typename Scalar, int Dim>
+Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame,
+                              const FrameWeights& W) {
+  const RowMatrixXd main = W.main, tail = W.tail;
+  const PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns,
+                                     W.mainOffset, W.outputs};
+  Eigen::MatrixXd out(C.rows(), Dim);
+  for (int p = 0; p < C.rows(); ++p) {
+    double y[kPortableMaxOutputs] = {0};
+    for (int lane = 0; lane < kLanes; ++lane) addFramePartialSums(C.row(p).data(), weights, lane, kLanes, y);
+    double point[Dim];
+    finishFramePoint<Dim>(y, W.outputs, point);
+    for (int a = 0; a < Dim; ++a) out(p, a) = point[a];
+  }
+  blendExteriorPoints(frame.exteriorBlends, out);
+  return out;
+}
+
+template <int Dim>
+Eigen::MatrixXd framePortable(const FrameCoordinates& frame, const FrameWeights& W) {
+  return frame.isFloat() ? framePortable<float, Dim>(frame.floats, frame, W)
+                         : framePortable<double, Dim>(frame.doubles, frame, W);
+}
+
+void expectPortableFramesMatch(const Cage& cage, const Eigen::MatrixXd& points) {
+  const double diameter = cageDiameter(cage.vertices);
+  Eigen::MatrixXd posed = cage.vertices;
+  for (int i = 0; i < posed.rows(); ++i) posed(i, 1) += 0.3 * cage.vertices(i, 0) * cage.vertices(i, 0);
+  struct Case {
+    Method method;
+    bool floatStorage;
+    double blend;
+  };
+  for (const Case& c : std::vector<Case>{{Method::Somigliana, true, 0.0},
+                                         {Method::Somigliana, true, 1.0},
+                                         {Method::Somigliana, false, 0.0},
+                                         {Method::Somigliana, false, 0.5},
+                                         {Method::Green, false, 0.0},
+                                         {Method::MeanValue, true, 0.0}}) {
+    PrecomputeOptions options;
+    options.floatStorage = c.floatStorage;
+    const auto deformer = makeDeformer(c.method, cage, points, options);
+    DeformParams params;
+    params.blend = c.blend;
+    params.nu = 0.3;
+    params.gamma = 0.5;
+    const Eigen::MatrixXd cpu = deformer->deform(posed, params);
+    const FrameWeights W = deformer->frameWeights(posed, params);
+    const Eigen::MatrixXd portable = cage.dim() == 3 ? framePortable<3>(deformer->frameCoordinates(), W)
+                                                     : framePortable<2>(deformer->frameCoordinates(), W);
+    ASSERT_EQ(portable.rows(), cpu.rows());
+    const double error = (portable - cpu).cwiseAbs().maxCoeff() / diameter;
+    EXPECT_LE(error, c.floatStorage ? 1e-5 : 1e-9)
+        << methodName(c.method) << (c.floatStorage ? " float" : " double") << " blend " << c.blend << " in "
+        << cage.dim() << "D: largest difference " << error << " cage diameters";
+  }
+}
+
+TEST(CudaPortableFrame, MatchesCpuFrame3D) {
+  const Cage cage = test::makeBumpySphere(1);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(-0.4, 0.4);
+  Eigen::MatrixXd points(300, 3);
+  for (int p = 0; p < points.rows(); ++p) points.row(p) << unit(rng), unit(rng), unit(rng);
+  points.row(0) << 2.5, 0.1, -0.2;  // outside: its exterior rows are blended like on the CPU
+  expectPortableFramesMatch(cage, points);
+}
+
+TEST(CudaPortableFrame, MatchesCpuFrame2D) {
+  const Cage cage = makePolygonCage(test::lLoop());
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> unit(0.05, 0.95);
+  Eigen::MatrixXd points(200, 2);
+  for (int p = 0; p < points.rows(); ++p) points.row(p) << unit(rng), unit(rng);
+  expectPortableFramesMatch(cage, points);
+}
+
+}  // namespace
+}  // namespace somicage
