@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <numeric>
-#include <set>
 #include <sstream>
 
 #include "errors.h"
@@ -154,7 +153,7 @@ void measureGeometry(const Cage& cage, CageReport& report) {
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// 2D: is the polygon simple? Shamos-Hoey sweep, O(F log F)
+// 2D: is the polygon simple? Edge pairs whose bounding boxes overlap, with orientation tests
 // ---------------------------------------------------------------------------------------------------------------
 
 struct Segment {
@@ -198,6 +197,39 @@ bool illegalMeeting(const Segment& s, const Segment& t) {
   return orient(o, a, b) == 0.0 && (a - o).dot(b - o) > 0.0;
 }
 
+// Visits each pair of faces whose bounding boxes overlap, sweeping their boxes along the cage's longest axis, until
+// visit(i, j) returns true. No ordered container of segments: its comparator would have to stay a strict weak order
+// on self-intersecting input, which rounded orientation tests cannot promise (a Shamos-Hoey sweep corrupted its
+// std::set on polygons with coincident vertices).
+template <int Dim, typename Visit>
+void visitOverlappingFaces(const Cage& cage, const std::vector<char>& skip, Visit visit) {
+  using Box = Eigen::AlignedBox<double, Dim>;
+  const Eigen::MatrixXd& V = cage.vertices;
+  std::vector<Box> boxes(cage.numFaces());
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    for (int k = 0; k < Dim; ++k) boxes[j].extend(V.row(cage.faces(j, k)).transpose());
+  }
+  int axis = 0;
+  (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(&axis);
+  std::vector<int> order;
+  for (int j = 0; j < cage.numFaces(); ++j)
+    if (!skip[j]) order.push_back(j);
+  std::sort(order.begin(), order.end(), [&](int x, int y) {
+    return std::make_pair(boxes[x].min()[axis], x) < std::make_pair(boxes[y].min()[axis], y);
+  });
+  std::vector<int> active;  // faces whose box may still overlap the next one along the axis
+  for (const int j : order) {
+    const double start = boxes[j].min()[axis];
+    active.erase(std::remove_if(active.begin(), active.end(), [&](int i) { return boxes[i].max()[axis] < start; }),
+                 active.end());
+    for (const int i : active) {
+      if (boxes[i].intersects(boxes[j]) && visit(std::min(i, j), std::max(i, j))) return;
+    }
+    active.push_back(j);
+  }
+}
+
+// 2D: the polygon is simple when no two edges meet except at shared ends; one offending pair is enough to say so.
 void findIntersection(const Cage& cage, CageReport& report) {
   const int n = cage.numFaces();
   std::vector<Segment> segments(n);
@@ -207,59 +239,11 @@ void findIntersection(const Cage& cage, CageReport& report) {
     s.p = cage.vertices.row(s.u).transpose(), s.q = cage.vertices.row(s.v).transpose();
     if (lexLess(s.q, s.p)) std::swap(s.p, s.q), std::swap(s.u, s.v);
   }
-  // Above/below at the later of the two start points: orientation tests only, which amounts to sweeping with a
-  // line turned infinitesimally, so vertical edges need no special case.
-  const auto below = [&](int i, int j) {
-    if (i == j) return false;
-    const Segment &s = segments[i], &t = segments[j];
-    if (!lexLess(t.p, s.p)) {
-      double o = orient(s.p, s.q, t.p);
-      if (o == 0.0) o = orient(s.p, s.q, t.q);
-      if (o != 0.0) return o > 0.0;
-    } else {
-      double o = orient(t.p, t.q, s.p);
-      if (o == 0.0) o = orient(t.p, t.q, s.q);
-      if (o != 0.0) return o < 0.0;
-    }
-    return i < j;  // collinear: any fixed order (they overlap and are reported when they become neighbours)
-  };
-  struct Event {
-    int segment;
-    bool insert;
-  };
-  std::vector<Event> events;
-  events.reserve(2 * static_cast<size_t>(n));
-  for (int j = 0; j < n; ++j) events.push_back({j, true}), events.push_back({j, false});
-  const auto pointOf = [&](const Event& e) { return e.insert ? segments[e.segment].p : segments[e.segment].q; };
-  std::sort(events.begin(), events.end(), [&](const Event& x, const Event& y) {
-    const Eigen::Vector2d a = pointOf(x), b = pointOf(y);
-    if (lexLess(a, b)) return true;
-    if (lexLess(b, a)) return false;
-    if (x.insert != y.insert) return x.insert;  // insertions first, so that touching edges meet in the sweep
-    return x.segment < y.segment;
-  });
-
-  std::set<int, decltype(below)> active(below);
-  std::vector<std::set<int, decltype(below)>::iterator> where(n);
-  const auto check = [&](int i, int j) {
+  visitOverlappingFaces<2>(cage, std::vector<char>(n, 0), [&](int i, int j) {
     if (!illegalMeeting(segments[i], segments[j])) return false;
-    report.intersectingFaces.push_back({std::min(i, j), std::max(i, j)});
+    report.intersectingFaces.push_back({i, j});
     return true;
-  };
-  for (const Event& e : events) {
-    if (e.insert) {
-      const auto it = active.insert(e.segment).first;
-      where[e.segment] = it;
-      const auto next = std::next(it);
-      if (next != active.end() && check(*it, *next)) return;
-      if (it != active.begin() && check(*std::prev(it), *it)) return;
-    } else {
-      const auto it = where[e.segment];
-      const auto next = std::next(it);
-      if (it != active.begin() && next != active.end() && check(*std::prev(it), *next)) return;
-      active.erase(it);
-    }
-  }
+  });
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -345,32 +329,12 @@ bool facesIntersect(const Cage& cage, int i, int j) {
 }
 
 void findIntersections3d(const Cage& cage, CageReport& report) {
-  const Eigen::MatrixXd& V = cage.vertices;
   std::vector<char> skip(cage.numFaces(), 0);
   for (const int j : report.degenerateFaces) skip[j] = 1;  // no plane to test against
-  std::vector<Eigen::AlignedBox3d> boxes(cage.numFaces());
-  for (int j = 0; j < cage.numFaces(); ++j) {
-    for (int k = 0; k < 3; ++k) boxes[j].extend(Point3(V.row(cage.faces(j, k)).transpose()));
-  }
-  int axis = 0;
-  (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(&axis);
-  std::vector<int> order;
-  for (int j = 0; j < cage.numFaces(); ++j)
-    if (!skip[j]) order.push_back(j);
-  std::sort(order.begin(), order.end(), [&](int x, int y) {
-    return std::make_pair(boxes[x].min()[axis], x) < std::make_pair(boxes[y].min()[axis], y);
+  visitOverlappingFaces<3>(cage, skip, [&](int i, int j) {
+    if (facesIntersect(cage, i, j)) report.intersectingFaces.push_back({i, j});
+    return false;
   });
-  std::vector<int> active;  // faces whose box may still overlap the next one along the axis
-  for (const int j : order) {
-    const double start = boxes[j].min()[axis];
-    active.erase(std::remove_if(active.begin(), active.end(), [&](int i) { return boxes[i].max()[axis] < start; }),
-                 active.end());
-    for (const int i : active) {
-      if (boxes[i].intersects(boxes[j]) && facesIntersect(cage, i, j))
-        report.intersectingFaces.push_back({std::min(i, j), std::max(i, j)});
-    }
-    active.push_back(j);
-  }
   std::sort(report.intersectingFaces.begin(), report.intersectingFaces.end());
 }
 
@@ -495,15 +459,17 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
                        "; remove them or move their vertices apart");
   }
   if (report.closed() && report.manifold() && report.consistentlyOriented() && !report.outward()) {
-    std::ostringstream value;
+    std::ostringstream value, diameter;
     value << report.signedVolume;
+    diameter << report.diameter;
     const std::string what = is3d ? "signed volume " : "signed area ";
     if (report.signedVolume < 0.0) {
       problems.push_back(
           is3d ? "the faces point inward (" + what + value.str() + "): reverse the vertex order of every face"
                : "the polygon is clockwise (" + what + value.str() + "): reverse the order of its vertices");
     } else {
-      problems.push_back("the cage encloses no " + std::string(is3d ? "volume" : "area") + " (" + what + value.str() +
+      problems.push_back("the cage encloses (nearly) no " + std::string(is3d ? "volume" : "area") + " (" + what +
+                         value.str() + " for a diameter of " + diameter.str() +
                          "): " +
                          (is3d ? "its faces must bound a solid, with normals pointing out"
                                : "its vertices must go counter-clockwise around an area"));

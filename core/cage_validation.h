@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -59,7 +60,12 @@ struct CageReport {
   bool manifold() const { return indicesValid() && nonManifoldRidges.empty(); }
   bool consistentlyOriented() const { return indicesValid() && misorientedRidges.empty(); }
   // Outward normals (2D: counter-clockwise) only make sense on a closed, manifold, consistently oriented cage.
-  bool outward() const { return closed() && manifold() && consistentlyOriented() && signedVolume > 0.0; }
+  // A volume (area) below kDegenerateTolerance times diameter^3 (diameter^2) is a flat cage: its faces fold onto each
+  // other and the rest-pose weights of Eqs. 10-14 lose every digit.
+  bool outward() const {
+    return closed() && manifold() && consistentlyOriented() && signedVolume > minimumEnclosedMeasure();
+  }
+  double minimumEnclosedMeasure() const { return kDegenerateTolerance * std::pow(diameter, dim); }
   bool simple() const { return dim == 3 || (closed() && manifold() && components == 1 && intersectingFaces.empty()); }
   // True when the coordinates of this cage are well defined (every check passes).
   bool valid() const;

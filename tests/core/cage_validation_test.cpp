@@ -323,6 +323,48 @@ TEST(CageValidation, SelfIntersectingPolygons) {
   }
 }
 
+// Found by fuzz_precompute_deform: coincident vertices corrupted the former Shamos-Hoey sweep's ordered set (a double
+// free under ASan). They are edges that meet, so the polygon is not simple.
+TEST(CageValidation, CoincidentVerticesAreAnIntersectionNotACrash) {
+  std::vector<Eigen::Vector2d> octagon;
+  for (int k = 0; k < 8; ++k) octagon.emplace_back(std::cos(k * M_PI / 4), std::sin(k * M_PI / 4));
+  octagon[2] = octagon[0];
+  const std::vector<std::vector<Eigen::Vector2d>> cases = {
+      {{0, 0}, {1, 0}, {0, 0}, {1, 0}},  // the loop A B A B
+      octagon,
+      {{0, 0}, {1, 0}, {1, 1}, {1, 0}, {0, 1}},  // a spike out and back along one edge
+  };
+  for (const auto& points : cases) {
+    SCOPED_TRACE(::testing::Message() << points.size() << " vertices");
+    const CageReport report = validateCage(polygon(points));
+    EXPECT_FALSE(report.valid());
+    EXPECT_FALSE(report.intersectingFaces.empty());
+    EXPECT_TRUE(mentions(describeCageProblems(report), "the polygon intersects itself"))
+        << joined(describeCageProblems(report));
+  }
+}
+
+// Found by fuzz_precompute_deform: a self-crossing octahedron flattened to a signed volume of 1e-36 passed, and its
+// Somigliana rest-pose weights were NaN. A cage must enclose more than kDegenerateTolerance * diameter^3.
+TEST(CageValidation, FlatCagesEncloseNoVolume) {
+  for (const double thickness : {0.0, 1e-14, 1e-12}) {
+    SCOPED_TRACE(thickness);
+    Cage octahedron;
+    octahedron.vertices.resize(6, 3);
+    octahedron.vertices << 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, thickness, 0, 0, -thickness;
+    octahedron.faces.resize(8, 3);
+    octahedron.faces << 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5;
+    const CageReport report = validateCage(octahedron);
+    EXPECT_FALSE(report.valid());
+    EXPECT_TRUE(mentions(describeCageProblems(report), "the cage encloses (nearly) no volume"))
+        << joined(describeCageProblems(report));
+  }
+  Cage thin = polygon({{0, 0}, {1, 0}, {1, 1e-12}, {0, 1e-12}});
+  EXPECT_TRUE(mentions(describeCageProblems(validateCage(thin)), "the cage encloses (nearly) no area"));
+  Cage slab = polygon({{0, 0}, {1, 0}, {1, 1e-6}, {0, 1e-6}});  // thin but usable
+  EXPECT_TRUE(validateCage(slab).outward());
+}
+
 TEST(CageValidation, OpenChainAndTwoLoops) {
   Cage open = polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
   open.faces.conservativeResize(3, 2);
