@@ -136,6 +136,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
 
   const Cage cage = loadUsableCage(options.text("--cage"));
   const Eigen::MatrixXd points = meshPoints(loadMesh(options.text("--mesh")), cage.dim());
+  warnAboutMeshPlacement(cage, points, options.text("--mesh"), options.text("--cage"));
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
   PrecomputeOptions precompute;

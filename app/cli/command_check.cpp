@@ -268,6 +268,7 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   // Integrating needs valid indices and faces with a normal; other defects still give numbers worth seeing.
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
     const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
+    warnAboutMeshPlacement(cage, points, meshPath, cagePath);
     Eigen::VectorXd winding;
     unity = checkPartitionOfUnity(repaired.cage, points, threads, winding);
     reproduction = checkReproduction(repaired.cage, points, winding, threads);

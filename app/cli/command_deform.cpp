@@ -93,6 +93,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
   const PolygonMesh mesh = loadMesh(meshPath);
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
+  warnAboutMeshPlacement(cage, points, meshPath, cagePath);
   if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
                                        args.has("--gamma") || args.has("--no-traction-fix"))) {
     std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "

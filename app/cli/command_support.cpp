@@ -8,6 +8,7 @@
 #include "cage_repair.h"
 #include "cage_validation.h"
 #include "memory_estimate.h"
+#include "mesh_placement.h"
 
 namespace somicage {
 
@@ -55,6 +56,12 @@ void requirePrecomputeMemory(const std::string& command, Method method, const Ca
     std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
               << formatBytes(estimate.total()) << " in all ("
               << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
+}
+
+void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
+                            const std::string& cagePath) {
+  if (const auto warning = describeMeshPlacement(measureMeshPlacement(cage, points), meshPath, cagePath))
+    std::cerr << "somicage: warning: " << *warning << "\n";
 }
 
 Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim) { return mesh.vertices.leftCols(dim); }

@@ -34,6 +34,11 @@ Cage loadUsableCage(const std::string& path);
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath);
 
+// Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
+// (core/mesh_placement.h): different units, usually.
+void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
+                            const std::string& cagePath);
+
 // The points a cage of dimension dim deforms: the mesh's x, y, z (3D) or x, y (2D), #V by dim.
 Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim);
 

@@ -6,6 +6,7 @@
 
 #include "cage_repair.h"
 #include "cage_validation.h"
+#include "mesh_placement.h"
 #include "obj_io.h"
 
 namespace somicage::editor {
@@ -144,6 +145,8 @@ Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   const PolygonMesh mesh = loadMesh(meshPath);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
   s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());
+  if (const auto warning = describeMeshPlacement(measureMeshPlacement(s.restCage, s.meshVertices), meshPath, cagePath))
+    s.notices.push_back("mesh warning: " + *warning);
   s.meshPath = meshPath;
   s.cagePath = cagePath;
   const std::size_t slash = meshPath.find_last_of('/');

@@ -175,6 +175,33 @@ TEST(CliDeform, RepairedCageGivesTheCleanCagesResult) {
       << r;
 }
 
+TEST(CliDeform, MeshInOtherUnitsIsReported) {
+  ScratchDir dir;
+  const std::string cage = dataFile("cube_cage.obj");
+  const PolygonMesh pyramid = loadMesh(dataFile("pyramid_mesh.obj"));
+  const std::pair<double, std::string> cases[] = {
+      {1000.0, "the mesh is 517 times the size of the cage: are the two files in different units"},
+      {1e-4, "the mesh is 19335 times smaller than the cage: are the two files in different units"}};
+  for (const auto& [scale, message] : cases) {
+    SCOPED_TRACE(scale);
+    const std::string mesh = dir.file("scaled.obj");
+    saveObj(mesh, pyramid.vertices * scale, pyramid);
+    const RunResult r = deform(cage, cage, mesh, dir.file("out.obj"), {});
+    ASSERT_EQ(r.exitCode, 0) << r;  // a warning, not a refusal: the result is defined (docs/engine.md)
+    EXPECT_NE(r.err.find("somicage: warning: the mesh " + mesh + " and the cage " + cage + " do not fit: " + message),
+              std::string::npos)
+        << r;
+  }
+  const std::string beside = dir.file("beside.obj");
+  saveObj(beside, pyramid.vertices.rowwise() + Eigen::RowVector3d(50, 0, 0), pyramid);
+  const RunResult r = deform(cage, cage, beside, dir.file("out.obj"), {});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  EXPECT_NE(r.err.find("do not overlap: the mesh lies beside the cage"), std::string::npos) << r;
+
+  const RunResult fits = deform(cage, cage, dataFile("pyramid_mesh.obj"), dir.file("out.obj"), {});
+  EXPECT_EQ(fits.err.find("warning"), std::string::npos) << fits;
+}
+
 TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
   ScratchDir dir;
   const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj"), out = dir.file("out.obj");

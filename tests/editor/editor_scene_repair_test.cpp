@@ -76,3 +76,15 @@ TEST(EditorSceneRepair, CageThatStaysInvalidIsRefused) {
     EXPECT_NE(e.problem().find("the cage cannot be used: the cage is not closed"), std::string::npos) << e.what();
   }
 }
+
+TEST(EditorSceneRepair, AMeshInOtherUnitsGetsANotice) {
+  const CubeFiles files("somicage_scene_units");
+  const std::string cage = files.cage("cube.obj", files.cube);
+  const std::string millimetres = (files.dir / "millimetres.obj").string();
+  saveObj(millimetres, loadMesh(files.mesh).vertices * 1000, PolygonMesh{});
+  const Scene scene = loadScene(millimetres, cage);
+  ASSERT_EQ(scene.notices.size(), 1u);
+  EXPECT_EQ(scene.notices[0].rfind("mesh warning: the mesh " + millimetres + " and the cage " + cage + " do not fit", 0),
+            0u)
+      << scene.notices[0];
+}
