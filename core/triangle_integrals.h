@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "triangle_integrals_kernel.h"
+
 namespace somicage {
 
 // The results for one (query point, triangle) pair, in world coordinates.
@@ -36,13 +38,16 @@ struct TriangleFrame {
   double tm[3][3];             // sym(tau_e m_e^T) as (xx, xy, yy)
   double tt[3][3];             // tau_e tau_e^T as (xx, xy, yy)
   double mDotGrad[3][3];       // [k][e] = m_e . grad_k
+
+  PortableTriangleFrame kernel;  // all of the above as plain arrays: what integrateTriangle (and CUDA) evaluates
 };
 
 // Builds the frame of the triangle p0 p1 p2 (counter-clockwise about the outward normal). A face whose area is
 // zero to rounding (2A <= 16 eps max|edge|^2, or not finite) is marked degenerate and gets zero axes.
 TriangleFrame makeTriangleFrame(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2);
 
-// Closed form (docs/closed-form.md section 4), double precision, valid for any x not on the triangle.
+// Closed form (docs/closed-form.md section 4), double precision, valid for any x not on the triangle: the Eigen
+// face of integrateTrianglePortable (triangle_integrals_kernel.h), the one implementation, shared with CUDA.
 // No heap allocation; about 1 atan2, 3 sqrt and 3 log1p per call. A degenerate frame gives all zeros.
 // Accuracy: near-round-off where the integrals are well conditioned, about eps * diam / delta at a distance delta
 // from an edge or vertex (the conditioning of the integrals themselves), and for a face D diameters away an

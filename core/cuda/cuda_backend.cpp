@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "cuda/portable_frame.h"
+#include "triangle_integrals.h"
 #include "errors.h"
 
 namespace somicage {
@@ -100,7 +100,7 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
     const TriangleFrame frame = makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)),
                                                   cage.vertices.row(cage.faces(j, 1)),
                                                   cage.vertices.row(cage.faces(j, 2)));
-    faces[j].frame = portableFrame(frame);
+    faces[j].frame = frame.kernel;
     for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
   }
   const int numPoints = static_cast<int>(points.rows());

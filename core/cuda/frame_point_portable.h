@@ -4,7 +4,7 @@
 // evaluateFrame; the kernel adds only the warp's shuffle reduction.
 #pragma once
 
-#include "cuda/portable.h"
+#include "portable.h"
 
 namespace somicage {
 

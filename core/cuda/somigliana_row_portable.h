@@ -3,7 +3,7 @@
 // and with the same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
 #pragma once
 
-#include "cuda/triangle_integrals_portable.h"
+#include "triangle_integrals_kernel.h"
 
 namespace somicage {
 

@@ -1,19 +1,18 @@
-// The closed-form triangle integrals of core/triangle_integrals.cpp in plain C++ (no Eigen, no heap, no
-// exceptions), so that CUDA kernels run exactly the same math as the CPU. SOMICAGE_HD makes every function
-// callable on the host and the device; tests/core/cuda_portable_integrals_test.cpp compiles this header with the
-// host compiler and checks it against integrateTriangle, which is how the device math is verified without a GPU.
-//
-// Conventions, formulas and accuracy are those of core/triangle_integrals.h (shared docs/closed-form.md section 4,
-// stability measures "(5.k)" of section 5). Keep the two files in step: the test fails when they drift apart.
+// The closed-form triangle integrals (shared docs/closed-form.md section 4; reference: cf_scalar.py and bench.c)
+// in plain C++ (no Eigen, no heap, no exceptions): the one implementation, which integrateTriangle
+// (triangle_integrals.h) wraps on the CPU and the CUDA kernels call on the device (SOMICAGE_HD). Everything is
+// evaluated in the face's local frame [u v n] with origin p0 and rotated to world coordinates at the end; the
+// in-plane moments J_p^j = int d^{(x)j} R^-p are reduced to edge integrals by the 2D divergence theorem; the
+// stability measures of section 5 are marked "(5.k)". Conventions and accuracy: triangle_integrals.h.
 #pragma once
 
 #include <math.h>
 
-#include "cuda/portable.h"
+#include "portable.h"
 
 namespace somicage {
 
-// TriangleFrame (core/triangle_integrals.h) with plain arrays. Built on the host by portableFrame().
+// TriangleFrame (triangle_integrals.h) as plain arrays: makeTriangleFrame fills its `kernel` member.
 struct PortableTriangleFrame {
   double origin[3], u[3], v[3], n[3];  // p0 and the orthonormal frame [u v n], u along p1 - p0
   double q[3][2];                      // local 2D corners
