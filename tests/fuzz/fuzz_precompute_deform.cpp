@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <iostream>
 #include <cstdlib>
 #include <limits>
 #include <string>
@@ -245,6 +246,16 @@ double distanceToCage(const Cage& cage, const Eigen::RowVectorXd& x) {
   return best;
 }
 
+// The decoded case, so that a finding can be turned into a regression test without replaying the decoder.
+void printCase(const Cage& cage, const MatrixXd& points, const MatrixXd& pose, const somicage::DeformParams& params,
+               bool floatStorage) {
+  const Eigen::IOFormat full(17, 0, " ", "\n", "  ");
+  std::cerr << "cage vertices:\n" << cage.vertices.format(full) << "\ncage faces:\n" << cage.faces
+            << "\npoints:\n" << points.format(full) << "\npose:\n" << pose.format(full) << "\nblend "
+            << params.blend << " nu " << params.nu << " gamma " << params.gamma << " traction fix "
+            << params.tractionCorrection << " float storage " << floatStorage << "\n";
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -276,6 +287,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       for (Eigen::Index p = 0; p < points.rows(); ++p) {
         if (mustBeFinite[static_cast<std::size_t>(p)] && !out.row(p).allFinite()) {
           std::fprintf(stderr, "method %s, point %ld\n", somicage::methodName(method).c_str(), static_cast<long>(p));
+          printCase(cage, points, pose, params, options.floatStorage);
           require(false, "a point inside the cage and away from it deforms to a finite position");
         }
       }
