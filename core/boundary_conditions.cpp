@@ -39,7 +39,8 @@ Eigen::MatrixXd vertexNormals(const Cage& cage, const Eigen::MatrixXd& vertices)
   Eigen::MatrixXd sum = Eigen::MatrixXd::Zero(cage.numVertices(), cage.dim());
   for (int j = 0; j < cage.numFaces(); ++j)
     for (int k = 0; k < cage.dim(); ++k) sum.row(cage.faces(j, k)) += A(j) * N.row(j);
-  sum.rowwise().normalize();
+  // Row by row: rowwise().normalize() divides by zero at a vertex whose faces all collapsed (normal 0 then).
+  for (int i = 0; i < sum.rows(); ++i) sum.row(i).normalize();
   return sum;
 }
 

@@ -2,12 +2,12 @@
 
 #include <omp.h>
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <cstring>
 #include <vector>
 
 #include "errors.h"
+#include "frame_point_kernel.h"
 
 namespace somicage {
 
@@ -47,9 +47,11 @@ struct PreparedWeights {
   std::vector<Scalar> mainRows;  // (outputs) rows of mainColumns, zero for outputs before mainOffset
   Eigen::MatrixXd tail;          // tailColumns by outputs, in double: the tail is a handful of columns
   std::vector<Group> groups;
+  double origin[3] = {0, 0, 0};  // FrameWeights::origin
 
   PreparedWeights(const FrameWeights& W, int mainColumns_)
       : mainColumns(mainColumns_), tailColumns(static_cast<int>(W.tail.rows())), outputs(W.outputs), tail(W.tail) {
+    for (int a = 0; a < 3 && a < W.origin.size(); ++a) origin[a] = W.origin(a);
     mainRows.assign(static_cast<size_t>(outputs) * mainColumns, Scalar(0));
     for (int o = W.mainOffset; o < outputs; ++o)
       for (int k = 0; k < mainColumns; ++k)
@@ -121,22 +123,6 @@ void dotBlock(const Scalar* const* c, const Scalar* const* w, int begin, int end
   }
 }
 
-template <int Dim>
-void finish(const double* y, bool solve, double* out) {
-  if (!solve) {
-    for (int a = 0; a < Dim; ++a) out[a] = y[a];
-    return;
-  }
-  Eigen::Matrix<double, Dim, Dim> T;  // S + A (frame_evaluation.h)
-  if constexpr (Dim == 3)
-    T << y[0], y[3] - y[8], y[4] + y[7], y[3] + y[8], y[1], y[5] - y[6], y[4] - y[7], y[5] + y[6], y[2];
-  else
-    T << y[0], y[2] + y[3], y[2] - y[3], y[1];
-  const Eigen::Map<const Eigen::Matrix<double, Dim, 1>> rhs(y + Dim * Dim);
-  Eigen::Map<Eigen::Matrix<double, Dim, 1>> result(out);
-  result = T.inverse() * rhs;
-}
-
 // The outputs y (kMaxOutputs per row) of Rows consecutive points from `first` on: y = C_main . W_main + C_tail . W_tail.
 template <typename Scalar, int Rows>
 void outputsOfRows(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int first,
@@ -168,17 +154,17 @@ template <typename Scalar, int Dim>
 void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int threads,
               Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>& out) {
   const int numPoints = static_cast<int>(C.rows()), numBlocks = numPoints / kBlockRows;
-  const bool solve = W.outputs == Dim * Dim + Dim;
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
     outputsOfRows<Scalar, kBlockRows>(C, W, b * kBlockRows, y);
-    for (int r = 0; r < kBlockRows; ++r) finish<Dim>(y[r], solve, out.row(b * kBlockRows + r).data());
+    for (int r = 0; r < kBlockRows; ++r)
+      finishFramePoint<Dim>(y[r], W.outputs, W.origin, out.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
     outputsOfRows<Scalar, 1>(C, W, p, y);
-    finish<Dim>(y[0], solve, out.row(p).data());
+    finishFramePoint<Dim>(y[0], W.outputs, W.origin, out.row(p).data());
   }
 }
 

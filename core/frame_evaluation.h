@@ -2,12 +2,14 @@
 //
 //   y_p   = C_p,main . W_main  (added to the output columns from W.mainOffset on)  +  C_p,tail . W_tail
 //   out_p = y_p                                       when the frame has d outputs (Green, mean value)
-//   out_p = T_p^-1 b_p                                when it has d^2 + d outputs (Somigliana, Eq. 11), with
+//   out_p = o + T_p^-1 b_p                            when it has d^2 + d outputs (Somigliana, Eq. 11), with
 //           b_p = y_p[d^2 : d^2 + d] and T_p = S + A split into its symmetric and antisymmetric parts:
 //             3D: S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w with omega = y[6..8];
 //             2D: S = (xx, yy, xy) = y[0..2], A = [[0, y3], [-y3, 0]].
 //           The split lets each output touch only the coordinates it needs (S the symmetric terms, A the
-//           antisymmetric ones): tOutputsFromMatrix converts a matrix into them.
+//           antisymmetric ones): tOutputsFromMatrix converts a matrix into them. o is the frame's origin (the
+//           posed cage's centroid for Somigliana), b is built relative to it: far from the coordinate origin
+//           that keeps float storage accurate, and a singular T (frame_point_kernel.h) maps b = 0 to o.
 //
 // C (#P + 2 #E by K_main + K_tail) is fixed after precompute; W is rebuilt for every frame from the posed cage and
 // the parameters, and is small (K by at most 12). A frame therefore reads C once: its cost is memory bandwidth.
@@ -58,6 +60,7 @@ struct FrameWeights {
   int mainOffset = 0;    // the first output column that `main` contributes to
   Eigen::MatrixXd main;  // K_main by (outputs - mainOffset)
   Eigen::MatrixXd tail;  // K_tail by outputs
+  Eigen::VectorXd origin;  // o (d) for a per-point solve; empty means 0
 };
 
 // The T outputs (d^2 numbers, layout above) of a d by d matrix M.

@@ -126,7 +126,8 @@ class SomiglianaDeformer final : public CageDeformer {
   Method method() const override { return Method::Somigliana; }
   int dim() const override { return rest_.dim(); }
 
-  // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T.
+  // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T,
+  // evaluated as o + T(x)^-1 [... (v~_i - o) ...] about the posed centroid o (frame_evaluation.h).
   // Both sums are linear in the stored nu-independent terms t_k (T_i = sum_k t_k E_k), so their weights are
   // R_i E_k R_i^T (for T) and R_i E_k R_i^T v~_i (for the right-hand side); the face terms give
   // R_j K_j R_j^T tau~_j = s_j R_j K_j n_j = s_j R_j (k1 S_j n_j + k2 q_j) (Eq. 14, docs/method.md).
@@ -144,11 +145,13 @@ class SomiglianaDeformer final : public CageDeformer {
     // the D part of T (alpha D I, unchanged by rotations) from the sums too, and the rest from the vertex terms.
     W.mainOffset = global ? d * d : 0;
     const int rhs = W.outputs - W.mainOffset - d;  // where the right-hand side starts in W.main
+    // b relative to the posed centroid o: every term's T weight times (v~_i - o) gives b - T(x) o.
+    W.origin = posed.colwise().mean().transpose();
     W.main = Eigen::MatrixXd::Zero(coordinates_.mainColumns, W.outputs - W.mainOffset);
     W.tail = Eigen::MatrixXd::Zero(terms + d + 1, W.outputs);
     for (int i = 0; i < rest_.numVertices(); ++i) {
       const Eigen::MatrixXd& R = global ? bc.global.rotation : bc.vertexRotations[i];
-      const Eigen::VectorXd v = posed.row(i).transpose();
+      const Eigen::VectorXd v = posed.row(i).transpose() - W.origin;
       for (int k = 0; k < terms; ++k) {
         const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
         const int row = vertexColumn(i, k, rest_.numVertices());
@@ -174,7 +177,7 @@ class SomiglianaDeformer final : public CageDeformer {
     const Eigen::MatrixXd sR = bc.global.scale * bc.global.rotation;
     for (int a = 0; a < d; ++a) W.tail.row(terms + a).tail(d) = sR.col(a).transpose();
     setTColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
-    W.tail.row(terms + d).tail(d) = bc.global.translation.transpose();
+    W.tail.row(terms + d).tail(d) = (bc.global.translation - W.origin).transpose();
     return W;
   }
 

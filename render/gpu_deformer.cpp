@@ -305,6 +305,9 @@ void GpuDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParam
   glUniform1ui(kernel.uniform("uMainColumns"), static_cast<GLuint>(m.mainColumns));
   glUniform1ui(kernel.uniform("uTailColumns"), static_cast<GLuint>(m.tailColumns));
   glUniform1ui(kernel.uniform("uMeshPoints"), static_cast<GLuint>(m.numPoints));
+  float origin[3] = {0, 0, 0};
+  for (int a = 0; a < d && a < W.origin.size(); ++a) origin[a] = static_cast<float>(W.origin(a));
+  glUniform3f(kernel.uniform("uOrigin"), origin[0], origin[1], origin[2]);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.weights.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.positions);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.extraRows.id());

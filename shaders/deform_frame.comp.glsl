@@ -32,6 +32,9 @@ uniform uint uNumPoints;
 uniform uint uFirstPoint;
 uniform uint uMainColumns;
 uniform uint uTailColumns;
+uniform vec3 uOrigin;  // FrameWeights::origin: the solve returns uOrigin + T^-1 b
+// kSingularT of core/frame_point_kernel.h for float sums: below it det T is rounding noise in float.
+const float SINGULAR_T = 1e-6;
 
 #if ROW_THREADS > 1
 shared float partial[GROUP_POINTS][OUTPUTS][ROW_THREADS];
@@ -50,12 +53,22 @@ vec3 finish(float y[OUTPUTS]) {
   const mat3 T = transpose(mat3(y[0], y[3] - y[8], y[4] + y[7],
                                 y[3] + y[8], y[1], y[5] - y[6],
                                 y[4] - y[7], y[5] + y[6], y[2]));
-  return inverse(T) * vec3(y[9], y[10], y[11]);
+  const vec3 b = vec3(y[9], y[10], y[11]);
+  const float norm2 = dot(T[0], T[0]) + dot(T[1], T[1]) + dot(T[2], T[2]);
+  // Singular T (core/frame_point_kernel.h): the regularised least-squares solution instead.
+  if (abs(determinant(T)) > SINGULAR_T * norm2 * sqrt(norm2)) return uOrigin + inverse(T) * b;
+  if (!(norm2 > 0.0)) return uOrigin;
+  const mat3 Tt = transpose(T);
+  return uOrigin + inverse(Tt * T + SINGULAR_T * norm2 * mat3(1.0)) * (Tt * b);
 #else
   // T = [[y0, y2 + y3], [y2 - y3, y1]], b = (y4, y5).
-  const float t00 = y[0], t01 = y[2] + y[3], t10 = y[2] - y[3], t11 = y[1];
-  const float det = t00 * t11 - t01 * t10;
-  return vec3((t11 * y[4] - t01 * y[5]) / det, (t00 * y[5] - t10 * y[4]) / det, 0.0);
+  const mat2 T = transpose(mat2(y[0], y[2] + y[3], y[2] - y[3], y[1]));
+  const vec2 b = vec2(y[4], y[5]);
+  const float norm2 = dot(T[0], T[0]) + dot(T[1], T[1]);
+  if (abs(determinant(T)) > SINGULAR_T * norm2) return vec3(uOrigin.xy + inverse(T) * b, 0.0);
+  if (!(norm2 > 0.0)) return vec3(uOrigin.xy, 0.0);
+  const mat2 Tt = transpose(T);
+  return vec3(uOrigin.xy + inverse(Tt * T + SINGULAR_T * norm2 * mat2(1.0)) * (Tt * b), 0.0);
 #endif
 }
 

@@ -79,8 +79,9 @@ void CudaFrameEvaluator::evaluate(const FrameWeights& W, Eigen::MatrixXd& out) {
   // The kernel reads the weights of one column of C contiguously.
   const RowMatrixXd mainWeights = W.main, tailWeights = W.tail;
   RowMatrixXd result(rows_, dim_);
-  const cuda_device::FrameLaunch launch{mainWeights.data(), tailWeights.data(), mainColumns_, W.mainOffset,
-                                        W.outputs, dim_};
+  cuda_device::FrameLaunch launch{mainWeights.data(), tailWeights.data(), mainColumns_, W.mainOffset,
+                                  W.outputs, dim_, {0, 0, 0}};
+  for (int a = 0; a < dim_ && a < W.origin.size(); ++a) launch.origin[a] = W.origin(a);
   cuda_device::evaluateFrame(frame_, launch, result.data());
   out = result;
   blendExteriorPoints(blends_, out);  // on the host: a few rows

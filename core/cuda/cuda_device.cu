@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cuda/cuda_device.h"
-#include "cuda/frame_point_portable.h"
+#include "frame_point_kernel.h"
 
 namespace somicage {
 namespace cuda_device {
@@ -24,7 +24,7 @@ void check(cudaError_t status, const char* call) {
 }
 
 // One warp per point: the lanes stride over the row's columns (coalesced reads), their partial sums are reduced
-// with shuffles, and lane 0 finishes the point (frame_point_portable.h).
+// with shuffles, and lane 0 finishes the point (frame_point_kernel.h).
 template <typename Scalar, int Dim>
 __global__ void frameKernel(const Scalar* __restrict__ C, int rows, PortableFrameWeights W, double* __restrict__ out) {
   const int p = blockIdx.x * (blockDim.x / kWarp) + threadIdx.x / kWarp;
@@ -35,7 +35,7 @@ __global__ void frameKernel(const Scalar* __restrict__ C, int rows, PortableFram
 #pragma unroll
   for (int o = 0; o < kPortableMaxOutputs; ++o)
     for (int offset = kWarp / 2; offset > 0; offset /= 2) y[o] += __shfl_down_sync(0xffffffffu, y[o], offset);
-  if (lane == 0) finishFramePoint<Dim>(y, W.outputs, out + static_cast<size_t>(p) * Dim);
+  if (lane == 0) finishFramePoint<Dim>(y, W.outputs, W.origin, out + static_cast<size_t>(p) * Dim);
 }
 
 __global__ void somiglianaRowsKernel(const PortableFace* __restrict__ faces, int numFaces, int numVertices,
@@ -144,7 +144,8 @@ void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out) {
   const int blocks = (frame->rows + pointsPerBlock - 1) / pointsPerBlock;
   if (blocks > 0) {
     const PortableFrameWeights W{frame->weights, frame->weights + mainCount, frame->columns, launch.mainColumns,
-                                 launch.mainOffset, launch.outputs};
+                                 launch.mainOffset, launch.outputs,
+                                 {launch.origin[0], launch.origin[1], launch.origin[2]}};
     const auto* floats = static_cast<const float*>(frame->coordinates);
     const auto* doubles = static_cast<const double*>(frame->coordinates);
     if (frame->isFloat && launch.dim == 3)

@@ -40,8 +40,9 @@ struct FrameLaunch {
   const double* mainWeights;
   const double* tailWeights;
   int mainColumns, mainOffset, outputs, dim;
+  double origin[3];  // FrameWeights::origin, zeros when it is empty
 };
-// out: rows by dim, row-major (frame_evaluation.h: y = C W, then T^-1 b when outputs = d^2 + d).
+// out: rows by dim, row-major (frame_evaluation.h: y = C W, then o + T^-1 b when outputs = d^2 + d).
 void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out);
 
 // Rows of nu-independent terms for numPoints points (row-major numPoints by 3), written column-major:

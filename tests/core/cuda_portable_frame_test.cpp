@@ -1,4 +1,4 @@
-// The CUDA frame kernel's per-point code (core/cuda/frame_point_portable.h), run on the host with the 32 lanes of a
+// The CUDA frame kernel's per-point code (core/frame_point_kernel.h), run on the host with the 32 lanes of a
 // warp summed in a loop, against the CPU frame (CageDeformer::deform). This checks the kernel's weight layout and
 // its T^-1 b solve without a GPU; only the shuffle reduction is device-only.
 //
@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "cuda/frame_point_portable.h"
+#include "frame_point_kernel.h"
 #include "deformer.h"
 #include "test_shapes.h"
 
@@ -22,14 +22,15 @@ template <typename Scalar, int Dim>
 Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame,
                               const FrameWeights& W) {
   const RowMatrixXd main = W.main, tail = W.tail;
-  const PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns,
-                                     W.mainOffset, W.outputs};
+  PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns,
+                               W.mainOffset, W.outputs, {0, 0, 0}};
+  for (int a = 0; a < Dim && a < W.origin.size(); ++a) weights.origin[a] = W.origin(a);
   Eigen::MatrixXd out(C.rows(), Dim);
   for (int p = 0; p < C.rows(); ++p) {
     double y[kPortableMaxOutputs] = {0};
     for (int lane = 0; lane < kLanes; ++lane) addFramePartialSums(C.row(p).data(), weights, lane, kLanes, y);
     double point[Dim];
-    finishFramePoint<Dim>(y, W.outputs, point);
+    finishFramePoint<Dim>(y, W.outputs, weights.origin, point);
     for (int a = 0; a < Dim; ++a) out(p, a) = point[a];
   }
   blendExteriorPoints(frame.exteriorBlends, out);

@@ -130,6 +130,45 @@ TEST_P(SomiglianaDeformerTest, FloatStorageStaysWithinItsErrorBudget) {
 INSTANTIATE_TEST_SUITE_P(Dimensions, SomiglianaDeformerTest, ::testing::Values(2, 3),
                          [](const auto& info) { return info.param == 3 ? "3D" : "2D"; });
 
+// Found by fuzz_precompute_deform: a cage collapsed to one point, with blended rotations, made T(x) singular and
+// every point NaN. The regularised solve (core/frame_point_kernel.h) keeps the points finite; with every cage
+// vertex at c the right-hand side is T c, so they all land on c (to round-off of the cage's offset).
+TEST_P(SomiglianaDeformerTest, ACageCollapsedToAPointTakesEveryPointThere) {
+  const Scene s = scene();
+  const int d = s.cage.dim();
+  const Eigen::RowVectorXd c = Eigen::RowVectorXd::Constant(d, -1000.0);
+  Eigen::MatrixXd collapsed = s.cage.vertices;
+  collapsed.rowwise() = c;
+  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  for (const DeformParams& params : {DeformParams{0.352951, -0.999, 0, false}, DeformParams{1, 0.3, 2, true},
+                                     DeformParams{0, 0, 0, true}}) {
+    const FrameWeights W = deformer->frameWeights(collapsed, params);
+    ASSERT_TRUE(W.main.allFinite() && W.tail.allFinite()) << describe(params);
+    const Eigen::MatrixXd out = deformer->deform(collapsed, params);
+    ASSERT_TRUE(out.allFinite()) << describe(params);
+    EXPECT_LE((out.rowwise() - c).rowwise().norm().maxCoeff(), 1e-9 * 1000) << describe(params);
+  }
+}
+
+// The frame is solved about the posed centroid (frame_evaluation.h): moving cage and points far from the origin
+// changes nothing but the offset, in float storage too.
+TEST_P(SomiglianaDeformerTest, FarFromTheOriginFloatStorageKeepsItsAccuracy) {
+  const Scene s = scene();
+  const Eigen::RowVectorXd offset = Eigen::RowVectorXd::Constant(s.cage.dim(), 1e4);
+  Cage far = s.cage;
+  far.vertices.rowwise() += offset;
+  const Eigen::MatrixXd farPoints = s.points.rowwise() + offset;
+  PrecomputeOptions single;
+  single.floatStorage = true;
+  const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.2, 5);
+  const DeformParams params{0.5, 0.3, 1, true};
+  const Eigen::MatrixXd near = makeSomiglianaDeformer(s.cage, s.points, single, noProgress)->deform(pose, params);
+  const Eigen::MatrixXd moved =
+      makeSomiglianaDeformer(far, farPoints, single, noProgress)->deform(pose.rowwise() + offset, params);
+  const double diameter = cageDiameter(s.cage.vertices);
+  EXPECT_LE(((moved.rowwise() - offset) - near).rowwise().norm().maxCoeff(), 1e-5 * diameter);
+}
+
 TEST(SomiglianaDeformer, RejectsInvalidParameters) {
   const Scene s = scene2();
   const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
