@@ -9,8 +9,9 @@
 #include <random>
 #include <vector>
 
-#include "frame_point_kernel.h"
 #include "deformer.h"
+#include "frame_cases.h"
+#include "frame_point_kernel.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -44,37 +45,10 @@ Eigen::MatrixXd framePortable(const FrameCoordinates& frame, const FrameWeights&
 }
 
 void expectPortableFramesMatch(const Cage& cage, const Eigen::MatrixXd& points) {
-  const double diameter = cageDiameter(cage.vertices);
-  Eigen::MatrixXd posed = cage.vertices;
-  for (int i = 0; i < posed.rows(); ++i) posed(i, 1) += 0.3 * cage.vertices(i, 0) * cage.vertices(i, 0);
-  struct Case {
-    Method method;
-    bool floatStorage;
-    double blend;
-  };
-  for (const Case& c : std::vector<Case>{{Method::Somigliana, true, 0.0},
-                                         {Method::Somigliana, true, 1.0},
-                                         {Method::Somigliana, false, 0.0},
-                                         {Method::Somigliana, false, 0.5},
-                                         {Method::Green, false, 0.0},
-                                         {Method::MeanValue, true, 0.0}}) {
-    PrecomputeOptions options;
-    options.floatStorage = c.floatStorage;
-    const auto deformer = makeDeformer(c.method, cage, points, options);
-    DeformParams params;
-    params.blend = c.blend;
-    params.nu = 0.3;
-    params.gamma = 0.5;
-    const Eigen::MatrixXd cpu = deformer->deform(posed, params);
-    const FrameWeights W = deformer->frameWeights(posed, params);
-    const Eigen::MatrixXd portable = cage.dim() == 3 ? framePortable<3>(deformer->frameCoordinates(), W)
-                                                     : framePortable<2>(deformer->frameCoordinates(), W);
-    ASSERT_EQ(portable.rows(), cpu.rows());
-    const double error = (portable - cpu).cwiseAbs().maxCoeff() / diameter;
-    EXPECT_LE(error, c.floatStorage ? 1e-5 : 1e-9)
-        << methodName(c.method) << (c.floatStorage ? " float" : " double") << " blend " << c.blend << " in "
-        << cage.dim() << "D: largest difference " << error << " cage diameters";
-  }
+  test::expectFramesMatchCpu(cage, points, [&](const CageDeformer& deformer, const FrameWeights& W) {
+    return cage.dim() == 3 ? framePortable<3>(deformer.frameCoordinates(), W)
+                           : framePortable<2>(deformer.frameCoordinates(), W);
+  });
 }
 
 TEST(CudaPortableFrame, MatchesCpuFrame3D) {

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+#include "core/frame_cases.h"
 #include "core/test_shapes.h"
 #include "deformer.h"
 
@@ -30,17 +31,6 @@ Eigen::MatrixXd randomPointsIn(const Cage& cage, int count, double shrink, unsig
   for (int p = 0; p < count; ++p)
     for (int a = 0; a < cage.dim(); ++a) points(p, a) = shrink * unit(rng);
   return points;
-}
-
-// A smooth bend and twist of the cage.
-Eigen::MatrixXd posedCage(const Cage& cage) {
-  Eigen::MatrixXd posed = cage.vertices;
-  for (int i = 0; i < posed.rows(); ++i) {
-    const double x = cage.vertices(i, 0);
-    posed(i, 1) += 0.3 * x * x;
-    if (cage.dim() == 3) posed(i, 2) += 0.2 * std::sin(2 * x) * cage.vertices(i, 1);
-  }
-  return posed;
 }
 
 TEST(CudaBackend, StatusExplainsItself) {
@@ -69,40 +59,13 @@ TEST(CudaBackend, WithoutDeviceEveryCallThrowsCudaError) {
                CudaError);
 }
 
-struct FrameCase {
-  Method method;
-  bool floatStorage;
-  double blend;
-};
-
 void expectFramesMatch(const Cage& cage, const Eigen::MatrixXd& points) {
-  const double diameter = cageDiameter(cage.vertices);
-  const Eigen::MatrixXd posed = posedCage(cage);
-  for (const FrameCase& c : std::vector<FrameCase>{{Method::Somigliana, true, 0.0},
-                                                   {Method::Somigliana, true, 1.0},
-                                                   {Method::Somigliana, true, 0.4},
-                                                   {Method::Somigliana, false, 0.0},
-                                                   {Method::Somigliana, false, 1.0},
-                                                   {Method::Green, true, 0.0},
-                                                   {Method::MeanValue, false, 0.0}}) {
-    PrecomputeOptions options;
-    options.floatStorage = c.floatStorage;
-    const auto deformer = makeDeformer(c.method, cage, points, options);
-    DeformParams params;
-    params.blend = c.blend;
-    params.nu = 0.3;
-    params.gamma = 0.5;
-    const Eigen::MatrixXd cpu = deformer->deform(posed, params);
-    CudaFrameEvaluator gpu(deformer->frameCoordinates(), cage.dim());
+  test::expectFramesMatchCpu(cage, points, [&](const CageDeformer& deformer, const FrameWeights& W) {
+    CudaFrameEvaluator gpu(deformer.frameCoordinates(), cage.dim());
     Eigen::MatrixXd out;
-    gpu.evaluate(deformer->frameWeights(posed, params), out);
-    ASSERT_EQ(out.rows(), cpu.rows());
-    ASSERT_EQ(out.cols(), cpu.cols());
-    const double error = (out - cpu).cwiseAbs().maxCoeff() / diameter;
-    EXPECT_LE(error, c.floatStorage ? 1e-5 : 1e-9)
-        << methodName(c.method) << (c.floatStorage ? " float" : " double") << " blend " << c.blend << " in "
-        << cage.dim() << "D: largest difference " << error << " cage diameters";
-  }
+    gpu.evaluate(W, out);
+    return out;
+  });
 }
 
 TEST(CudaBackend, FrameMatchesCpu3D) {
