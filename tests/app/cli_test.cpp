@@ -50,18 +50,8 @@ void expectBadInput(const std::vector<BadInput>& cases) {
   }
 }
 
-std::vector<std::string> deformArgs(std::vector<std::string> extra, const std::string& out = "/tmp/unused.obj") {
-  std::vector<std::string> args = {"deform",
-                                   "--cage",
-                                   dataFile("cube_cage.obj"),
-                                   "--posed",
-                                   dataFile("cube_cage.obj"),
-                                   "--mesh",
-                                   dataFile("pyramid_mesh.obj"),
-                                   "--out",
-                                   out};
-  args.insert(args.end(), extra.begin(), extra.end());
-  return args;
+std::vector<std::string> deformArgs(const std::vector<std::string>& extra) {
+  return cubeDeformArgs("/tmp/unused.obj", extra);
 }
 
 TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {

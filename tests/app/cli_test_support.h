@@ -27,6 +27,14 @@ inline const fs::path kModelsDir = SOMICAGE_MODELS_DIR;
 
 inline std::string dataFile(const std::string& name) { return (kDataDir / name).string(); }
 
+// `somicage deform` of the pyramid mesh in the cube cage at rest, writing out, with extra options after the files.
+inline std::vector<std::string> cubeDeformArgs(const std::string& out, const std::vector<std::string>& extra = {}) {
+  std::vector<std::string> args = {"deform", "--cage", dataFile("cube_cage.obj"), "--posed", dataFile("cube_cage.obj"),
+                                   "--mesh", dataFile("pyramid_mesh.obj"),        "--out",   out};
+  args.insert(args.end(), extra.begin(), extra.end());
+  return args;
+}
+
 inline std::string readFile(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream out;

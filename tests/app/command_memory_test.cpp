@@ -17,18 +17,6 @@ class MemoryLimit {
   ~MemoryLimit() { ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES"); }
 };
 
-std::vector<std::string> deformArgs(const std::string& out) {
-  return {"deform",
-          "--cage",
-          dataFile("cube_cage.obj"),
-          "--posed",
-          dataFile("cube_cage.obj"),
-          "--mesh",
-          dataFile("pyramid_mesh.obj"),
-          "--out",
-          out};
-}
-
 std::vector<std::string> benchArgs() {
   return {"bench",    "--cage", dataFile("cube_cage.obj"), "--mesh", dataFile("pyramid_mesh.obj"), "--frames", "1",
           "--repeat", "1",      "--baseline-points",       "0"};
@@ -38,7 +26,7 @@ std::vector<std::string> benchArgs() {
 TEST(CliMemory, RefusesAPrecomputeThatDoesNotFit) {
   ScratchDir dir;
   const MemoryLimit limit("1000");
-  for (const std::vector<std::string>& args : {deformArgs(dir.file("out.obj")), benchArgs()}) {
+  for (const std::vector<std::string>& args : {cubeDeformArgs(dir.file("out.obj")), benchArgs()}) {
     SCOPED_TRACE(args[0]);
     const RunResult r = runSomicage(args);
     EXPECT_EQ(r.exitCode, 2) << r;
@@ -54,7 +42,7 @@ TEST(CliMemory, RefusesAPrecomputeThatDoesNotFit) {
 TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
   ScratchDir dir;
   const MemoryLimit limit("50000");  // the ~8 kB needed fit in 85% of it, and take more than 10%
-  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  const RunResult r = runSomicage(cubeDeformArgs(dir.file("out.obj")));
   EXPECT_EQ(r.exitCode, 0) << r;
   // 5 points by 142 columns (8 vertices, 12 faces) in double; the rest depends on the thread count.
   EXPECT_NE(r.err.find("somicage deform: estimated memory: 6 kB of coordinates, "), std::string::npos) << r;
@@ -65,7 +53,7 @@ TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
 
 TEST(CliMemory, ASmallPrecomputeKeepsItsSingleSummaryLine) {
   ScratchDir dir;
-  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  const RunResult r = runSomicage(cubeDeformArgs(dir.file("out.obj")));
   EXPECT_EQ(r.exitCode, 0) << r;
   EXPECT_EQ(r.errLines(), 1) << r;
   EXPECT_EQ(r.err.find("estimated memory"), std::string::npos) << r;
@@ -74,7 +62,7 @@ TEST(CliMemory, ASmallPrecomputeKeepsItsSingleSummaryLine) {
 TEST(CliMemory, AMalformedLimitIsABadInput) {
   ScratchDir dir;
   const MemoryLimit limit("8 GB");
-  const RunResult r = runSomicage(deformArgs(dir.file("out.obj")));
+  const RunResult r = runSomicage(cubeDeformArgs(dir.file("out.obj")));
   EXPECT_EQ(r.exitCode, 2) << r;
   EXPECT_EQ(r.errLines(), 1) << r;
   EXPECT_NE(r.err.find("SOMICAGE_MEMORY_LIMIT_BYTES: '8 GB' is not a whole number of bytes"), std::string::npos) << r;
