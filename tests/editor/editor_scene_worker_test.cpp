@@ -142,16 +142,22 @@ void loadDemo(AppState& state) {
   ASSERT_EQ(state.deformers.size(), 2u);
 }
 
-// What must survive: the scene, its deformers (the same objects), the pose, and a working deformation.
-void expectSceneKept(AppState& state, const std::shared_ptr<const Scene>& scene, const DeformerSet& deformers,
-                     const Eigen::MatrixXd& pose) {
-  EXPECT_EQ(state.scene, scene);
-  EXPECT_EQ(state.deformers, deformers);
-  EXPECT_EQ(state.pose, pose);
+// What must survive a failed or cancelled load: the scene, its deformers (the same objects) and the pose.
+struct KeptScene {
+  std::shared_ptr<const Scene> scene;
+  DeformerSet deformers;
+  Eigen::MatrixXd pose;
+};
+
+// ... and a working deformation.
+void expectSceneKept(AppState& state, const KeptScene& kept) {
+  EXPECT_EQ(state.scene, kept.scene);
+  EXPECT_EQ(state.deformers, kept.deformers);
+  EXPECT_EQ(state.pose, kept.pose);
   EXPECT_FALSE(state.loadingScene);
   state.deformDirty = true;
   EXPECT_TRUE(updateDeformation(state));
-  EXPECT_GT((displayedPoints(state, Method::Somigliana) - scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_GT((displayedPoints(state, Method::Somigliana) - kept.scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
 }
 
 // A bent pose, so that a kept deformation is told apart from the rest mesh.
@@ -162,15 +168,18 @@ void bend(AppState& state) {
   setPose(state, pose);
 }
 
+// The bent 3D demo, installed, and what of it must be kept.
+KeptScene loadBentDemo(AppState& state) {
+  loadDemo(state);
+  bend(state);
+  return {state.scene, state.deformers, state.pose};
+}
+
 }  // namespace
 
 TEST(EditorWorker, AFailedLoadKeepsTheCurrentScene) {
   AppState state;
-  loadDemo(state);
-  bend(state);
-  const auto scene = state.scene;
-  const DeformerSet deformers = state.deformers;
-  const Eigen::MatrixXd pose = state.pose;
+  const KeptScene kept = loadBentDemo(state);
   requestSceneFiles(state, "/nonexistent/mesh.obj", "/nonexistent/cage.obj");
   EXPECT_TRUE(state.loadingScene);
   std::optional<PrecomputeOutcome> out = state.worker.wait();
@@ -178,16 +187,12 @@ TEST(EditorWorker, AFailedLoadKeepsTheCurrentScene) {
   installOutcome(state, std::move(*out));
   ASSERT_EQ(state.errors.size(), 1u);
   EXPECT_NE(state.errors.front().find("/nonexistent/"), std::string::npos) << state.errors.front();  // names the file
-  expectSceneKept(state, scene, deformers, pose);
+  expectSceneKept(state, kept);
 }
 
 TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   AppState state;
-  loadDemo(state);
-  bend(state);
-  const auto scene = state.scene;
-  const DeformerSet deformers = state.deformers;
-  const Eigen::MatrixXd pose = state.pose;
+  const KeptScene kept = loadBentDemo(state);
   ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "10000", 1);  // 10 kB: far less than the 2D demo needs
   requestDemo(state, 2);
   std::optional<PrecomputeOutcome> out = state.worker.wait();
@@ -198,16 +203,12 @@ TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   ASSERT_EQ(state.errors.size(), 1u);
   EXPECT_NE(state.errors.front().find("points need"), std::string::npos) << state.errors.front();
   EXPECT_NE(state.errors.front().find("but only 10 kB are free"), std::string::npos) << state.errors.front();
-  expectSceneKept(state, scene, deformers, pose);
+  expectSceneKept(state, kept);
 }
 
 TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   AppState state;
-  loadDemo(state);
-  bend(state);
-  const auto scene = state.scene;
-  const DeformerSet deformers = state.deformers;
-  const Eigen::MatrixXd pose = state.pose;
+  const KeptScene kept = loadBentDemo(state);
   // A loader that waits for the cancel, so that it lands before any precompute (deterministically).
   PrecomputeRequest request;
   PrecomputeWorker& worker = state.worker;
@@ -229,5 +230,5 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   installOutcome(state, std::move(*out));
   EXPECT_TRUE(state.errors.empty());
   EXPECT_EQ(state.statusMessage, "precomputation cancelled");
-  expectSceneKept(state, scene, deformers, pose);
+  expectSceneKept(state, kept);
 }
