@@ -15,19 +15,13 @@
 #include "boundary_conditions.h"
 #include "deformer.h"
 #include "somigliana_coordinates.h"
+#include "method_cases.h"
 #include "test_shapes.h"
 
 namespace somicage {
 namespace {
 
-struct Case {
-  std::string name;
-  int dim;
-  Method method;
-};
-
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-std::string caseName(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+using Case = test::MethodCase;
 
 // Non-convex cages: a bumpy sphere and a star.
 Cage testCage(int dim) { return dim == 3 ? test::makeBumpySphere(1) : test::makeStarPolygon(6); }
@@ -216,7 +210,7 @@ INSTANTIATE_TEST_SUITE_P(Methods, ExteriorPointsTest,
                          ::testing::Values(Case{"somigliana3d", 3, Method::Somigliana},
                                            Case{"somigliana2d", 2, Method::Somigliana},
                                            Case{"green3d", 3, Method::Green}, Case{"green2d", 2, Method::Green}),
-                         caseName);
+                         test::methodCaseName);
 
 TEST(ExteriorPoints, ProxiesAreInsideWithAccurateIntegrals) {
   // h = 1e-5 diameters puts the proxies of face, edge and vertex points inside (winding number 1) with their

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "core/method_cases.h"
 #include "core/test_shapes.h"
 #include "deformer.h"
 #include "errors.h"
@@ -139,15 +140,7 @@ std::vector<DeformParams> somiglianaParams() {
   return all;
 }
 
-struct Case {
-  std::string name;
-  int dim;
-  Method method;
-};
-
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
-
-std::string caseName(const ::testing::TestParamInfo<Case>& info) { return info.param.name; }
+using Case = test::MethodCase;
 
 std::vector<Case> allCases() {
   std::vector<Case> cases;
@@ -189,7 +182,7 @@ TEST_P(GpuDeformerTest, MatchesCpu) {
   std::printf("[ %s ] largest GPU - CPU difference: %.3g of the cage diameter\n", c.name.c_str(), worst);
 }
 
-INSTANTIATE_TEST_SUITE_P(AllMethods, GpuDeformerTest, ::testing::ValuesIn(allCases()), caseName);
+INSTANTIATE_TEST_SUITE_P(AllMethods, GpuDeformerTest, ::testing::ValuesIn(allCases()), test::methodCaseName);
 
 // Points outside the cage, in the blend band and beyond, and exactly on it (core/exterior_points.h): the GPU's
 // second pass (shaders/exterior_blend.comp.glsl) gives what the CPU's blend gives, within the same tolerance.
