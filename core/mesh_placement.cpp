@@ -45,14 +45,15 @@ std::optional<std::string> describeMeshPlacement(const MeshPlacement& placement,
       ": are the two files in different units (millimetres and metres, inches and centimetres)? Scale one of them "
       "to match the other";
   if (placement.sizeRatio > kMeshLargerThanCage)
-    return files + " do not fit: the mesh is " + readable(placement.sizeRatio) + " times the size of the cage" +
-           units + "; points outside the cage only follow its best-fit similarity";
+    return files + " do not fit: the mesh is " + readable(placement.sizeRatio) + " times the size of the cage" + units +
+           "; points outside the cage only follow its best-fit similarity";
   if (placement.sizeRatio > 0 && placement.sizeRatio < kMeshSmallerThanCage)
     return files + " do not fit: the mesh is " + readable(1 / placement.sizeRatio) + " times smaller than the cage" +
            units;
   if (placement.disjoint)
-    return files + " do not overlap: the mesh lies beside the cage, so no point of it is deformed by the cage's "
-                   "coordinates; move one of them (different origins?) so that the cage encloses the mesh";
+    return files +
+           " do not overlap: the mesh lies beside the cage, so no point of it is deformed by the cage's "
+           "coordinates; move one of them (different origins?) so that the cage encloses the mesh";
   return std::nullopt;
 }
 

@@ -4,9 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include <array>
-
 #include <Eigen/LU>
+#include <array>
 
 #include "frame_evaluation.h"
 
