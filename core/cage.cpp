@@ -46,6 +46,18 @@ void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points) {
   SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
 }
 
+double signedFaceMeasure(const Cage& cage, int j, const Eigen::RowVectorXd& origin) {
+  if (cage.dim() == 3) {
+    const Eigen::Vector3d a = (cage.vertices.row(cage.faces(j, 0)) - origin).transpose();
+    const Eigen::Vector3d b = (cage.vertices.row(cage.faces(j, 1)) - origin).transpose();
+    const Eigen::Vector3d c = (cage.vertices.row(cage.faces(j, 2)) - origin).transpose();
+    return a.dot(b.cross(c)) / 6.0;
+  }
+  const Eigen::Vector2d a = (cage.vertices.row(cage.faces(j, 0)) - origin).transpose();
+  const Eigen::Vector2d b = (cage.vertices.row(cage.faces(j, 1)) - origin).transpose();
+  return 0.5 * (a.x() * b.y() - a.y() * b.x());
+}
+
 double cageDiameter(const Eigen::MatrixXd& vertices) {
   if (vertices.rows() == 0) return 0.0;
   return (vertices.colwise().maxCoeff() - vertices.colwise().minCoeff()).norm();

@@ -25,6 +25,11 @@ Cage makePolygonCage(const Eigen::MatrixXd& loop);
 Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices);
 Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices);
 
+// Face j's share of the cage's signed volume (3D) or area (2D), measured from origin (1 by d): the tetrahedron
+// (origin, face) or triangle (origin, edge). Summed over a closed cage it is the enclosed measure, positive when
+// the normals point out; an origin near the cage keeps the sum's cancellation small.
+double signedFaceMeasure(const Cage& cage, int j, const Eigen::RowVectorXd& origin);
+
 // Internal precondition of every precompute: a 2D or 3D cage whose faces have d corners, and points (#P by d) of
 // the same dimension. Input boundaries (obj_io, the CLI) report bad input before it gets here.
 void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points);

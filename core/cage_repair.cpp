@@ -61,18 +61,7 @@ bool faceNeighbours(const Cage& cage, std::vector<std::vector<Neighbour>>& neigh
 
 double signedMeasure(const Cage& cage, const std::vector<int>& faces, const Eigen::RowVectorXd& origin) {
   double sum = 0.0;
-  for (const int j : faces) {
-    if (cage.dim() == 3) {
-      const Eigen::Vector3d a = cage.vertices.row(cage.faces(j, 0)) - origin;
-      const Eigen::Vector3d b = cage.vertices.row(cage.faces(j, 1)) - origin;
-      const Eigen::Vector3d c = cage.vertices.row(cage.faces(j, 2)) - origin;
-      sum += a.dot(b.cross(c)) / 6.0;
-    } else {
-      const Eigen::Vector2d a = cage.vertices.row(cage.faces(j, 0)) - origin;
-      const Eigen::Vector2d b = cage.vertices.row(cage.faces(j, 1)) - origin;
-      sum += 0.5 * (a.x() * b.y() - a.y() * b.x());
-    }
-  }
+  for (const int j : faces) sum += signedFaceMeasure(cage, j, origin);
   return sum;
 }
 

@@ -99,26 +99,15 @@ void measureGeometry(const Cage& cage, CageReport& report) {
   const double diameter = report.diameter;
   const double minMeasure = cage.dim() == 3 ? CageReport::kDegenerateTolerance * diameter * diameter
                                             : CageReport::kDegenerateTolerance * diameter;
+  const Eigen::VectorXd areas = faceAreas(cage, V);  // lengths in 2D
   double volume = 0.0;
   for (int j = 0; j < cage.numFaces(); ++j) {
     bool repeated = false;
     for (int k = 0; k < cage.faces.cols(); ++k) {
       for (int l = k + 1; l < cage.faces.cols(); ++l) repeated = repeated || cage.faces(j, k) == cage.faces(j, l);
     }
-    double measure;
-    if (cage.dim() == 3) {
-      const Eigen::Vector3d a = (V.row(cage.faces(j, 0)) - centre).transpose();
-      const Eigen::Vector3d b = (V.row(cage.faces(j, 1)) - centre).transpose();
-      const Eigen::Vector3d c = (V.row(cage.faces(j, 2)) - centre).transpose();
-      volume += a.dot(b.cross(c)) / 6.0;
-      measure = 0.5 * (b - a).cross(c - a).norm();
-    } else {
-      const Eigen::Vector2d a = (V.row(cage.faces(j, 0)) - centre).transpose();
-      const Eigen::Vector2d b = (V.row(cage.faces(j, 1)) - centre).transpose();
-      volume += 0.5 * (a.x() * b.y() - a.y() * b.x());
-      measure = (b - a).norm();
-    }
-    if (repeated || !(measure > minMeasure)) report.degenerateFaces.push_back(j);
+    volume += signedFaceMeasure(cage, j, centre);
+    if (repeated || !(areas(j) > minMeasure)) report.degenerateFaces.push_back(j);
   }
   report.signedVolume = volume;
 

@@ -88,7 +88,7 @@ constexpr int kBlockRows = 4;
 
 // The next block's rows (contiguous bytes [next, end)) asked into L2 a few cache lines per SIMD step of the current
 // block's passes (one more than an even spread, which measured best: done within about the first pass).
-// FIREHYDRANT, local variant: 11.1 ms without it, 10.3 with two lines per step of the first pass only, 8.2 so.
+// FIREHYDRANT, local variant, same machine state: 10.3-10.5 ms prefetching in the first pass only, 7.9-8.5 ms so.
 struct BlockPrefetch {
   const char* next = nullptr;
   const char* end = nullptr;

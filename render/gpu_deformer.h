@@ -1,9 +1,9 @@
 // The editor's per-frame deformation on the GPU: an OpenGL 4.3 compute shader that evaluates exactly what
-// evaluateFrame() (core/frame_evaluation.h) does on the CPU, for every method and with the exterior blend, and writes the deformed positions
-// straight into a MeshRenderer's vertex buffer; two more passes compute its smooth vertex normals there. Per frame
-// only W (K by at most 12 floats) goes up; positions never come back to the CPU (readBack() is for tests).
-// No GL types in this header; create, use and destroy only while the GL context that initOpenGl() loaded is
-// current.
+// evaluateFrame() (core/frame_evaluation.h) does on the CPU, for every method and with the exterior blend, and
+// writes the deformed positions straight into a MeshRenderer's vertex buffer; two more passes compute its smooth
+// vertex normals there. Per frame only W (K by at most 12 floats) goes up; positions never come back to the CPU
+// (readBack() is for tests). No GL types in this header; create, use and destroy only while the GL context that
+// initOpenGl() loaded is current.
 //
 // Precision: C is stored in float on the GPU (converted once from double storage) and every frame sums K float
 // products per output, then solves the 3x3 (2x2) system of Eq. 11 in float. The tests (tests/editor/
@@ -40,7 +40,8 @@ class GpuDeformer {
   GpuDeformer& operator=(GpuDeformer&&) noexcept;
 
   // Uploads C = deformer.frameCoordinates() (#P + 2 #E by K, converted to float when stored in double) and its
-  // exterior blends, once per precompute. Keeps a reference to `deformer` for frameWeights(): it must outlive this upload.
+  // exterior blends, once per precompute. Keeps a reference to `deformer` for frameWeights(): it must outlive
+  // this upload.
   void upload(const CageDeformer& deformer);
   bool uploaded() const;
   int numPoints() const;

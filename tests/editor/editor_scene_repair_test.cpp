@@ -84,7 +84,6 @@ TEST(EditorSceneRepair, AMeshInOtherUnitsGetsANotice) {
   saveObj(millimetres, loadMesh(files.mesh).vertices * 1000, PolygonMesh{});
   const Scene scene = loadScene(millimetres, cage);
   ASSERT_EQ(scene.notices.size(), 1u);
-  EXPECT_EQ(scene.notices[0].rfind("mesh warning: the mesh " + millimetres + " and the cage " + cage + " do not fit", 0),
-            0u)
-      << scene.notices[0];
+  const std::string expected = "mesh warning: the mesh " + millimetres + " and the cage " + cage + " do not fit";
+  EXPECT_EQ(scene.notices[0].rfind(expected, 0), 0u) << scene.notices[0];
 }
