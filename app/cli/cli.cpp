@@ -18,6 +18,8 @@ const std::vector<CliCommand>& cliCommands() {
       {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
       {"deform", "deform a mesh (or point set) with a posed cage and write it as OBJ", runDeformCommand, deformUsage},
       {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
+      {"cage", "make a cage that strictly encloses a mesh, with at most N faces, and write it as OBJ", runCageCommand,
+       cageUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},
   };

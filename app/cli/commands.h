@@ -29,6 +29,8 @@ int runDeformCommand(const std::vector<std::string>& args);
 std::string deformUsage();
 int runCheckCommand(const std::vector<std::string>& args);
 std::string checkUsage();
+int runCageCommand(const std::vector<std::string>& args);
+std::string cageUsage();
 int runBenchCommand(const std::vector<std::string>& args);
 std::string benchUsage();
 
