@@ -61,7 +61,9 @@ Attempt attempt(const Eigen::MatrixXd& unitVertices, const Eigen::MatrixXi& tria
   OffsetSurfaceOptions offset;
   offset.voxelSize = voxel;
   offset.offset = margin;
-  offset.barrier = 0.5 * margin;
+  // A quarter of the margin leaves the coarse cages room to move; at least a voxel, or marching cubes may leave holes
+  // in a barrier that close to the mesh.
+  offset.barrier = std::max(0.25 * margin, voxel);
   offset.closing = std::max(2.0 * voxel, 0.5 / std::sqrt(double(options.maxFaces)));
   const OffsetSurfaces surfaces = offsetSurfaces(unitVertices, triangles, offset);
   if (!progress(0.15)) throw Cancelled();
@@ -69,8 +71,9 @@ Attempt attempt(const Eigen::MatrixXd& unitVertices, const Eigen::MatrixXi& tria
   SimplificationOptions simplification;
   simplification.maxFaces = options.maxFaces;
   simplification.minAngleDegrees = options.minAngleDegrees;
-  const SimplificationResult simplified = simplifyOutsideBarrier(
-      surfaces.surface, surfaces.barrier, simplification, [&](double done) { return progress(0.15 + 0.75 * done); });
+  const SimplificationResult simplified =
+      simplifyOutsideBarrier(surfaces.surface, surfaces.barrier, unitVertices, triangles, simplification,
+                             [&](double done) { return progress(0.15 + 0.75 * done); });
   if (!simplified.budgetMet) {
     std::ostringstream why;
     why << "the simplification stopped at " << simplified.surface.numFaces() << " faces";
@@ -146,7 +149,8 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
   generated.margin = options.margin > 0 ? std::max(options.margin, 1.5 * voxel) : 2.0 * voxel;
   std::string failures;
   for (generated.attempts = 1; generated.attempts <= kMaxAttempts; ++generated.attempts) {
-    const double from = double(generated.attempts - 1) / kMaxAttempts, span = 1.0 / kMaxAttempts;
+    // The first try takes 70% of the bar, each retry 70% of what is left.
+    const double from = 1.0 - std::pow(0.3, generated.attempts - 1), span = 0.7 * (1.0 - from);
     Attempt tried = attempt(unitVertices, triangles, center, diagonal, vertices, options, generated.margin, voxel,
                             [&](double done) { return progress(from + span * done); });
     if (tried.failure.empty()) {

@@ -3,6 +3,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
@@ -33,6 +34,9 @@ using Face = Mesh::Face_index;
 using Vertex = Mesh::Vertex_index;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 using Profile = SMS::Edge_profile<Mesh>;
+using Triangles = std::vector<Kernel::Triangle_3>;
+using SoupTree =
+    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
 
 // A closed oriented polygon soup as a halfedge mesh; vertices where marching cubes made a pinch are duplicated.
 Mesh toMesh(const Cage& cage) {
@@ -74,6 +78,31 @@ double minAngle(const Point& a, const Point& b, const Point& c) {
     return std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
   };
   return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
+}
+
+// Whether two triangles meet other than at the corners they share: triangles that share corners cross only when an
+// edge of one pierces the other away from them, or (sharing an edge) when they are folded flat onto each other.
+bool trianglesCross(const Kernel::Triangle_3& t, const std::array<Point, 3>& q) {
+  int shared = 0, sharedAt[3] = {-1, -1, -1};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (t[i] == q[j]) sharedAt[i] = j, ++shared;
+  const Kernel::Triangle_3 u(q[0], q[1], q[2]);
+  if (shared == 0) return CGAL::do_intersect(t, u);
+  if (shared == 3) return true;  // the same triangle twice
+  if (shared == 2) {             // edge neighbours overlap only when folded flat onto each other
+    int o = 0, r = 0;
+    while (sharedAt[r] >= 0) ++r;                                          // t's corner off the shared edge
+    while (o == sharedAt[0] || o == sharedAt[1] || o == sharedAt[2]) ++o;  // u's
+    const int s0 = (r + 1) % 3, s1 = (r + 2) % 3;
+    return CGAL::orientation(t[0], t[1], t[2], q[o]) == CGAL::COPLANAR &&
+           CGAL::coplanar_orientation(t[s0], t[s1], t[r], q[o]) == CGAL::POSITIVE;
+  }
+  int i = 0;
+  while (sharedAt[i] < 0) ++i;
+  const int j = sharedAt[i];
+  return CGAL::do_intersect(Kernel::Segment_3(t[(i + 1) % 3], t[(i + 2) % 3]), u) ||
+         CGAL::do_intersect(Kernel::Segment_3(q[(j + 1) % 3], q[(j + 2) % 3]), t);
 }
 
 // The current triangles of the surface in a uniform grid of cells over its bounding box. A triangle is (re)entered
@@ -133,23 +162,11 @@ class TriangleGrid {
         for (int z = z0; z <= z1; ++z) visit(cells_[(std::size_t(x) * resolution_ + y) * resolution_ + z]);
   }
 
-  // Triangles that share corners meet there: they cross only when an edge of one pierces the other away from them.
   bool crossesFace(const Kernel::Triangle_3& t, Face f) const {
     std::array<Point, 3> q;
     int k = 0;
     for (Vertex v : CGAL::vertices_around_face(mesh_.halfedge(f), mesh_)) q[k++] = mesh_.point(v);
-    int shared = 0, sharedAt[3] = {-1, -1, -1};
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j)
-        if (t[i] == q[j]) sharedAt[i] = j, ++shared;
-    const Kernel::Triangle_3 u(q[0], q[1], q[2]);
-    if (shared == 0) return CGAL::do_intersect(t, u);
-    if (shared >= 2) return false;  // an edge neighbour: folds are the normal test's business
-    int i = 0;
-    while (sharedAt[i] < 0) ++i;
-    const int j = sharedAt[i];
-    return CGAL::do_intersect(Kernel::Segment_3(t[(i + 1) % 3], t[(i + 2) % 3]), u) ||
-           CGAL::do_intersect(Kernel::Segment_3(q[(j + 1) % 3], q[(j + 2) % 3]), t);
+    return trianglesCross(t, q);
   }
 
   const Mesh& mesh_;
@@ -163,8 +180,8 @@ class TriangleGrid {
 // Refuses collapses whose new triangles would fold, be needles, cross the barrier or cross the surface.
 class EnclosureFilter {
  public:
-  EnclosureFilter(const Tree& barrier, TriangleGrid& grid, double minAngle)
-      : barrier_(barrier), grid_(grid), minAngle_(minAngle) {}
+  EnclosureFilter(const Tree& barrier, const SoupTree& mesh, TriangleGrid& grid, double minAngle)
+      : barrier_(barrier), mesh_(mesh), grid_(grid), minAngle_(minAngle) {}
 
   boost::optional<Point> operator()(const Profile& profile, boost::optional<Point> placement) const {
     if (!placement) return placement;
@@ -176,24 +193,44 @@ class EnclosureFilter {
       for (Face f : CGAL::faces_around_target(mesh.halfedge(end), mesh))
         if (f != Mesh::null_face()) replaced.push_back(f);
     const Profile::Triangle_vector& triangles = profile.triangles();
+    // A collapse may make an angle below the bound when it improves on the worst one it replaces: otherwise the
+    // slivers that marching cubes makes could never be collapsed away.
+    double bound = minAngle_;
+    for (const Profile::Triangle& t : triangles)
+      bound = std::min(bound, minAngle(mesh.point(t.v0), mesh.point(t.v1), mesh.point(t.v2)));
     auto it = triangles.begin();
     if (profile.left_face_exists()) ++it;
     if (profile.right_face_exists()) ++it;
+    std::vector<std::array<Point, 3>> remade;
     for (; it != triangles.end(); ++it) {  // the triangles that remain, with p in place of their second corner
       const Point& a = mesh.point(it->v0);
       const Point& b = mesh.point(it->v1);
       const Point& c = mesh.point(it->v2);
       const Kernel::Vector_3 before = CGAL::cross_product(b - a, c - a), after = CGAL::cross_product(p - a, c - a);
       if (!(before * after > 0)) return boost::none;
-      if (minAngle(a, p, c) < minAngle_) return boost::none;
-      if (barrier_.do_intersect(Kernel::Triangle_3(a, p, c))) return boost::none;
+      if (minAngle(a, p, c) < bound) return boost::none;
+      const Kernel::Triangle_3 made(a, p, c);
+      if (barrier_.do_intersect(made) || mesh_.do_intersect(made)) return boost::none;
       if (grid_.crosses(a, p, c, replaced)) return boost::none;
+      for (const std::array<Point, 3>& other : remade)
+        if (trianglesCross(made, other)) return boost::none;
+      remade.push_back({a, p, c});
+    }
+    // The surface sweeps through the tetrahedra between p and the faces it replaces: no part of the mesh may lie
+    // there, or the collapse would jump over it (a thin part, a boundary) without any new face crossing it.
+    for (Face f : replaced) {
+      std::array<Point, 3> q;
+      int k = 0;
+      for (Vertex v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) q[k++] = mesh.point(v);
+      if (CGAL::orientation(q[0], q[1], q[2], p) == CGAL::COPLANAR) continue;  // no volume to sweep
+      if (mesh_.do_intersect(Kernel::Tetrahedron_3(q[0], q[1], q[2], p))) return boost::none;
     }
     return placement;
   }
 
  private:
   const Tree& barrier_;
+  const SoupTree& mesh_;
   TriangleGrid& grid_;
   double minAngle_;
 };
@@ -230,14 +267,22 @@ struct BudgetStop {
 }  // namespace
 
 SimplificationResult simplifyOutsideBarrier(const Cage& surface, const Cage& barrier,
+                                            const Eigen::MatrixXd& meshVertices, const Eigen::MatrixXi& meshTriangles,
                                             const SimplificationOptions& options, const ProgressCallback& progress) {
   Mesh mesh = toMesh(surface);
   const Mesh barrierMesh = toMesh(barrier);
   Tree barrierTree(faces(barrierMesh).first, faces(barrierMesh).second, barrierMesh);
   barrierTree.accelerate_distance_queries();
+  Triangles meshSoup;
+  const auto corner = [&](int j, int k) {
+    const int i = meshTriangles(j, k);
+    return Point(meshVertices(i, 0), meshVertices(i, 1), meshVertices(i, 2));
+  };
+  for (int j = 0; j < meshTriangles.rows(); ++j) meshSoup.emplace_back(corner(j, 0), corner(j, 1), corner(j, 2));
+  const SoupTree meshTree(meshSoup.begin(), meshSoup.end());
   TriangleGrid grid(mesh, 32);
   const double minAngleRadians = options.minAngleDegrees * M_PI / 180.0;
-  const EnclosureFilter filter(barrierTree, grid, minAngleRadians);
+  const EnclosureFilter filter(barrierTree, meshTree, grid, minAngleRadians);
   const std::size_t maxEdges = std::size_t(options.maxFaces) * 3 / 2;
   Visitor visitor(grid, progress, mesh.number_of_edges(), maxEdges);
   const BudgetStop stop{maxEdges, visitor.cancelled};

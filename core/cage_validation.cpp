@@ -458,8 +458,7 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
                : "the polygon is clockwise (" + what + value.str() + "): reverse the order of its vertices");
     } else {
       problems.push_back("the cage encloses (nearly) no " + std::string(is3d ? "volume" : "area") + " (" + what +
-                         value.str() + " for a diameter of " + diameter.str() +
-                         "): " +
+                         value.str() + " for a diameter of " + diameter.str() + "): " +
                          (is3d ? "its faces must bound a solid, with normals pointing out"
                                : "its vertices must go counter-clockwise around an area"));
     }

@@ -14,8 +14,8 @@
 
 #include "boundary_conditions.h"
 #include "deformer.h"
-#include "somigliana_coordinates.h"
 #include "method_cases.h"
+#include "somigliana_coordinates.h"
 #include "test_shapes.h"
 
 namespace somicage {

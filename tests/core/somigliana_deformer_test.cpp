@@ -140,8 +140,8 @@ TEST_P(SomiglianaDeformerTest, ACageCollapsedToAPointTakesEveryPointThere) {
   Eigen::MatrixXd collapsed = s.cage.vertices;
   collapsed.rowwise() = c;
   const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
-  for (const DeformParams& params : {DeformParams{0.352951, -0.999, 0, false}, DeformParams{1, 0.3, 2, true},
-                                     DeformParams{0, 0, 0, true}}) {
+  for (const DeformParams& params :
+       {DeformParams{0.352951, -0.999, 0, false}, DeformParams{1, 0.3, 2, true}, DeformParams{0, 0, 0, true}}) {
     const FrameWeights W = deformer->frameWeights(collapsed, params);
     ASSERT_TRUE(W.main.allFinite() && W.tail.allFinite()) << describe(params);
     const Eigen::MatrixXd out = deformer->deform(collapsed, params);
@@ -172,9 +172,9 @@ TEST_P(SomiglianaDeformerTest, FarFromTheOriginFloatStorageKeepsItsAccuracy) {
 TEST(SomiglianaDeformer, RejectsInvalidParameters) {
   const Scene s = scene2();
   const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
-  for (const DeformParams& bad : {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true},
-                                  DeformParams{0, kNaN, 0, true}, DeformParams{0, 0, -1, true},
-                                  DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true}})
+  for (const DeformParams& bad :
+       {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true}, DeformParams{0, kNaN, 0, true},
+        DeformParams{0, 0, -1, true}, DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true}})
     EXPECT_THROW(deformer->deform(s.cage.vertices, bad), InputError) << describe(bad);
 }
 
