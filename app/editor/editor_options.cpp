@@ -101,14 +101,14 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       positional.push_back(a);
     }
   }
-  if (positional.size() == 1 || positional.size() > 3) {
-    throw InputError("command line", -1, "expected MESH CAGE [POSED], got " + std::to_string(positional.size()) + " file(s)",
-                     "give no files for the demo, or a mesh and its cage (and optionally a posed cage)");
+  if (positional.size() > 3) {
+    throw InputError("command line", -1,
+                     "expected MESH [CAGE [POSED]], got " + std::to_string(positional.size()) + " files",
+                     "give no files for the demo, a mesh (a cage is made for it), or a mesh and its cage (and "
+                     "optionally a posed cage)");
   }
-  if (positional.size() >= 2) {
-    o.meshPath = positional[0];
-    o.cagePath = positional[1];
-  }
+  if (!positional.empty()) o.meshPath = positional[0];
+  if (positional.size() >= 2) o.cagePath = positional[1];
   if (positional.size() == 3) o.posedPath = positional[2];
   if (o.nu) {
     DeformParams p;
@@ -127,7 +127,7 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
 }
 
 std::string editorUsage() {
-  return "usage: somicage [MESH.obj CAGE.obj [POSED.obj]] [options]\n"
+  return "usage: somicage [MESH.obj [CAGE.obj [POSED.obj]]] [options]   (no cage: one is made, see 'somicage cage')\n"
          "       somicage deform|check|bench|help ...   (command line tools, see 'somicage help')\n"
          "\n"
          "With no files the built-in demo opens.\n"

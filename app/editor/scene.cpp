@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "cage_generation.h"
 #include "cage_repair.h"
 #include "cage_validation.h"
 #include "mesh_placement.h"
@@ -107,7 +108,7 @@ Scene demo2D() {
   Eigen::MatrixXd loop(2 * perSide, 2);
   for (int i = 0; i < perSide; ++i) {
     const double x = -cx + 2 * cx * i / (perSide - 1);
-    loop.row(i) << x, -cy;                 // bottom, left to right
+    loop.row(i) << x, -cy;                   // bottom, left to right
     loop.row(2 * perSide - 1 - i) << x, cy;  // top, right to left
   }
   s.restCage = makePolygonCage(loop);
@@ -134,9 +135,19 @@ void orientOutward(const Eigen::MatrixXd& vertices, Eigen::MatrixXi& triangles) 
 
 Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
 
+// A mesh opened without a cage gets a generated one (core/cage_generation.h, the defaults of 'somicage cage').
+Cage generatedCage(const PolygonMesh& mesh, const std::string& meshPath, std::vector<std::string>& notices) {
+  const GeneratedCage generated =
+      generateCage(mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces), CageGenerationOptions{}, meshPath);
+  notices.push_back("cage generated: " + std::to_string(generated.cage.numFaces()) +
+                    " faces around the mesh (write it to a file with 'somicage cage --mesh MESH --out CAGE.obj')");
+  return generated.cage;
+}
+
 Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
-  CageRepair repair = repairCage(loadCage(cagePath));
+  CageRepair repair = cagePath.empty() ? CageRepair{generatedCage(loadMesh(meshPath), meshPath, s.notices), {}}
+                                       : repairCage(loadCage(cagePath));
   const CageReport report = validateCage(repair.cage);
   requireValidCage(report, cagePath);
   s.restCage = std::move(repair.cage);

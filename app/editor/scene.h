@@ -27,7 +27,8 @@ struct Scene {
 Scene makeDemoScene(int dim);
 
 // Loads MESH.obj and CAGE.obj (core/obj_io.h). A 2D cage makes a 2D scene (the mesh keeps x, y). The cage's
-// orientation is repaired as in the command line (core/cage_repair.h), which the notices say.
+// orientation is repaired as in the command line (core/cage_repair.h), which the notices say. An empty cagePath
+// makes a cage for the mesh (core/cage_generation.h, 200 faces), which the notices say too.
 // Throws InputError on any problem with the files, and when the repaired cage is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
 
