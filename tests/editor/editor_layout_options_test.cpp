@@ -33,9 +33,9 @@ TEST(EditorLayout, TinyWindowsStillGivePositiveSizes) {
 }
 
 TEST(EditorOptions, FilesAndParameters) {
-  const EditorOptions o = parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma",
-                                           "1.5", "--compare", "somigliana,green,mvc", "--screenshot", "out.png",
-                                           "--size", "800x600", "--hide-ui", "--local"});
+  const EditorOptions o =
+      parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma", "1.5", "--compare",
+                       "somigliana,green,mvc", "--screenshot", "out.png", "--size", "800x600", "--hide-ui", "--local"});
   EXPECT_EQ(o.meshPath, "m.obj");
   EXPECT_EQ(o.cagePath, "c.obj");
   EXPECT_EQ(o.posedPath, "p.obj");
@@ -57,6 +57,13 @@ TEST(EditorOptions, DemoByDefault) {
   EXPECT_EQ(parseEditorArgs({"--demo", "2d"}).demoDim, 2);
 }
 
+// A mesh alone opens with a generated cage (scene.h): no cage path.
+TEST(EditorOptions, MeshAloneHasNoCagePath) {
+  const EditorOptions o = parseEditorArgs({"m.obj"});
+  EXPECT_EQ(o.meshPath, "m.obj");
+  EXPECT_TRUE(o.cagePath.empty());
+}
+
 TEST(EditorOptions, BadInputNamesTheOption) {
   auto sourceOf = [](std::vector<std::string> args) {
     try {
@@ -73,6 +80,6 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--compare", "green,foo"}), "--compare");
   EXPECT_EQ(sourceOf({"--size", "12"}), "--size");
   EXPECT_EQ(sourceOf({"--bogus"}), "--bogus");
-  EXPECT_EQ(sourceOf({"only_one.obj"}), "command line");
+  EXPECT_EQ(sourceOf({"a.obj", "b.obj", "c.obj", "d.obj"}), "command line");
   EXPECT_EQ(sourceOf({"--method"}), "--method");
 }
