@@ -13,24 +13,29 @@ def run_cli(*args):
     return subprocess.run([cli_executable(), *args], capture_output=True, text=True, timeout=300)
 
 
+@pytest.fixture(scope="module")
+def firehydrant():
+    """FIREHYDRANT's cage, mesh points, pose and one Somigliana deformer (one precompute for the module)."""
+    require_firehydrant()
+    rest, posed = FIREHYDRANT / "fireHydrant_cages_triangulated.obj", FIREHYDRANT / "fireHydrant_cages_triangulated_deformed.obj"
+    cage = somicage.Cage.from_obj(str(rest))
+    points, _ = somicage.load_mesh(str(FIREHYDRANT / "fireHydrant.obj"))
+    return dict(rest=str(rest), posed=str(posed), cage=cage, deformer=somicage.Deformer(cage, points),
+                pose=somicage.load_posed(str(posed), cage))
+
+
 @pytest.mark.parametrize("settings,flags", [(dict(), []),
                                             (dict(nu=0.3, gamma=1.0, variant="local"),
                                              ["--nu", "0.3", "--gamma", "1", "--variant", "local"])])
-def test_firehydrant_matches_cli(tmp_path, settings, flags):
-    require_firehydrant()
-    rest, posed = FIREHYDRANT / "fireHydrant_cages_triangulated.obj", FIREHYDRANT / "fireHydrant_cages_triangulated_deformed.obj"
-    mesh = FIREHYDRANT / "fireHydrant.obj"
+def test_firehydrant_matches_cli(tmp_path, firehydrant, settings, flags):
     out = tmp_path / "out.obj"
-    result = run_cli("deform", "--cage", str(rest), "--posed", str(posed), "--mesh", str(mesh), "--out", str(out),
-                     *flags)
+    result = run_cli("deform", "--cage", firehydrant["rest"], "--posed", firehydrant["posed"], "--mesh",
+                     str(FIREHYDRANT / "fireHydrant.obj"), "--out", str(out), *flags)
     assert result.returncode == 0, result.stderr
     expected, _ = somicage.load_mesh(str(out))  # %.17g: the CLI's doubles exactly
-
-    cage = somicage.Cage.from_obj(str(rest))
-    points, _ = somicage.load_mesh(str(mesh))
-    moved = somicage.Deformer(cage, points).deform(somicage.load_posed(str(posed), cage), **settings)
-    scale = np.linalg.norm(cage.vertices.max(axis=0) - cage.vertices.min(axis=0))
-    error = np.abs(moved - expected).max() / scale
+    moved = firehydrant["deformer"].deform(firehydrant["pose"], **settings)
+    vertices = firehydrant["cage"].vertices
+    error = np.abs(moved - expected).max() / np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))
     assert error <= 1e-12, f"module and CLI differ by {error:.2e} cage diameters"
 
 
