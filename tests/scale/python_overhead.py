@@ -1,6 +1,10 @@
 """Python's overhead over the engine's own time on a model: `somicage bench` (medians of the precompute and of the
 frames, float storage) against the same calls through the somicage module, in alternating rounds so that both see
-the same machine load. Usage (from the repository root):
+the same machine load. On a busy machine that difference drowns in noise, so the script also bounds the overhead
+from above: the median cost of a call on one point, one thread (the binding's fixed work plus the core's per-frame
+weights), and the
+cost of the input copy (a NumPy copy of the points into Fortran order, which is what the binding does).
+Usage (from the repository root):
 
     PYTHONPATH=build/python /usr/bin/python3 tests/scale/python_overhead.py build/app/somicage ../shared/models/firehydrant [ROUNDS]
 """
@@ -10,6 +14,8 @@ import statistics
 import subprocess
 import sys
 import time
+
+import numpy as np
 
 import somicage
 
@@ -50,10 +56,27 @@ def main():
     for _ in range(rounds):
         cli_times.append(cli_round(cli, *files))
         python_times.append(python_round(*files))
+    medians = []
     for k, name in enumerate(("precompute", "frame global", "frame local")):
         c = statistics.median(t[k] for t in cli_times)
         p = statistics.median(t[k] for t in python_times)
-        print(f"{name:14s} CLI {c * 1e3:9.2f} ms   Python {p * 1e3:9.2f} ms   overhead {100 * (p - c) / c:+6.1f} %")
+        medians.append(c)
+        print(f"{name:14s} CLI {c * 1e3:9.2f} ms   Python {p * 1e3:9.2f} ms   difference {100 * (p - c) / c:+6.1f} %")
+
+    cage = somicage.Cage.from_obj(files[1])
+    points, _ = somicage.load_mesh(files[0])
+    pose = somicage.load_posed(files[2], cage)
+    # One thread: on a loaded machine an OpenMP fork/join alone can take milliseconds, which is no binding cost.
+    one = somicage.Deformer(cage, points[:1], threads=1)
+    calls = 2000
+    per_call = {v: statistics.median(timed(lambda: one.deform(pose, variant=v))[0] for _ in range(calls))
+                for v in ("global", "local")}
+    copy = statistics.median(timed(lambda: np.asfortranarray(points))[0] for _ in range(50))
+    precompute_one = statistics.median(timed(lambda: somicage.Deformer(cage, points[:1]))[0] for _ in range(20))
+    print(f"bound: one-point deform {per_call['global'] * 1e6:.0f} us global, {per_call['local'] * 1e6:.0f} us local "
+          f"({100 * per_call['global'] / medians[1]:.2f} %, {100 * per_call['local'] / medians[2]:.2f} % of a frame); "
+          f"one-point precompute {precompute_one * 1e3:.2f} ms + input copy {copy * 1e3:.2f} ms "
+          f"({100 * (precompute_one + copy) / medians[0]:.2f} % of the precompute)")
 
 
 if __name__ == "__main__":
