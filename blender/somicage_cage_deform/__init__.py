@@ -200,20 +200,29 @@ def bound_objects(scene):
     return [obj for obj in scene.objects if obj.type == "MESH" and obj.somicage.bound and obj.somicage.cage]
 
 
+def deform_live(obj, depsgraph):
+    """A handler's deform: a failure (a cage whose vertex count changed, say) is printed once and stops Live."""
+    try:
+        deform(obj, depsgraph)
+    except Exception as error:  # noqa: BLE001 - a handler must not raise on every update
+        print(f"SomiCage: {obj.name}: {error}; Live is now off")
+        obj.somicage.live = False
+
+
 @persistent
 def on_depsgraph_update(scene, depsgraph):
     changed = {update.id.original.name for update in depsgraph.updates
                if isinstance(update.id, bpy.types.Object) and (update.is_updated_geometry or update.is_updated_transform)}
     for obj in bound_objects(scene):
         if obj.somicage.live and obj.somicage.cage.name in changed:
-            deform(obj, depsgraph)
+            deform_live(obj, depsgraph)
 
 
 @persistent
 def on_frame_change(scene, depsgraph):
     for obj in bound_objects(scene):
         if obj.somicage.live:
-            deform(obj, depsgraph)
+            deform_live(obj, depsgraph)
 
 
 @persistent

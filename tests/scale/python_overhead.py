@@ -71,7 +71,8 @@ def main():
     calls = 2000
     per_call = {v: statistics.median(timed(lambda: one.deform(pose, variant=v))[0] for _ in range(calls))
                 for v in ("global", "local")}
-    copy = statistics.median(timed(lambda: np.asfortranarray(points))[0] for _ in range(50))
+    c_order = np.ascontiguousarray(points)  # load_mesh gives Fortran order, which asfortranarray would not copy
+    copy = statistics.median(timed(lambda: np.asfortranarray(c_order))[0] for _ in range(50))
     precompute_one = statistics.median(timed(lambda: somicage.Deformer(cage, points[:1]))[0] for _ in range(20))
     print(f"bound: one-point deform {per_call['global'] * 1e6:.0f} us global, {per_call['local'] * 1e6:.0f} us local "
           f"({100 * per_call['global'] / medians[1]:.2f} %, {100 * per_call['local'] / medians[2]:.2f} % of a frame); "
