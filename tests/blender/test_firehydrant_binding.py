@@ -2,8 +2,8 @@
 
     blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_firehydrant_binding.py
 
-binds the mesh to its triangulated cage, moves the cage to the paper's pose (by editing its vertices, then by an
-animated shape key) and checks the mesh against `somicage deform` to 1e-6 cage diameters; bakes three frames to
+binds the mesh to its triangulated cage, moves the cage to the paper's pose (in edit mode, then by an animated shape
+key) and checks the mesh against `somicage deform` to 1e-6 cage diameters; bakes three frames to
 shape keys and unbinds. Environment: SOMICAGE_PYTHON_PATH (build/python), SOMICAGE_CLI (the somicage executable),
 SOMICAGE_MODELS_DIR. Exits 77 (skipped) when the models or the executable are absent.
 """
@@ -13,6 +13,7 @@ import subprocess
 import sys
 import tempfile
 
+import bmesh
 import bpy
 import numpy as np
 
@@ -87,11 +88,17 @@ binding.nu, binding.gamma, binding.variant = SETTINGS["nu"], SETTINGS["gamma"], 
 assert bpy.ops.somicage.bind() == {"FINISHED"}
 check_close("bound at rest", coordinates(hydrant), original, diameter)
 
-# Edit the cage: the depsgraph handler re-deforms the mesh.
-cage.data.vertices.foreach_set("co", posed_vertices.astype(np.float32).ravel())
-cage.data.update()
+# Edit the cage in edit mode, as an artist does: the depsgraph handler re-deforms the mesh.
+bpy.context.view_layer.objects.active = cage
+bpy.ops.object.mode_set(mode="EDIT")
+edit = bmesh.from_edit_mesh(cage.data)
+for vertex, position in zip(edit.verts, posed_vertices):  # edit-mode order is the mesh's vertex order
+    vertex.co = position
+bmesh.update_edit_mesh(cage.data)
 bpy.context.view_layer.update()
-check_close("cage edited to the paper's pose", coordinates(hydrant), expected, diameter)
+check_close("cage edited (edit mode) to the paper's pose", coordinates(hydrant), expected, diameter)
+bpy.ops.object.mode_set(mode="OBJECT")
+bpy.context.view_layer.objects.active = hydrant
 
 # Animate the cage (a shape key from rest at frame 1 to the pose at frame 3): the frame handler follows it.
 cage.data.vertices.foreach_set("co", rest_cage.astype(np.float32).ravel())
