@@ -3,8 +3,8 @@
     blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_firehydrant_binding.py
 
 binds the mesh to its triangulated cage, moves the cage to the paper's pose (in edit mode, then by an animated shape
-key) and checks the mesh against `somicage deform` to 1e-6 cage diameters; bakes three frames to
-shape keys and unbinds. Environment: SOMICAGE_PYTHON_PATH (build/python), SOMICAGE_CLI (the somicage executable),
+key) and checks the mesh against `somicage deform` to 1e-6 cage diameters; saves and reopens the file; bakes
+three frames to shape keys and unbinds. Environment: SOMICAGE_PYTHON_PATH (build/python), SOMICAGE_CLI (the somicage executable),
 SOMICAGE_MODELS_DIR. Exits 77 (skipped) when the models or the executable are absent.
 """
 import os
@@ -113,6 +113,19 @@ scene.frame_set(3)
 check_close("animated cage at frame 3", coordinates(hydrant), expected, diameter)
 scene.frame_set(1)
 check_close("animated cage at frame 1 (rest)", coordinates(hydrant), original, diameter)
+
+# Save and reopen: the binding comes back from what the file stores (the deformer is precomputed again).
+with tempfile.TemporaryDirectory() as folder:
+    saved = os.path.join(folder, "bound.blend")
+    bpy.ops.wm.save_as_mainfile(filepath=saved)
+    bpy.ops.wm.open_mainfile(filepath=saved)
+scene, hydrant, cage = bpy.context.scene, bpy.data.objects["hydrant"], bpy.data.objects["cage"]
+binding = hydrant.somicage
+assert binding.bound and not addon._deformers
+bpy.context.view_layer.objects.active = hydrant
+scene.frame_set(3)
+check_close("reopened file, frame 3", coordinates(hydrant), expected, diameter)
+scene.frame_set(1)
 
 # Live off: the cage moves, the mesh does not.
 binding.live = False
