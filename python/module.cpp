@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "numpy_arrays.h"
 #include "obj_io.h"
 #include "python_cage.h"
 #include "python_deformer.h"
@@ -111,6 +112,16 @@ PYBIND11_MODULE(_somicage, module) {
         return py::make_tuple(std::move(mesh.vertices), std::move(mesh.faces));
       },
       py::arg("path"), "(vertices (V, 3) float64, faces: list of 0-based index lists) of any OBJ file.");
+  module.def(
+      "save_obj",
+      [](const std::string& path, const py::handle& vertices, const std::vector<std::vector<int>>& faces) {
+        PolygonMesh topology;
+        topology.faces = faces;
+        saveObj(path, matrixFromArray(vertices, "vertices", 0), topology);
+      },
+      py::arg("path"), py::arg("vertices"), py::arg("faces") = std::vector<std::vector<int>>{},
+      "Writes vertices (V, 3) or (V, 2) and faces (0-based index lists) with 17 significant digits, atomically, "
+      "as `somicage deform` writes its output.");
   module.def(
       "load_posed", [](const std::string& path, const PythonCage& cage) { return loadPosedVertices(path, cage.cage); },
       py::arg("path"), py::arg("cage"), "The vertices (V, d) of a posed cage file, checked against the rest cage.");

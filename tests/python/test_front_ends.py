@@ -129,3 +129,15 @@ def test_repair_and_check(cube_cage):
     assert repaired.repairs == report["repairs"]
     np.testing.assert_array_equal(np.sort(repaired.faces, axis=1), np.sort(cube_cage.faces, axis=1))
     assert somicage.check(np.array(cube_cage.vertices), cube_cage.faces)["valid"]
+
+
+def test_save_obj_round_trip_and_errors(tmp_path, cube_cage):
+    path = str(tmp_path / "cube.obj")
+    vertices = cube_cage.vertices * np.pi  # digits that only %.17g keeps
+    somicage.save_obj(path, vertices, cube_cage.faces.tolist())
+    read, faces = somicage.load_mesh(path)
+    np.testing.assert_array_equal(read, vertices)
+    assert faces == cube_cage.faces.tolist()
+    with pytest.raises(somicage.InputError, match="face 0 refers to vertex 99 of 8"):
+        somicage.save_obj(str(tmp_path / "bad.obj"), vertices, [[0, 1, 99]])
+    assert not (tmp_path / "bad.obj").exists()  # nothing written on failure
