@@ -4,14 +4,17 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "screenshot.h"
+#include <cstdio>
+
+#include "pose_clear.h"
+#include "shortcuts.h"
 
 namespace somicage::editor {
 
 namespace {
 
-constexpr double kPickRadius = 12.0;     // pixels
-constexpr double kDragThreshold = 3.0;   // pixels before a press becomes a drag
+constexpr double kPickRadius = 12.0;    // pixels
+constexpr double kDragThreshold = 3.0;  // pixels before a press becomes a drag
 
 Eigen::Vector2d mousePos() {
   const ImVec2 m = ImGui::GetIO().MousePos;
@@ -20,22 +23,44 @@ Eigen::Vector2d mousePos() {
 
 void selectionChanged(AppState& state) { ++state.poseGeneration; }
 
+// --log-actions: the keyboard commands, one line each, as they run (the GUI tests count them).
+void logAction(const AppState& state, const char* id) {
+  if (!state.logActions) return;
+  std::printf("action %s\n", id);
+  std::fflush(stdout);
+}
+
+double cageSize(const AppState& state) {
+  const Eigen::MatrixXd& rest = state.scene->restCage.vertices;
+  return rest.rows() > 0 ? (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm() : 1.0;
+}
+
 void startModal(AppState& state, TransformKind kind, const std::vector<ViewRect>& views, int view) {
-  if (state.selection.empty() || views.empty()) return;
+  if (views.empty()) return;
+  if (state.selection.empty()) {
+    state.statusMessage = std::string(transformName(kind)) + ": nothing selected (click a handle, or A for all)";
+    return;
+  }
   const ViewRect& r = views[static_cast<std::size_t>(view < 0 ? 0 : view)];
   state.interaction.mode = Interaction::Mode::Modal;
   state.interaction.view = view < 0 ? 0 : view;
   state.interaction.transform =
       beginTransform(kind, state.selection.indices(), state.pose, mousePos() - r.origin(), r.size());
+  state.interaction.transform->gridStep = gridStepFor(cageSize(state));
+}
+
+void clearSelected(AppState& state, ClearKind kind) {
+  if (state.selection.empty()) {
+    state.statusMessage = std::string(clearKindName(kind)) + ": nothing selected";
+    return;
+  }
+  setPose(state, clearTransform(kind, state.scene->restCage.vertices, state.pose, state.selection.indices()));
+  state.statusMessage = commitEdit(state, clearKindName(kind)) ? clearKindName(kind)
+                                                               : std::string(clearKindName(kind)) + ": already at rest";
 }
 
 void confirmTransform(AppState& state) {
-  if (state.interaction.transform) {
-    const TransformSession& t = *state.interaction.transform;
-    if (t.original != state.pose) {
-      state.history.record({t.original, state.params, transformName(t.kind)});
-    }
-  }
+  if (state.interaction.transform) commitEdit(state, transformName(state.interaction.transform->kind));
   state.interaction.transform.reset();
   state.interaction.mode = Interaction::Mode::Idle;
 }
@@ -48,14 +73,18 @@ void cancelTransform(AppState& state) {
 
 void updateTransform(AppState& state, const std::vector<ViewRect>& views) {
   if (!state.interaction.transform) return;
-  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  state.interaction.transform->fine = ImGui::GetIO().KeyShift;
+  state.interaction.transform->snap = ImGui::GetIO().KeyCtrl;
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   const Eigen::MatrixXd pose = applyTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
   if (pose != state.pose) setPose(state, pose);
 }
 
 void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& views) {
   if (!state.interaction.transform || state.interaction.mode != Interaction::Mode::Modal) return;
-  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   const std::string text = describeTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
@@ -63,6 +92,45 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
   draw->AddRectFilled(ImVec2(pos.x - 6, pos.y - 3), ImVec2(pos.x + size.x + 6, pos.y + size.y + 3),
                       IM_COL32(30, 30, 36, 220), 4.0f);
   draw->AddText(pos, IM_COL32(255, 200, 120, 255), text.c_str());
+}
+
+// The active axis as a line through the pivot, in the axis colour (x red, y green, z blue).
+void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
+  const std::optional<TransformSession>& t = state.interaction.transform;
+  if (!t || t->axis == Axis::None || (t->axis == Axis::Z && state.dim() == 2)) return;
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+  dir[static_cast<int>(t->axis) - 1] = 1.0;
+  const double reach = 10.0 * cageSize(state);
+  Eigen::Vector2d a, b;
+  if (!state.camera.project(t->pivot - reach * dir, r.width, r.height, a) ||
+      !state.camera.project(t->pivot + reach * dir, r.width, r.height, b)) {
+    return;
+  }
+  const ImU32 colours[3] = {IM_COL32(235, 70, 70, 220), IM_COL32(90, 210, 90, 220), IM_COL32(80, 140, 255, 220)};
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  draw->PushClipRect(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                     ImVec2(static_cast<float>(r.x + r.width), static_cast<float>(r.y + r.height)));
+  draw->AddLine(ImVec2(static_cast<float>(r.x + a.x()), static_cast<float>(r.y + a.y())),
+                ImVec2(static_cast<float>(r.x + b.x()), static_cast<float>(r.y + b.y())),
+                colours[static_cast<int>(t->axis) - 1], 2.0f);
+  draw->PopClipRect();
+}
+
+// Digits, '.', '-' and Backspace during G / R / S (Blender's numeric input).
+void typeNumbers(AppState& state, const std::vector<ViewRect>& views) {
+  static const std::pair<int, char> kKeys[] = {
+      {GLFW_KEY_0, '0'},         {GLFW_KEY_1, '1'},          {GLFW_KEY_2, '2'},     {GLFW_KEY_3, '3'},
+      {GLFW_KEY_4, '4'},         {GLFW_KEY_5, '5'},          {GLFW_KEY_6, '6'},     {GLFW_KEY_7, '7'},
+      {GLFW_KEY_8, '8'},         {GLFW_KEY_9, '9'},          {GLFW_KEY_KP_0, '0'},  {GLFW_KEY_KP_1, '1'},
+      {GLFW_KEY_KP_2, '2'},      {GLFW_KEY_KP_3, '3'},       {GLFW_KEY_KP_4, '4'},  {GLFW_KEY_KP_5, '5'},
+      {GLFW_KEY_KP_6, '6'},      {GLFW_KEY_KP_7, '7'},       {GLFW_KEY_KP_8, '8'},  {GLFW_KEY_KP_9, '9'},
+      {GLFW_KEY_PERIOD, '.'},    {GLFW_KEY_KP_DECIMAL, '.'}, {GLFW_KEY_MINUS, '-'}, {GLFW_KEY_KP_SUBTRACT, '-'},
+      {GLFW_KEY_BACKSPACE, '\b'}};
+  for (const auto& [key, c] : kKeys) {
+    if (ImGui::IsKeyPressed(key) && typeIntoTransform(*state.interaction.transform, c)) updateTransform(state, views);
+  }
 }
 
 void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hoveredView) {
@@ -87,6 +155,7 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
         updateTransform(state, views);
       }
     }
+    typeNumbers(state, views);
     const int kinds[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
     const TransformKind kindValues[3] = {TransformKind::Grab, TransformKind::Rotate, TransformKind::Scale};
     for (int k = 0; k < 3; ++k) {
@@ -100,23 +169,50 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
   }
   if (it.mode != Interaction::Mode::Idle) return;
 
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) {
-    shift ? redo(state) : undo(state);
-  } else if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) {
-    redo(state);
-  } else if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Q, false)) {
-    state.quitRequested = true;
-  } else if (!ctrl && ImGui::IsKeyPressed(GLFW_KEY_A, false)) {
-    alt ? state.selection.clear() : state.selection.selectAll();
-    selectionChanged(state);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
-    frameAll(state);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_G, false)) {
-    startModal(state, TransformKind::Grab, views, hoveredView);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_R, false)) {
-    startModal(state, TransformKind::Rotate, views, hoveredView);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-    startModal(state, TransformKind::Scale, views, hoveredView);
+  const int mods = (shift ? kShift : 0) | (ctrl ? kCtrl : 0) | (alt ? kAlt : 0);
+  for (const Shortcut& sc : shortcuts()) {
+    const bool repeats = sc.run == undo || sc.run == redo;  // holding Ctrl+Z walks back
+    if (sc.run && sc.mods == mods && ImGui::IsKeyPressed(sc.key, repeats)) {
+      logAction(state, sc.id);
+      sc.run(state);
+      return;
+    }
+  }
+  struct ViewKey {
+    int key, mods;
+    const char* id;
+    void (*run)(AppState&, const std::vector<ViewRect>&, int);
+  };
+  static const ViewKey kViewKeys[] = {
+      {GLFW_KEY_A, kNoMods, "select_all",
+       [](AppState& s, const std::vector<ViewRect>&, int) {
+         s.selection.selectAll();
+         selectionChanged(s);
+       }},
+      {GLFW_KEY_A, kAlt, "select_none",
+       [](AppState& s, const std::vector<ViewRect>&, int) {
+         s.selection.clear();
+         selectionChanged(s);
+       }},
+      {GLFW_KEY_G, kNoMods, "grab",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Grab, v, h); }},
+      {GLFW_KEY_R, kNoMods, "rotate",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Rotate, v, h); }},
+      {GLFW_KEY_S, kNoMods, "scale",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Scale, v, h); }},
+      {GLFW_KEY_G, kAlt, "clear_location",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Location); }},
+      {GLFW_KEY_R, kAlt, "clear_rotation",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Rotation); }},
+      {GLFW_KEY_S, kAlt, "clear_scale",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Scale); }},
+  };
+  for (const ViewKey& vk : kViewKeys) {
+    if (vk.mods == mods && ImGui::IsKeyPressed(vk.key, false)) {
+      logAction(state, vk.id);
+      vk.run(state, views, hoveredView);
+      return;
+    }
   }
 }
 
@@ -125,7 +221,6 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
 void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   const ImGuiIO& io = ImGui::GetIO();
   if (!state.scene || views.empty()) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.screenshotRequest = defaultScreenshotName();
 
   Interaction& it = state.interaction;
   const Eigen::Vector2d mouse = mousePos();
@@ -138,6 +233,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) confirmTransform(state);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) cancelTransform(state);
     drawTransformHeader(state, views);
+    drawAxisLine(state, views);
     return;
   }
 
@@ -229,7 +325,8 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
         selectionChanged(state);
       }
       it.mode = Interaction::Mode::HandleDrag;
-      it.transform = beginTransform(TransformKind::Grab, state.selection.indices(), state.pose, mouse - r.origin(), r.size());
+      it.transform =
+          beginTransform(TransformKind::Grab, state.selection.indices(), state.pose, mouse - r.origin(), r.size());
     } else {
       it.mode = Interaction::Mode::Box;
       it.boxAdditive = io.KeyShift;
