@@ -256,7 +256,12 @@ void applyDocument(AppState& state, const Document& document) {
 
 bool commitEdit(AppState& state, const std::string& name) {
   if (!state.scene) return false;
-  return state.history.commit(name, currentDocument(state));
+  const bool added = state.history.commit(name, currentDocument(state));
+  if (added && state.logActions) {
+    std::printf("step %s\n", name.c_str());
+    std::fflush(stdout);
+  }
+  return added;
 }
 
 void setPose(AppState& state, const Eigen::MatrixXd& pose) {

@@ -1,8 +1,9 @@
 // Keyboard, character, mouse-button and scroll events from the GLFW callbacks, kept in order until the frame
 // loop hands them to Dear ImGui. ImGui 1.86 keeps one state per key and button per frame, so a press and its
 // release inside one frame would cancel out (a quick tap at 8 FPS was lost 7 times in 8). takeFrame() gives each
-// frame the events up to, not including, the first one that would change a key or button a second time: a tap
-// then spans two frames and always acts, at any frame rate, in the order typed. Pure, no GLFW calls.
+// frame the events up to, not including, the first one that would change a key or button a second time, or
+// release one after a press (a chord's modifier released before its key): a tap then spans two frames and always
+// acts, with the modifiers it was typed with, at any frame rate, in the order typed. Pure, no GLFW calls.
 #pragma once
 
 #include <cstddef>

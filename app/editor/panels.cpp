@@ -1,5 +1,7 @@
 #include "panels.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -380,14 +382,17 @@ void drawUnsavedModal(AppState& state) {
   if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
   ImGui::TextWrapped("\"%s\" has unsaved changes. Save them before you %s?", documentName(state).c_str(),
                      state.unsaved.asking->what.c_str());
+  // Keys as in most desktop dialogs: S or Enter saves, D does not, Esc cancels.
   std::optional<UnsavedChoice> choice;
-  if (ImGui::Button("Save")) choice = UnsavedChoice::Save;
-  tooltip(state.documentPath.empty() ? "Choose a session file, save, then go on" : "Save the session, then go on");
+  const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
+  if (ImGui::Button("Save (S)") || ImGui::IsKeyPressed(GLFW_KEY_S, false) || enter) choice = UnsavedChoice::Save;
+  tooltip(state.documentPath.empty() ? "Choose a session file, save, then go on (S or Enter)"
+                                     : "Save the session, then go on (S or Enter)");
   ImGui::SameLine();
-  if (ImGui::Button("Don't save")) choice = UnsavedChoice::DontSave;
-  tooltip("Go on and lose the changes");
+  if (ImGui::Button("Don't save (D)") || ImGui::IsKeyPressed(GLFW_KEY_D, false)) choice = UnsavedChoice::DontSave;
+  tooltip("Go on and lose the changes (D)");
   ImGui::SameLine();
-  if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+  if (ImGui::Button("Cancel (Esc)") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
     choice = UnsavedChoice::Cancel;
   tooltip("Keep working (Esc)");
   if (choice) {

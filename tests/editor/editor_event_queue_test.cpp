@@ -6,6 +6,7 @@
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <map>
 
 #include "event_queue.h"
@@ -68,22 +69,23 @@ TEST(EditorEventQueue, EightTapsBetweenTwoFramesAllActInOrder) {
 
 TEST(EditorEventQueue, ChordsStayTogetherAndOtherEventsKeepTheirPlace) {
   InputEventQueue q;
-  // Ctrl+Z as `xdotool key ctrl+z` sends it: Ctrl down, Z down, Z up, Ctrl up.
+  // Ctrl+Z as `xdotool key ctrl+z` sends it: Ctrl down, Z down, Ctrl up, Z up (the modifier goes first).
   q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_PRESS, 0));
   q.push(InputEvent::key(GLFW_KEY_Z, 0, GLFW_PRESS, GLFW_MOD_CONTROL));
   q.push(InputEvent::character('z'));
-  q.push(InputEvent::key(GLFW_KEY_Z, 0, GLFW_RELEASE, GLFW_MOD_CONTROL));
   q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_RELEASE, GLFW_MOD_CONTROL));
+  q.push(InputEvent::key(GLFW_KEY_Z, 0, GLFW_RELEASE, 0));
   q.push(InputEvent::mouseButton(0, GLFW_PRESS, 0));
   q.push(InputEvent::scroll(0, 1));
   q.push(InputEvent::mouseButton(0, GLFW_RELEASE, 0));
   const std::vector<InputEvent> first = q.takeFrame();
-  ASSERT_EQ(first.size(), 3u);  // Ctrl and Z down together (the chord acts), with the character
+  ASSERT_EQ(first.size(), 3u);  // Ctrl and Z down together (Z is seen with Ctrl held), with the character
   EXPECT_EQ(first[0].code, GLFW_KEY_LEFT_CONTROL);
   EXPECT_EQ(first[1].code, GLFW_KEY_Z);
   EXPECT_EQ(first[2].type, InputEvent::Type::Char);
   const std::vector<InputEvent> second = q.takeFrame();
   ASSERT_EQ(second.size(), 4u);  // the releases, then the click's press and the scroll
+  EXPECT_EQ(second[0].code, GLFW_KEY_LEFT_CONTROL);
   EXPECT_EQ(second[2].type, InputEvent::Type::MouseButton);
   EXPECT_EQ(second[2].action, GLFW_PRESS);
   EXPECT_EQ(second[3].type, InputEvent::Type::Scroll);
@@ -91,6 +93,24 @@ TEST(EditorEventQueue, ChordsStayTogetherAndOtherEventsKeepTheirPlace) {
   ASSERT_EQ(third.size(), 1u);
   EXPECT_EQ(third[0].action, GLFW_RELEASE);
   EXPECT_TRUE(q.empty());
+}
+
+TEST(EditorEventQueue, AChordIsSeenWithItsModifierByAPerFrameConsumer) {
+  InputEventQueue q;
+  q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_PRESS, 0));
+  q.push(InputEvent::key(GLFW_KEY_S, 0, GLFW_PRESS, GLFW_MOD_CONTROL));
+  q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_RELEASE, GLFW_MOD_CONTROL));
+  q.push(InputEvent::key(GLFW_KEY_S, 0, GLFW_RELEASE, 0));
+  StatePerFrame consumer;
+  bool ctrlHeldWhenSPressed = false;
+  while (!q.empty()) {
+    consumer.frame(q.takeFrame());
+    if (std::find(consumer.presses.begin(), consumer.presses.end(), GLFW_KEY_S) != consumer.presses.end()) {
+      ctrlHeldWhenSPressed = consumer.down[GLFW_KEY_LEFT_CONTROL];
+      break;
+    }
+  }
+  EXPECT_TRUE(ctrlHeldWhenSPressed);
 }
 
 TEST(EditorFramePacing, DrawsForInputThenSettlesThenSleeps) {

@@ -28,7 +28,8 @@ struct Image {
   int width = 0, height = 0;
   std::vector<unsigned char> rgba;
   bool isMesh(int x, int y) const {
-    const unsigned char* p = &rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4];
+    const unsigned char* p =
+        &rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4];
     return static_cast<int>(p[0]) > static_cast<int>(p[2]) + 12;
   }
   // Fraction of mesh pixels in the columns [x0, x1).
@@ -58,10 +59,10 @@ fs::path outputDir() {
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
 // Skips the test when no display can be had.
-#define REQUIRE_DISPLAY()                                                                              \
-  do {                                                                                                 \
-    if (kXvfbRun.empty() && std::getenv("DISPLAY") == nullptr)                                         \
-      GTEST_SKIP() << "neither xvfb-run nor a DISPLAY is available (apt-get install xvfb xauth)";      \
+#define REQUIRE_DISPLAY()                                                                         \
+  do {                                                                                            \
+    if (kXvfbRun.empty() && std::getenv("DISPLAY") == nullptr)                                    \
+      GTEST_SKIP() << "neither xvfb-run nor a DISPLAY is available (apt-get install xvfb xauth)"; \
   } while (0)
 
 // Runs somicage with the arguments; returns its exit code, the output goes to log.
@@ -129,7 +130,8 @@ TestFiles writeTestFiles() {
         out << "f " << idx(i, j) << " " << idx(i + 1, j + 1) << " " << idx(i + 1, j) << "\n";
       }
     }
-    for (int j = 0; j < segments; ++j) out << "f " << bottom << " " << idx(rings - 1, j) << " " << idx(rings - 1, j + 1) << "\n";
+    for (int j = 0; j < segments; ++j)
+      out << "f " << bottom << " " << idx(rings - 1, j) << " " << idx(rings - 1, j + 1) << "\n";
   }
   const double v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                           {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -222,10 +224,11 @@ TEST(GuiScreenshot, FireHydrantCompareWithPanels) {
   REQUIRE_DISPLAY();
   const std::string dir = kModels + "/firehydrant/";
   if (!fs::exists(dir + "fireHydrant.obj")) GTEST_SKIP() << "shared models not found at " << kModels;
-  const Image img = screenshot(quote(dir + "fireHydrant.obj") + " " + quote(dir + "fireHydrant_cages_triangulated.obj") +
-                                   " " + quote(dir + "fireHydrant_cages_triangulated_deformed.obj") +
-                                   " --compare somigliana,green,mvc --nu 0.3 --gamma 1",
-                               "firehydrant_compare");
+  const Image img =
+      screenshot(quote(dir + "fireHydrant.obj") + " " + quote(dir + "fireHydrant_cages_triangulated.obj") + " " +
+                     quote(dir + "fireHydrant_cages_triangulated_deformed.obj") +
+                     " --compare somigliana,green,mvc --nu 0.3 --gamma 1",
+                 "firehydrant_compare");
   ASSERT_GT(img.width, 0);
   EXPECT_GT(img.coverage(), 0.05);
 }
@@ -269,9 +272,9 @@ TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
 
 TEST(GuiScreenshot, BadFilesFailCleanly) {
   REQUIRE_DISPLAY();
-  const int rc = runSomicage("/nonexistent/mesh.obj /nonexistent/cage.obj --screenshot " +
-                                 quote((outputDir() / "never.png").string()),
-                             "bad_files");
+  const int rc = runSomicage(
+      "/nonexistent/mesh.obj /nonexistent/cage.obj --screenshot " + quote((outputDir() / "never.png").string()),
+      "bad_files");
   EXPECT_EQ(rc, 2) << readLog("bad_files");
   EXPECT_NE(readLog("bad_files").find("nonexistent"), std::string::npos);
   EXPECT_FALSE(fs::exists(outputDir() / "never.png"));
