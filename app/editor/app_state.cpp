@@ -327,6 +327,7 @@ void setMethod(AppState& state, Method method) {
 }
 
 void setCompare(AppState& state, bool on) {
+  if (on && !state.compare) state.frameRequested = true;  // narrower views: frame everything again
   state.compare = on;
   state.deformDirty = true;
   ensureDeformers(state);

@@ -189,10 +189,6 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
-  if (state.frameRequested) {
-    frameAll(state);
-    state.frameRequested = false;
-  }
   if (!state.hideUi) {
     drawMainMenu(state);
     drawControlPanel(state);
@@ -207,6 +203,10 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   drawUnsavedModal(state);
   handleInput(state, views);
   updateDeformation(state);
+  if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
+    frameAll(state);
+    state.frameRequested = false;
+  }
   renderer.sync(state);
   ImGui::Render();
 

@@ -6,6 +6,7 @@
 
 #include <cstdio>
 
+#include "gizmo.h"
 #include "pose_clear.h"
 #include "shortcuts.h"
 
@@ -94,27 +95,61 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
   draw->AddText(pos, IM_COL32(255, 200, 120, 255), text.c_str());
 }
 
-// The active axis as a line through the pivot, in the axis colour (x red, y green, z blue).
+// The active axis as a line through the pivot, in the axis colour (x red, y green, z blue), across the view.
 void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
   const std::optional<TransformSession>& t = state.interaction.transform;
   if (!t || t->axis == Axis::None || (t->axis == Axis::Z && state.dim() == 2)) return;
-  const ViewRect& r =
-      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();
   dir[static_cast<int>(t->axis) - 1] = 1.0;
-  const double reach = 10.0 * cageSize(state);
-  Eigen::Vector2d a, b;
-  if (!state.camera.project(t->pivot - reach * dir, r.width, r.height, a) ||
-      !state.camera.project(t->pivot + reach * dir, r.width, r.height, b)) {
-    return;
-  }
+  Eigen::Vector2d centre;
+  const Eigen::Vector2d screenDir(dir.dot(state.camera.right()), -dir.dot(state.camera.up()));
+  if (!state.camera.project(t->pivot, r.width, r.height, centre) || screenDir.norm() < 1e-3) return;
+  const Eigen::Vector2d a = centre - 4000.0 * screenDir.normalized(), b = centre + 4000.0 * screenDir.normalized();
   const ImU32 colours[3] = {IM_COL32(235, 70, 70, 220), IM_COL32(90, 210, 90, 220), IM_COL32(80, 140, 255, 220)};
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  // The background list: over the 3D picture, under the panels and dialogs.
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
   draw->PushClipRect(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)),
                      ImVec2(static_cast<float>(r.x + r.width), static_cast<float>(r.y + r.height)));
   draw->AddLine(ImVec2(static_cast<float>(r.x + a.x()), static_cast<float>(r.y + a.y())),
                 ImVec2(static_cast<float>(r.x + b.x()), static_cast<float>(r.y + b.y())),
                 colours[static_cast<int>(t->axis) - 1], 2.0f);
+  draw->PopClipRect();
+}
+
+// The selection's gizmo (gizmo.h) in view `r`; `hot` is the part under the mouse (drawn brighter).
+bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
+  if (state.selection.empty()) return false;
+  const Eigen::VectorXd c = state.selection.centroid(state.pose);
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(c.size(), 3); ++k) pivot[k] = c[k];
+  return layoutGizmo(state.camera, pivot, state.dim(), r.width, r.height, g);
+}
+
+void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
+  GizmoLayout g;
+  if (!selectionGizmo(state, r, g)) return;
+  const auto at = [&](const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y())); };
+  const ImU32 colours[3] = {IM_COL32(235, 70, 70, 255), IM_COL32(90, 210, 90, 255), IM_COL32(80, 140, 255, 255)};
+  const ImU32 hotColour = IM_COL32(255, 230, 120, 255);
+  const Axis axes[3] = {Axis::X, Axis::Y, Axis::Z};
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();  // under the panels and dialogs
+  draw->PushClipRect(at(Eigen::Vector2d::Zero()), at(r.size()));
+  const GizmoPart ring{GizmoPart::Kind::Rotate, Axis::None}, centre{GizmoPart::Kind::Move, Axis::None};
+  draw->AddCircle(at(g.centre), static_cast<float>(GizmoLayout::kRingPixels), hot == ring ? hotColour : IM_COL32(230, 230, 235, 160), 64, hot == ring ? 3.0f : 1.5f);
+  for (int a = 0; a < 3; ++a) {
+    if (!g.shown[a]) continue;
+    const bool moveHot = hot == GizmoPart{GizmoPart::Kind::Move, axes[a]};
+    const bool scaleHot = hot == GizmoPart{GizmoPart::Kind::Scale, axes[a]};
+    draw->AddLine(at(g.centre), at(g.tips[a]), moveHot ? hotColour : colours[a], moveHot ? 4.0f : 2.5f);
+    const Eigen::Vector2d dir = (g.tips[a] - g.centre).normalized(), side(-dir.y(), dir.x());
+    draw->AddTriangleFilled(at(g.tips[a] + 10.0 * dir), at(g.tips[a] + 5.0 * side), at(g.tips[a] - 5.0 * side),
+                            moveHot ? hotColour : colours[a]);
+    const float k = static_cast<float>(GizmoLayout::kGrabPixels) - 2.0f;
+    const ImVec2 b = at(g.boxes[a]);
+    draw->AddRectFilled(ImVec2(b.x - k, b.y - k), ImVec2(b.x + k, b.y + k), scaleHot ? hotColour : colours[a]);
+  }
+  draw->AddCircleFilled(at(g.centre), static_cast<float>(GizmoLayout::kCentrePixels), hot == centre ? hotColour : IM_COL32(240, 240, 240, 200));
   draw->PopClipRect();
 }
 
@@ -257,6 +292,14 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
       }
       return;
     case Interaction::Mode::HandleDrag: {
+      drawAxisLine(state, views);
+      if (it.transform) {
+        const GizmoPart dragged{it.transform->kind == TransformKind::Grab     ? GizmoPart::Kind::Move
+                                : it.transform->kind == TransformKind::Scale ? GizmoPart::Kind::Scale
+                                                                             : GizmoPart::Kind::Rotate,
+                                it.transform->axis};
+        drawGizmo(state, views[static_cast<std::size_t>(it.view)], dragged);
+      }
       if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
           cancelTransform(state);
@@ -295,8 +338,14 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
       break;
   }
 
-  // ---- idle: new presses (only over a viewport ImGui does not claim) ----
-  if (io.WantCaptureMouse || hovered < 0) return;
+  // ---- idle: the gizmo, and new presses (only over a viewport ImGui does not claim) ----
+  GizmoPart hot;
+  GizmoLayout gizmo;
+  const bool overView = !io.WantCaptureMouse && hovered >= 0;
+  if (overView && selectionGizmo(state, views[static_cast<std::size_t>(hovered)], gizmo))
+    hot = pickGizmo(gizmo, mouse - views[static_cast<std::size_t>(hovered)].origin());
+  for (std::size_t v = 0; v < views.size(); ++v) drawGizmo(state, views[v], static_cast<int>(v) == hovered ? hot : GizmoPart{});
+  if (!overView) return;
   const ViewRect& r = views[static_cast<std::size_t>(hovered)];
   if (io.MouseWheel != 0.0f) state.camera.zoom(io.MouseWheel);
 
@@ -307,6 +356,17 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     it.pressMouse = mouse;
     const bool pan = io.KeyShift || state.camera.mode2D();
     it.mode = pan ? Interaction::Mode::Pan : Interaction::Mode::Orbit;
+    return;
+  }
+  if (left && hot.kind != GizmoPart::Kind::None) {  // drag a gizmo part: G / R / S with its axis
+    const TransformKind kinds[] = {TransformKind::Grab, TransformKind::Grab, TransformKind::Scale, TransformKind::Rotate};
+    it.view = hovered;
+    it.pressMouse = mouse;
+    it.mode = Interaction::Mode::HandleDrag;
+    it.transform = beginTransform(kinds[static_cast<int>(hot.kind)], state.selection.indices(), state.pose,
+                                  mouse - r.origin(), r.size());
+    it.transform->axis = hot.axis;
+    it.transform->gridStep = gridStepFor(cageSize(state));
     return;
   }
   if (left) {

@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "gizmo.h"
 #include "transform.h"
 
 using namespace somicage;
@@ -209,4 +210,25 @@ TEST(EditorTransform, CtrlSnapsAndShiftIsFine) {
   EXPECT_NEAR(std::remainder(angle, 15.0), 0.0, 1e-9);
   EXPECT_DOUBLE_EQ(gridStepFor(4.0), 0.2);
   EXPECT_DOUBLE_EQ(gridStepFor(100.0), 5.0);
+}
+
+TEST(EditorGizmo, PartsArePickedWhereTheyAreDrawn) {
+  const OrbitCamera camera = frontCamera();  // screen +x = world +x, screen up = world +y, z points at the eye
+  GizmoLayout g;
+  ASSERT_TRUE(layoutGizmo(camera, Eigen::Vector3d::Zero(), 3, kViewport.x(), kViewport.y(), g));
+  EXPECT_NEAR((g.centre - Eigen::Vector2d(400, 300)).norm(), 0.0, 1e-9);
+  EXPECT_TRUE(g.shown[0] && g.shown[1]);
+  EXPECT_FALSE(g.shown[2]);  // z points at the eye: no arrow
+  EXPECT_NEAR(g.tips[0].x() - 400, GizmoLayout::kArrowPixels, 1e-9);
+  EXPECT_NEAR(300 - g.tips[1].y(), GizmoLayout::kArrowPixels, 1e-9);
+  const auto pick = [&](double x, double y) { return pickGizmo(g, Eigen::Vector2d(x, y)); };
+  EXPECT_EQ(pick(400 + 0.6 * 80, 300), (GizmoPart{GizmoPart::Kind::Scale, Axis::X}));
+  EXPECT_EQ(pick(400 + 75, 302), (GizmoPart{GizmoPart::Kind::Move, Axis::X}));
+  EXPECT_EQ(pick(400, 300 - 75), (GizmoPart{GizmoPart::Kind::Move, Axis::Y}));
+  EXPECT_EQ(pick(403, 302), (GizmoPart{GizmoPart::Kind::Move, Axis::None}));
+  EXPECT_EQ(pick(400 - 100, 300), (GizmoPart{GizmoPart::Kind::Rotate, Axis::None}));
+  EXPECT_EQ(pick(400 - 50, 300 + 50), GizmoPart{});
+  GizmoLayout flat;
+  ASSERT_TRUE(layoutGizmo(frontCamera(true), Eigen::Vector3d::Zero(), 2, kViewport.x(), kViewport.y(), flat));
+  EXPECT_FALSE(flat.shown[2]);
 }
