@@ -16,6 +16,7 @@
 #include "deformer.h"
 #include "document.h"
 #include "editor_options.h"
+#include "element_pick.h"
 #include "file_dialog.h"
 #include "history.h"
 #include "precompute_worker.h"
@@ -64,6 +65,7 @@ struct AppState {
   Eigen::MatrixXd pose;               // #V by d posed cage
   std::uint64_t poseGeneration = 0;   // bumps when pose or selection changes (cage upload)
   Selection selection;
+  ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
 
   // ---- method and parameters ----
   Method method = Method::Somigliana;

@@ -26,7 +26,8 @@ bool layoutGizmo(const OrbitCamera& camera, const Eigen::Vector3d& pivot, int di
     dir[a] = 1.0;
     const Eigen::Vector2d screenDir(dir.dot(camera.right()), -dir.dot(camera.up()));  // y down
     g.shown[a] = !(a == 2 && dim == 2) && screenDir.norm() > 0.2;
-    const Eigen::Vector2d unit = screenDir.norm() > 1e-9 ? Eigen::Vector2d(screenDir.normalized()) : Eigen::Vector2d::Zero();
+    const Eigen::Vector2d unit =
+        screenDir.norm() > 1e-9 ? Eigen::Vector2d(screenDir.normalized()) : Eigen::Vector2d::Zero();
     g.tips[a] = g.centre + GizmoLayout::kArrowPixels * screenDir.norm() * unit;
     g.boxes[a] = g.centre + 0.6 * (g.tips[a] - g.centre);
   }

@@ -22,10 +22,10 @@ struct GizmoPart {
 
 struct GizmoLayout {
   static constexpr double kArrowPixels = 80.0, kRingPixels = 100.0, kCentrePixels = 9.0, kGrabPixels = 7.0;
-  Eigen::Vector2d centre;                 // the selection's centroid on screen (viewport pixels)
-  std::array<Eigen::Vector2d, 3> tips;    // arrow ends, x y z
-  std::array<Eigen::Vector2d, 3> boxes;   // scale squares, x y z (60 % along the arrows)
-  std::array<bool, 3> shown{};            // an axis pointing at the eye has no usable arrow
+  Eigen::Vector2d centre;                // the selection's centroid on screen (viewport pixels)
+  std::array<Eigen::Vector2d, 3> tips;   // arrow ends, x y z
+  std::array<Eigen::Vector2d, 3> boxes;  // scale squares, x y z (60 % along the arrows)
+  std::array<bool, 3> shown{};           // an axis pointing at the eye has no usable arrow
 };
 
 // The gizmo of a selection centred at `pivot` (world) in a width x height viewport; false when the pivot is behind

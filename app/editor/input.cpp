@@ -4,6 +4,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "gizmo.h"
@@ -99,7 +100,8 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
 void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
   const std::optional<TransformSession>& t = state.interaction.transform;
   if (!t || t->axis == Axis::None || (t->axis == Axis::Z && state.dim() == 2)) return;
-  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();
   dir[static_cast<int>(t->axis) - 1] = 1.0;
   Eigen::Vector2d centre;
@@ -129,14 +131,17 @@ bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
 void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
   GizmoLayout g;
   if (!selectionGizmo(state, r, g)) return;
-  const auto at = [&](const Eigen::Vector2d& p) { return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y())); };
+  const auto at = [&](const Eigen::Vector2d& p) {
+    return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
+  };
   const ImU32 colours[3] = {IM_COL32(235, 70, 70, 255), IM_COL32(90, 210, 90, 255), IM_COL32(80, 140, 255, 255)};
   const ImU32 hotColour = IM_COL32(255, 230, 120, 255);
   const Axis axes[3] = {Axis::X, Axis::Y, Axis::Z};
   ImDrawList* draw = ImGui::GetBackgroundDrawList();  // under the panels and dialogs
   draw->PushClipRect(at(Eigen::Vector2d::Zero()), at(r.size()));
   const GizmoPart ring{GizmoPart::Kind::Rotate, Axis::None}, centre{GizmoPart::Kind::Move, Axis::None};
-  draw->AddCircle(at(g.centre), static_cast<float>(GizmoLayout::kRingPixels), hot == ring ? hotColour : IM_COL32(230, 230, 235, 160), 64, hot == ring ? 3.0f : 1.5f);
+  draw->AddCircle(at(g.centre), static_cast<float>(GizmoLayout::kRingPixels),
+                  hot == ring ? hotColour : IM_COL32(230, 230, 235, 160), 64, hot == ring ? 3.0f : 1.5f);
   for (int a = 0; a < 3; ++a) {
     if (!g.shown[a]) continue;
     const bool moveHot = hot == GizmoPart{GizmoPart::Kind::Move, axes[a]};
@@ -149,8 +154,37 @@ void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
     const ImVec2 b = at(g.boxes[a]);
     draw->AddRectFilled(ImVec2(b.x - k, b.y - k), ImVec2(b.x + k, b.y + k), scaleHot ? hotColour : colours[a]);
   }
-  draw->AddCircleFilled(at(g.centre), static_cast<float>(GizmoLayout::kCentrePixels), hot == centre ? hotColour : IM_COL32(240, 240, 240, 200));
+  draw->AddCircleFilled(at(g.centre), static_cast<float>(GizmoLayout::kCentrePixels),
+                        hot == centre ? hotColour : IM_COL32(240, 240, 240, 200));
   draw->PopClipRect();
+}
+
+// What a click would pick (element_pick.h), outlined under the mouse.
+void drawHover(const AppState& state, const ViewRect& r, const Eigen::Vector2d& mouse) {
+  const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+  const std::vector<int> hit =
+      pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+  if (hit.empty()) return;
+  const auto at = [&](int v) {
+    const Eigen::Vector2d& p = pts[static_cast<std::size_t>(v)].position;
+    return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
+  };
+  const ImU32 colour = IM_COL32(255, 240, 150, 230);
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  if (hit.size() == 1) {
+    draw->AddCircle(at(hit[0]), 9.0f, colour, 20, 2.5f);
+  } else if (hit.size() == 2) {
+    draw->AddLine(at(hit[0]), at(hit[1]), colour, 4.0f);
+  } else {
+    draw->AddTriangleFilled(at(hit[0]), at(hit[1]), at(hit[2]), IM_COL32(255, 240, 150, 70));
+    draw->AddTriangle(at(hit[0]), at(hit[1]), at(hit[2]), colour, 2.5f);
+  }
+}
+
+void setElementMode(AppState& state, ElementMode mode) {
+  state.elementMode = mode;
+  state.statusMessage = std::string("a click selects ") + elementModeName(mode) +
+                        (mode == ElementMode::Vertex ? "" : " (their vertices)");
 }
 
 // Digits, '.', '-' and Backspace during G / R / S (Blender's numeric input).
@@ -235,6 +269,12 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
        [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Rotate, v, h); }},
       {GLFW_KEY_S, kNoMods, "scale",
        [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Scale, v, h); }},
+      {GLFW_KEY_1, kNoMods, "pick_vertices",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Vertex); }},
+      {GLFW_KEY_2, kNoMods, "pick_edges",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Edge); }},
+      {GLFW_KEY_3, kNoMods, "pick_faces",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Face); }},
       {GLFW_KEY_G, kAlt, "clear_location",
        [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Location); }},
       {GLFW_KEY_R, kAlt, "clear_rotation",
@@ -294,7 +334,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     case Interaction::Mode::HandleDrag: {
       drawAxisLine(state, views);
       if (it.transform) {
-        const GizmoPart dragged{it.transform->kind == TransformKind::Grab     ? GizmoPart::Kind::Move
+        const GizmoPart dragged{it.transform->kind == TransformKind::Grab    ? GizmoPart::Kind::Move
                                 : it.transform->kind == TransformKind::Scale ? GizmoPart::Kind::Scale
                                                                              : GizmoPart::Kind::Rotate,
                                 it.transform->axis};
@@ -344,9 +384,11 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   const bool overView = !io.WantCaptureMouse && hovered >= 0;
   if (overView && selectionGizmo(state, views[static_cast<std::size_t>(hovered)], gizmo))
     hot = pickGizmo(gizmo, mouse - views[static_cast<std::size_t>(hovered)].origin());
-  for (std::size_t v = 0; v < views.size(); ++v) drawGizmo(state, views[v], static_cast<int>(v) == hovered ? hot : GizmoPart{});
+  for (std::size_t v = 0; v < views.size(); ++v)
+    drawGizmo(state, views[v], static_cast<int>(v) == hovered ? hot : GizmoPart{});
   if (!overView) return;
   const ViewRect& r = views[static_cast<std::size_t>(hovered)];
+  if (hot.kind == GizmoPart::Kind::None) drawHover(state, r, mouse);
   if (io.MouseWheel != 0.0f) state.camera.zoom(io.MouseWheel);
 
   const bool middle = ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
@@ -359,7 +401,8 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     return;
   }
   if (left && hot.kind != GizmoPart::Kind::None) {  // drag a gizmo part: G / R / S with its axis
-    const TransformKind kinds[] = {TransformKind::Grab, TransformKind::Grab, TransformKind::Scale, TransformKind::Rotate};
+    const TransformKind kinds[] = {TransformKind::Grab, TransformKind::Grab, TransformKind::Scale,
+                                   TransformKind::Rotate};
     it.view = hovered;
     it.pressMouse = mouse;
     it.mode = Interaction::Mode::HandleDrag;
@@ -373,15 +416,16 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     it.view = hovered;
     it.pressMouse = mouse;
     const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
-    const int hit = pickPoint(pts, mouse - r.origin(), kPickRadius);
-    if (hit >= 0) {
+    const std::vector<int> hit =
+        pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+    if (!hit.empty()) {
       if (io.KeyShift) {
-        state.selection.click(hit, Selection::Mode::Toggle);
+        state.selection.apply(hit, Selection::Mode::Toggle);
         selectionChanged(state);
         return;
       }
-      if (!state.selection.isSelected(hit)) {
-        state.selection.click(hit, Selection::Mode::Replace);
+      if (!std::all_of(hit.begin(), hit.end(), [&](int v) { return state.selection.isSelected(v); })) {
+        state.selection.apply(hit, Selection::Mode::Replace);
         selectionChanged(state);
       }
       it.mode = Interaction::Mode::HandleDrag;

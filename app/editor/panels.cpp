@@ -246,6 +246,15 @@ void drawControlPanel(AppState& state) {
   if (ImGui::Button("Frame (F)")) frameAll(state);
   tooltip("Frame the mesh and the posed cage in the views (F)");
   ImGui::Text("%d of %d cage vertices selected", state.selection.count(), state.selection.size());
+  int pickMode = static_cast<int>(state.elementMode);
+  const char* pickNames[] = {"vertex", "edge", "face"};
+  const char* pickTips[] = {"A click selects one cage vertex (1)", "A click selects an edge: its two vertices (2)",
+                            "A click selects a face: its vertices (3)"};
+  for (int m = 0; m < 3; ++m) {
+    if (m > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(pickNames[m], pickMode == m)) state.elementMode = static_cast<ElementMode>(m);
+    tooltip(pickTips[m]);
+  }
   ImGui::Checkbox("show cage", &state.showCage);
   tooltip("Draw the cage and its handles");
   ImGui::SameLine();
@@ -424,7 +433,6 @@ void drawShortcutSheet(AppState& state) {
     ImGui::EndTable();
   }
   ImGui::TextDisabled("While transforming: X / Y / Z axis, digits type a value, Shift fine, Ctrl snaps.");
-  ImGui::TextDisabled("1 / 2 / 3: pick vertices / edges / faces.");
   ImGui::End();
 }
 
