@@ -141,7 +141,7 @@ void installCallbacks(GLFWwindow* window, WindowLink* windowLink) {
 
 // Hands this frame's share of the queued input to ImGui's backend, in order.
 void feedInput(GLFWwindow* window, InputEventQueue& queue) {
-  for (const InputEvent& e : queue.takeFrame()) {
+  for (const InputEvent& e : queue.takeFrame(ImGui::GetIO().WantTextInput)) {
     switch (e.type) {
       case InputEvent::Type::Key:
         ImGui_ImplGlfw_KeyCallback(window, e.code, e.scancode, e.action, e.mods);

@@ -156,7 +156,7 @@ std::string editorUsage() {
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"
          "  --frame-delay MS          testing: make every frame MS slower (tries input at low frame rates)\n"
-         "  --log-actions             print each keyboard command to stdout as it runs\n"
+         "  --log-actions             print each keyboard command, undo step and dialog to stdout (testing)\n"
          "  -h, --help                this list\n"
          "\n"
          "In the editor: F1 lists the shortcuts. Ctrl+S saves the session, Ctrl+Z / Ctrl+Shift+Z undo / redo,\n"

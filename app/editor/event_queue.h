@@ -38,8 +38,10 @@ class InputEventQueue {
   void push(const InputEvent& event) { events_.push_back(event); }
   bool empty() const { return events_.empty(); }
   std::size_t size() const { return events_.size(); }
-  // This frame's events, in order (see above); the rest stay queued for the next frames.
-  std::vector<InputEvent> takeFrame();
+  // This frame's events, in order (see above); the rest stay queued for the next frames. `typing`: a text field
+  // has the keyboard (ImGui's WantTextInput), which reads characters, not key states: printable keys then do not
+  // split frames, so typed text goes in at one frame per burst instead of two frames per letter.
+  std::vector<InputEvent> takeFrame(bool typing = false);
 
  private:
   std::deque<InputEvent> events_;

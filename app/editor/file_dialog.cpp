@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "app_state.h"
+#include "panels.h"
 #include "screenshot.h"
 
 namespace somicage::editor {
@@ -187,10 +188,6 @@ bool inputText(const char* label, std::string& text, ImGuiInputTextFlags flags =
   return changed;
 }
 
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
-}
-
 // The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
 // names it). Returns true when an entry was opened.
 bool drawRecentFiles(AppState& state) {
@@ -286,6 +283,7 @@ void drawFileDialog(AppState& state) {
   if (d.justOpened) {
     ImGui::OpenPopup(title);
     d.justOpened = false;
+    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
   }
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, vp->Size.x - 20.0f), 0), ImGuiCond_Appearing);

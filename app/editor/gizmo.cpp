@@ -2,17 +2,11 @@
 
 #include <cmath>
 
+#include "selection.h"
+
 namespace somicage::editor {
 
 namespace {
-
-// Distance from p to the segment a-b.
-double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  const Eigen::Vector2d ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
 
 constexpr Axis kAxes[3] = {Axis::X, Axis::Y, Axis::Z};
 

@@ -25,16 +25,15 @@ void sectionHeader(const char* title) {
   ImGui::Separator();
 }
 
-// Tooltip for the last widget (also when it is disabled: then it says why).
-void tooltip(const char* text) {
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
-}
-
 void openDemo(AppState& state, int dim) {
   guardUnsaved(state, dim == 2 ? "open the 2D demo" : "open the 3D demo", [dim](AppState& s) { requestDemo(s, dim); });
 }
 
 }  // namespace
+
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
 
 double panelWidth(double windowWidth) { return std::clamp(0.42 * windowWidth, 220.0, 340.0); }
 
@@ -386,7 +385,10 @@ void drawHistoryPanel(AppState& state) {
 void drawUnsavedModal(AppState& state) {
   if (!state.unsaved.asking) return;
   const char* title = "Unsaved changes";
-  if (!ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  if (!ImGui::IsPopupOpen(title)) {
+    ImGui::OpenPopup(title);
+    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
+  }
   ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
   ImGui::TextWrapped("\"%s\" has unsaved changes. Save them before you %s?", documentName(state).c_str(),

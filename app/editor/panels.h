@@ -13,6 +13,9 @@ namespace somicage::editor {
 // more than half (640 x 400 stays usable).
 double panelWidth(double windowWidth);
 
+// The tooltip of the last widget, shown also when it is disabled (then it says why).
+void tooltip(const char* text);
+
 // Heights in pixels of the main menu bar and the status bar (valid inside a frame).
 double menuBarHeight();
 double statusBarHeight();

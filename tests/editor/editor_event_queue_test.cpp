@@ -113,6 +113,22 @@ TEST(EditorEventQueue, AChordIsSeenWithItsModifierByAPerFrameConsumer) {
   EXPECT_TRUE(ctrlHeldWhenSPressed);
 }
 
+TEST(EditorEventQueue, TypedTextGoesInAtOnceWhileATextFieldHasTheKeyboard) {
+  InputEventQueue q;
+  for (int k : {GLFW_KEY_A, GLFW_KEY_B, GLFW_KEY_A}) {
+    q.push(InputEvent::key(k, 0, GLFW_PRESS, 0));
+    q.push(InputEvent::character(static_cast<unsigned>('a' + (k - GLFW_KEY_A))));
+    q.push(InputEvent::key(k, 0, GLFW_RELEASE, 0));
+  }
+  q.push(InputEvent::key(GLFW_KEY_BACKSPACE, 0, GLFW_PRESS, 0));
+  q.push(InputEvent::key(GLFW_KEY_BACKSPACE, 0, GLFW_RELEASE, 0));
+  const std::vector<InputEvent> first = q.takeFrame(true);
+  ASSERT_EQ(first.size(), 10u);  // the three letters and Backspace's press; its release is the next frame's
+  EXPECT_EQ(first[7].code, 'a');
+  EXPECT_EQ(first.back().code, GLFW_KEY_BACKSPACE);
+  EXPECT_EQ(q.takeFrame(true).size(), 1u);
+}
+
 TEST(EditorFramePacing, DrawsForInputThenSettlesThenSleeps) {
   FramePacer pacer;
   FrameDemand idle;

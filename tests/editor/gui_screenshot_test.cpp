@@ -196,8 +196,8 @@ TEST(GuiScreenshot, PosedDiffersFromRest) {
   ASSERT_GT(rest.width, 0);
   ASSERT_GT(posed.width, 0);
   EXPECT_GT(rest.coverage(), 0.03);
-  EXPECT_GT(posed.coverage(), 0.03);
-  // The same camera (framed on the rest scene) sees the silhouette move with the cage.
+  EXPECT_GT(posed.coverage(), 0.015);  // the framing includes the posed cage: the mesh fills less (measured 0.024)
+  // The silhouette moves with the cage.
   EXPECT_GT(maskDifference(rest, 0, posed, 0, rest.width), 0.01);
   // Rendering is deterministic: the same rest pose twice gives the same mask.
   const Image again = screenshot(files + " --hide-ui --size 640x480", "sphere_rest_again");
@@ -259,8 +259,9 @@ TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
   ASSERT_GT(gpu.width, 0);
   ASSERT_EQ(gpu.width, cpu.width);
   ASSERT_EQ(gpu.height, cpu.height);
-  EXPECT_GT(gpu.coverage(0, gpu.width / 2), 0.03);
-  EXPECT_GT(gpu.coverage(gpu.width / 2, gpu.width), 0.03);
+  // Framed with the posed cage included, the mesh fills less of each view (measured 0.027).
+  EXPECT_GT(gpu.coverage(0, gpu.width / 2), 0.015);
+  EXPECT_GT(gpu.coverage(gpu.width / 2, gpu.width), 0.015);
   EXPECT_LT(maskDifference(gpu, 0, cpu, 0, gpu.width), 1e-3);
   EXPECT_LT(colourDifference(gpu, cpu, 6), 2e-3);
   // And it moved with the cage (not the rest mesh).
