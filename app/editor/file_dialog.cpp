@@ -286,7 +286,8 @@ void drawFileDialog(AppState& state) {
     if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
   }
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, vp->Size.x - 20.0f), 0), ImGuiCond_Appearing);
+  // Height 0, always: the dialog grows with its message and never clips its buttons.
+  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, vp->Size.x - 20.0f), 0), ImGuiCond_Always);
   if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     if (d.purpose != FileDialogPurpose::None) cancelFileDialog(state);
     return;
@@ -328,7 +329,11 @@ void drawFileDialog(AppState& state) {
     tooltip("A name in the folder above, or a whole path. The extension is added when missing.");
     ImGui::TextDisabled("%s files (%s)", kind.title, kind.extension);
   }
-  if (!d.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.4f, 1.0f), "%s", d.message.c_str());
+  if (!d.message.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", d.message.c_str());
+    ImGui::PopStyleColor();
+  }
   bool cancel = false;
   if (!d.confirmPath.empty()) {
     if (ImGui::Button("Replace")) submitFileDialog(state, true);
