@@ -203,10 +203,10 @@ void evaluateScalar(const CoordinateMatrix<Scalar>& C, int mainColumns, const Fr
 
 template <typename Scalar>
 void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const FrameWeights& W, int threads,
-                     Eigen::MatrixXd& out) {
+                     CoordinateMatrix<double>& rows) {
   const PreparedWeights<Scalar> prepared(W, mainColumns);
   const int numPoints = static_cast<int>(C.rows()), numBlocks = numPoints / kBlockRows;
-  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> rows(numPoints, W.outputs);
+  rows.resize(numPoints, W.outputs);
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
@@ -218,12 +218,11 @@ void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const F
     outputsOfRows<Scalar, 1>(C, prepared, p, y);
     std::copy(y[0], y[0] + W.outputs, rows.row(p).data());
   }
-  out = rows;
 }
 
 }  // namespace
 
-void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, Eigen::MatrixXd& y) {
+void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, CoordinateMatrix<double>& y) {
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
   if (C.isFloat())

@@ -73,7 +73,7 @@ void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, in
 // The raw outputs y = C_p W (before the per-point solve and the exterior blend) of every row of C (#P + 2 #E by
 // W.outputs, resized), with the kernel and the thread partition of evaluateFrame; the deformation gradient
 // (jacobian.h) applies the same W to the gradients of C's rows.
-void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, Eigen::MatrixXd& y);
+void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, CoordinateMatrix<double>& y);
 
 // The exterior blend on out = every row of C evaluated (#P + 2 #E by d): adds w (proxy - anchor) to each exterior
 // point's row and keeps the first #P rows.

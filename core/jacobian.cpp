@@ -32,7 +32,7 @@ std::size_t DeformationGradients::bytes() const {
 namespace {
 
 template <int Dim>
-void finishPoints(const FrameWeights& W, const Eigen::MatrixXd& y, const std::vector<Eigen::MatrixXd>& dy,
+void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y, const std::vector<CoordinateMatrix<double>>& dy,
                   const std::vector<char>& defined, Eigen::MatrixXd& positions, Eigen::MatrixXd& jacobians) {
   using Dual = dual::Dual<Dim>;
   const int numRows = static_cast<int>(y.rows()), numPoints = static_cast<int>(defined.size());
@@ -65,9 +65,9 @@ void DeformationGradients::evaluate(const Eigen::MatrixXd& posedVertices, const 
   const FrameWeights W = deformer_.frameWeights(posedVertices, params);
   const FrameCoordinates& C = deformer_.frameCoordinates();
   const int threads = 0;
-  Eigen::MatrixXd y;
+  CoordinateMatrix<double> y;
   evaluateFrameOutputs(C, W, threads, y);
-  std::vector<Eigen::MatrixXd> dy(gradients_.size());
+  std::vector<CoordinateMatrix<double>> dy(gradients_.size());
   for (std::size_t a = 0; a < gradients_.size(); ++a) evaluateFrameOutputs(gradients_[a], W, threads, dy[a]);
   if (dim() == 3)
     finishPoints<3>(W, y, dy, defined_, positions, jacobians);
