@@ -7,8 +7,8 @@
 namespace somicage {
 
 DeformationAnalysis analyzeDeformation(const DeformationGradients& gradients, const Eigen::MatrixXd& restPoints,
-                                       const std::vector<std::vector<int>>& faces,
-                                       const Eigen::MatrixXd& posedVertices, const DeformParams& params) {
+                                       const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& posedVertices,
+                                       const DeformParams& params) {
   DeformationAnalysis a;
   gradients.evaluate(posedVertices, params, a.positions, a.jacobians);
   a.points = pointQuantities(a.jacobians, gradients.dim());
@@ -20,10 +20,10 @@ DeformationAnalysis analyzeDeformation(const DeformationGradients& gradients, co
 std::vector<double> nuSweepValues(double from, double to, int count) {
   auto inRange = [](double nu) { return nu > -1 && nu < 0.5; };
   if (!inRange(from) || !inRange(to) || !(count >= 2))
-    throw InputError("--nu-sweep", -1,
-                     "the sweep " + std::to_string(from) + ":" + std::to_string(to) + ":" + std::to_string(count) +
-                         " is not usable",
-                     "give FROM:TO:N with -1 < FROM, TO < 0.5 and N >= 2, e.g. -0.9:0.49:30");
+    throw InputError(
+        "--nu-sweep", -1,
+        "the sweep " + std::to_string(from) + ":" + std::to_string(to) + ":" + std::to_string(count) + " is not usable",
+        "give FROM:TO:N with -1 < FROM, TO < 0.5 and N >= 2, e.g. -0.9:0.49:30");
   std::vector<double> nus(static_cast<std::size_t>(count));
   for (int k = 0; k < count; ++k) nus[static_cast<std::size_t>(k)] = from + k * (to - from) / (count - 1);
   return nus;

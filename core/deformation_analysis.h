@@ -21,8 +21,8 @@ struct DeformationAnalysis {
 
 // restPoints: the points the gradients were made for (#P by d); faces: the mesh's faces over them (may be empty).
 DeformationAnalysis analyzeDeformation(const DeformationGradients& gradients, const Eigen::MatrixXd& restPoints,
-                                       const std::vector<std::vector<int>>& faces,
-                                       const Eigen::MatrixXd& posedVertices, const DeformParams& params);
+                                       const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& posedVertices,
+                                       const DeformParams& params);
 
 struct NuSweepEntry {
   double nu = 0;

@@ -33,7 +33,7 @@ FaceQuantities faceQuantities(const std::vector<std::vector<int>>& faces, const 
 // for a planar hole, an estimate otherwise, and only reported as such.
 struct EnclosedMeasure {
   bool closed = false;
-  double rest = 0, deformed = 0;                          // capped when !closed
+  double rest = 0, deformed = 0;                         // capped when !closed
   double change() const { return deformed / rest - 1; }  // relative change
 };
 EnclosedMeasure enclosedMeasure(const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& rest,

@@ -32,8 +32,9 @@ std::size_t DeformationGradients::bytes() const {
 namespace {
 
 template <int Dim>
-void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y, const std::vector<CoordinateMatrix<double>>& dy,
-                  const std::vector<char>& defined, Eigen::MatrixXd& positions, Eigen::MatrixXd& jacobians) {
+void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y,
+                  const std::vector<CoordinateMatrix<double>>& dy, const std::vector<char>& defined,
+                  Eigen::MatrixXd& positions, Eigen::MatrixXd& jacobians) {
   using Dual = dual::Dual<Dim>;
   const int numRows = static_cast<int>(y.rows()), numPoints = static_cast<int>(defined.size());
   double origin[3] = {0, 0, 0};

@@ -178,8 +178,8 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
     return kExitOk;
   }
   const char* measure = cage.dim() == 3 ? "volume" : "area";
-  std::cout << kCommand << ": " << cage.dim() << "D " << methodName(method) << ", " << points.rows()
-            << " vertices (" << a.points.undefined << " outside the cage)\n";
+  std::cout << kCommand << ": " << cage.dim() << "D " << methodName(method) << ", " << points.rows() << " vertices ("
+            << a.points.undefined << " outside the cage)\n";
   if (a.volume.closed)
     std::cout << "  " << measure << ": " << formatNumber(a.volume.rest, 10) << " -> "
               << formatNumber(a.volume.deformed, 10) << " (" << formatNumber(100 * a.volume.change(), 4) << " %)\n";
@@ -193,8 +193,8 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
             << "  conformal distortion: median " << formatNumber(quantile(a.points.distortion, 0.5)) << ", p95 "
             << formatNumber(quantile(a.points.distortion, 0.95)) << "\n";
   for (const NuSweepEntry& e : sweep)
-    std::cout << "  nu " << formatNumber(e.nu) << ": " << measure << " change "
-              << formatNumber(100 * e.volumeChange, 4) << " %, fold-overs " << e.foldovers << "\n";
+    std::cout << "  nu " << formatNumber(e.nu) << ": " << measure << " change " << formatNumber(100 * e.volumeChange, 4)
+              << " %, fold-overs " << e.foldovers << "\n";
   return kExitOk;
 }
 

@@ -6,8 +6,8 @@
 #include <iostream>
 
 #include "cage_repair.h"
-#include "errors.h"
 #include "cage_validation.h"
+#include "errors.h"
 #include "memory_estimate.h"
 #include "mesh_placement.h"
 

@@ -43,8 +43,7 @@ Cage loadUsableCage(const std::string& path);
 // "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
 // withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath,
-                             bool withGradients = false);
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
 // Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
 // (core/mesh_placement.h): different units, usually.
