@@ -3,7 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include "dual_number.h"
+#include "dual_eigen.h"
 
 namespace somicage {
 
@@ -88,8 +88,10 @@ void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const
   if (l == 0) return;  // a zero-length edge carries no boundary
 
   const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
-  const Scalar d0 = x[0] - p0.x(), d1 = x[1] - p0.y();
-  const Scalar xi = d0 * tau.x() + d1 * tau.y(), h = d0 * n.x() + d1 * n.y();
+  // Eigen's dot, as before the scalar became a template: a contracted a*b + c*d would give points on the
+  // supporting line a rounding-sized h instead of 0.
+  const Eigen::Matrix<Scalar, 2, 1> d(x[0] - p0.x(), x[1] - p0.y());
+  const Scalar xi = d.dot(tau), h = d.dot(n);
   const Scalar u0 = -xi, u1 = l - xi;
   const Scalar hh = h * h, u01 = u0 * u1;
   const Scalar R0sq = u0 * u0 + hh, R1sq = u1 * u1 + hh;
