@@ -101,6 +101,17 @@ TEST(DeformationQuantities, QuantilesInterpolateOrderStatisticsAndSkipNaN) {
   EXPECT_DOUBLE_EQ(quantile(v, 0.95), 4.8);
 }
 
+// Two deformations of the same points, one translated by t: |t| / diameter at every point; the same one: 0.
+TEST(DeformationQuantities, DifferenceOfTwoDeformationsInDiameters) {
+  const Eigen::MatrixXd a = test::randomBallPoints(6, 1, 2);
+  Eigen::MatrixXd b = a;
+  b.col(0).array() += 0.3;
+  b.col(2).array() -= 0.4;
+  const Eigen::VectorXd d = pointDifference(a, b, 2.0);
+  for (int p = 0; p < 6; ++p) EXPECT_NEAR(d(p), 0.5 / 2.0, 1e-15);
+  EXPECT_EQ(pointDifference(a, a, 2.0).maxCoeff(), 0);
+}
+
 // A uniform scale s of the cage: J = s I for every method, so det J = s^3, distortion 1, volume change s^3 - 1.
 TEST(DeformationAnalysis, UniformScaleGivesCubedVolumeForEveryMethod) {
   const Cage cage = test::makeBumpySphere(1);
