@@ -33,5 +33,7 @@ int runCageCommand(const std::vector<std::string>& args);
 std::string cageUsage();
 int runBenchCommand(const std::vector<std::string>& args);
 std::string benchUsage();
+int runAnalyzeCommand(const std::vector<std::string>& args);
+std::string analyzeUsage();
 
 }  // namespace somicage
