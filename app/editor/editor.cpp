@@ -27,6 +27,7 @@
 #include "input.h"
 #include "layout.h"
 #include "panels.h"
+#include "quantity_overlay.h"
 #include "screenshot.h"
 
 namespace somicage {
@@ -52,6 +53,7 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   }
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
+  state.show = o.show;
 }
 
 // Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
@@ -207,6 +209,8 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     frameAll(state);
     state.frameRequested = false;
   }
+  measureViews(state);
+  if (!state.hideUi || state.show > 0) drawQuantityOverlay(state, views);
   renderer.sync(state);
   ImGui::Render();
 

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "errors.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -97,6 +98,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--show") {
+      o.show = quantityIndex(value(), a);
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -152,6 +155,10 @@ std::string editorUsage() {
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --show detj|distortion|foldover\n"
+         "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
+         "                            centred at 1), conformal distortion (viridis) or fold-overs (det J <= 0, "
+         "magenta)\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"
