@@ -54,6 +54,7 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
   state.show = o.show;
+  state.showCage = !o.hideCage;
 }
 
 // Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
@@ -380,6 +381,11 @@ int runWindow(const EditorOptions& options) {
         } else {
           std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
                       backendDisplayName(state.activeBackend()));
+          if (state.show > 0) {  // the legend's numbers, for scripts and tests
+            const ColorRange range = shownRange(state);
+            std::printf("legend %s: %.17g %.17g\n", quantityDescriptors()[static_cast<std::size_t>(state.show)].id,
+                        range.lo, range.hi);
+          }
         }
       }
     } else {

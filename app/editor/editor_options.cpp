@@ -98,6 +98,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--hide-cage") {
+      o.hideCage = true;
     } else if (a == "--show") {
       o.show = quantityIndex(value(), a);
     } else if (a == "--flat") {
@@ -155,6 +157,7 @@ std::string editorUsage() {
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
          "  --show detj|distortion|foldover\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis) or fold-overs (det J <= 0, "
