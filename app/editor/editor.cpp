@@ -372,6 +372,7 @@ int runWindow(const EditorOptions& options) {
       } else {
         // A few frames let ImGui settle its layout before the capture.
         for (int i = 0; i < 4; ++i) {
+          if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
           if (i == 3) state.screenshotRequest = options.screenshotPath;
           frame(window, state, renderer, title, windowLink.queue);
         }

@@ -98,6 +98,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--nu-plot") {
+      o.nuPlot = true;
     } else if (a == "--hide-cage") {
       o.hideCage = true;
     } else if (a == "--show") {
@@ -157,6 +159,8 @@ std::string editorUsage() {
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
+         "                            change against nu (in the window: the Sweep nu button)\n"
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
          "  --show detj|distortion|foldover\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"

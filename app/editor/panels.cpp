@@ -228,6 +228,7 @@ void drawControlPanel(AppState& state) {
   if (nuDone) commitEdit(state, "nu");
   if (gammaDone) commitEdit(state, "gamma");
   if (!somiglianaShown) ImGui::TextDisabled("(Green and MVC ignore these)");
+  drawNuPlot(state);
 
   sectionHeader("Pose");
   if (ImGui::Button("Reset pose")) resetPose(state);

@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -92,6 +93,60 @@ void drawShowChoice(AppState& state) {
     for (std::size_t i = 0; i < d.size(); ++i)
       if (ImGui::Selectable(d[i].name, static_cast<int>(i) == state.show)) state.show = static_cast<int>(i);
     ImGui::EndCombo();
+  }
+}
+
+void sweepNuNow(AppState& state) {
+  auto d = state.deformers.find(Method::Somigliana);
+  if (!state.scene || d == state.deformers.end()) return;
+  try {
+    state.quantities.sweepNu(d->second, state.scene->meshVertices, state.scene->meshTriangles, state.pose, state.params,
+                             nuSweepValues(-0.95, 0.49, 25), state.deformGeneration);
+  } catch (const std::exception& e) {
+    state.errors.push_back(std::string("nu sweep failed: ") + e.what());
+  }
+}
+
+void drawNuPlot(AppState& state) {
+  if (!state.scene || state.deformers.count(Method::Somigliana) == 0) return;
+  if (ImGui::Button("Sweep nu")) sweepNuNow(state);
+  const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep();
+  const bool stale = state.quantities.nuSweepGeneration() != state.deformGeneration;
+  ImGui::SameLine();
+  ImGui::TextDisabled(sweep.empty() ? "volume change vs nu"
+                      : stale       ? "(pose changed: sweep again)"
+                                    : "volume change vs nu");
+  if (sweep.empty()) return;
+  std::vector<float> change;
+  int folds = 0;
+  for (const NuSweepEntry& e : sweep) {
+    change.push_back(static_cast<float>(100 * e.volumeChange));
+    folds = std::max(folds, e.foldovers);
+  }
+  const auto [lo, hi] = std::minmax_element(change.begin(), change.end());
+  const float pad = std::max(0.5f, 0.1f * (*hi - *lo));
+  char overlay[64];
+  std::snprintf(overlay, sizeof overlay, "%+.1f%% .. %+.1f%%, max %d folds", *lo, *hi, folds);
+  ImGui::PlotLines("##nuplot", change.data(), static_cast<int>(change.size()), 0, overlay, *lo - pad, *hi + pad,
+                   ImVec2(ImGui::GetContentRegionAvail().x, 80));
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  const double nu0 = sweep.front().nu, nu1 = sweep.back().nu;
+  if (std::isfinite(state.params.nu)) {  // the current nu
+    const float x = a.x + static_cast<float>((state.params.nu - nu0) / (nu1 - nu0)) * (b.x - a.x);
+    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
+  }
+  if (ImGui::IsItemHovered()) {
+    const double f = std::clamp((ImGui::GetIO().MousePos.x - a.x) / (b.x - a.x), 0.0f, 1.0f);
+    const double nu = nu0 + f * (nu1 - nu0);
+    const std::size_t k = static_cast<std::size_t>(std::lround(f * static_cast<double>(sweep.size() - 1)));
+    ImGui::SetTooltip("nu %.3f: volume %+.2f%%, %d fold-overs (click: set nu)", sweep[k].nu,
+                      100 * sweep[k].volumeChange, sweep[k].foldovers);
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+      DeformParams p = state.params;
+      p.nu = std::clamp(nu, -0.99, 0.49);
+      setParams(state, p);
+      commitEdit(state, "nu");
+    }
   }
 }
 

@@ -18,5 +18,11 @@ ColorRange shownRange(const AppState& state);
 void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views);
 // The Show combo of the control panel.
 void drawShowChoice(AppState& state);
+// Sweeps nu over (-0.95, 0.49) in 25 steps for the current pose of the Somigliana view (its gradients made for
+// the call when no J-based quantity is shown); errors go to state.errors.
+void sweepNuNow(AppState& state);
+// Somigliana: a "Sweep nu" button and the plot of volume change against nu for the current pose, the current nu
+// marked; a click on the plot sets nu (one undo step), hovering shows the value there.
+void drawNuPlot(AppState& state);
 
 }  // namespace somicage::editor

@@ -106,6 +106,21 @@ void ViewQuantities::update(const std::map<Method, std::shared_ptr<const CageDef
   ++generation_;
 }
 
+void ViewQuantities::sweepNu(const std::shared_ptr<const CageDeformer>& deformer, const Eigen::MatrixXd& restMesh,
+                             const Eigen::MatrixXi& triangles, const Eigen::MatrixXd& pose, const DeformParams& params,
+                             const std::vector<double>& nus, std::uint64_t generation) {
+  std::unique_ptr<DeformationGradients> own;
+  const DeformationGradients* gradients = nullptr;
+  for (const auto& [method, e] : entries_)
+    if (e.deformer == deformer && e.gradients) gradients = e.gradients.get();
+  if (!gradients) {
+    own = std::make_unique<DeformationGradients>(*deformer, restMesh);
+    gradients = own.get();
+  }
+  nuSweep_ = somicage::sweepNu(*gradients, restMesh, faceLists(triangles), pose, params, nus);
+  nuSweepGeneration_ = generation;
+}
+
 const ViewMeasurement* ViewQuantities::measurement(Method method) const {
   auto it = entries_.find(method);
   return it == entries_.end() || !it->second.gradients ? nullptr : &it->second.measurement;

@@ -61,7 +61,15 @@ class ViewQuantities {
               const std::vector<Method>& methods, const Eigen::MatrixXd& restMesh, const Eigen::MatrixXi& triangles,
               const Eigen::MatrixXd& pose, const DeformParams& params, int quantity, std::uint64_t generation);
   const ViewMeasurement* measurement(Method method) const;
-  std::uint64_t generation() const { return generation_; }  // bumps when a measurement changes
+
+  // The nu sweep of one deformer's pose (deformation_analysis.h: sweepNu): with the held gradients, or with ones
+  // made for this call only. `generation` names the pose, as in update().
+  void sweepNu(const std::shared_ptr<const CageDeformer>& deformer, const Eigen::MatrixXd& restMesh,
+               const Eigen::MatrixXi& triangles, const Eigen::MatrixXd& pose, const DeformParams& params,
+               const std::vector<double>& nus, std::uint64_t generation);
+  const std::vector<NuSweepEntry>& nuSweep() const { return nuSweep_; }
+  std::uint64_t nuSweepGeneration() const { return nuSweepGeneration_; }  // the pose the sweep was made for
+  std::uint64_t generation() const { return generation_; }                // bumps when a measurement changes
 
  private:
   struct Entry {
@@ -72,6 +80,8 @@ class ViewQuantities {
   std::map<Method, Entry> entries_;
   std::uint64_t measured_ = ~0ull, generation_ = 0;
   int quantity_ = 0;
+  std::vector<NuSweepEntry> nuSweep_;
+  std::uint64_t nuSweepGeneration_ = ~0ull;
 };
 
 }  // namespace somicage::editor
