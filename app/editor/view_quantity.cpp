@@ -8,12 +8,49 @@
 
 namespace somicage::editor {
 
+namespace {
+
+// Per vertex, the geometric mean of the area ratios of its faces (the mean of logs: a ratio and its inverse cancel).
+Eigen::VectorXd vertexAreaRatio(const DeformationAnalysis& a, const Eigen::MatrixXi& triangles) {
+  const Eigen::VectorXd& faceRatio = a.faces.areaRatio;
+  const Eigen::Index n = a.points.detJ.size();
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(n), count = Eigen::VectorXd::Zero(n);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    if (!(faceRatio[f] > 0)) continue;
+    for (int k = 0; k < 3; ++k) {
+      sum[triangles(f, k)] += std::log(faceRatio[f]);
+      count[triangles(f, k)] += 1;
+    }
+  }
+  Eigen::VectorXd out(n);
+  for (Eigen::Index i = 0; i < n; ++i)
+    out[i] = count[i] > 0 ? std::exp(sum[i] / count[i]) : std::numeric_limits<double>::quiet_NaN();
+  return out;
+}
+
+Eigen::VectorXd detJ(const DeformationAnalysis& a, const Eigen::MatrixXi&) { return a.points.detJ; }
+Eigen::VectorXd distortion(const DeformationAnalysis& a, const Eigen::MatrixXi&) { return a.points.distortion; }
+// Fold-overs only: every unfolded vertex at the neutral centre of the map.
+Eigen::VectorXd foldovers(const DeformationAnalysis& a, const Eigen::MatrixXi&) {
+  return a.points.detJ.unaryExpr([](double d) { return d > 0 ? 1.0 : d; });
+}
+
+std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {
+  std::vector<std::vector<int>> faces(static_cast<std::size_t>(triangles.rows()));
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    faces[static_cast<std::size_t>(f)] = {triangles(f, 0), triangles(f, 1), triangles(f, 2)};
+  return faces;
+}
+
+}  // namespace
+
 const std::vector<QuantityDescriptor>& quantityDescriptors() {
   static const std::vector<QuantityDescriptor> descriptors{
-      {"shading", "shading only", ColorScale::Viridis, false},
-      {"detj", "det J", ColorScale::LogDiverging, true},
-      {"distortion", "conformal distortion", ColorScale::Viridis, true},
-      {"foldover", "fold-overs", ColorScale::LogDiverging, true},
+      {"shading", "shading only", ColorScale::Viridis, false, nullptr},
+      {"detj", "det J", ColorScale::LogDiverging, true, detJ},
+      {"distortion", "conformal distortion", ColorScale::Viridis, true, distortion},
+      {"foldover", "fold-overs", ColorScale::LogDiverging, true, foldovers},
+      {"area", "area ratio", ColorScale::LogDiverging, true, vertexAreaRatio},
   };
   return descriptors;
 }
@@ -53,17 +90,6 @@ float colorCoordinate(double value, double detJ, const ColorRange& range, ColorS
   return static_cast<float>(std::clamp(t, 0.0, 1.0));
 }
 
-namespace {
-
-std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {
-  std::vector<std::vector<int>> faces(static_cast<std::size_t>(triangles.rows()));
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
-    faces[static_cast<std::size_t>(f)] = {triangles(f, 0), triangles(f, 1), triangles(f, 2)};
-  return faces;
-}
-
-}  // namespace
-
 void ViewQuantities::update(const std::map<Method, std::shared_ptr<const CageDeformer>>& deformers,
                             const std::vector<Method>& methods, const Eigen::MatrixXd& restMesh,
                             const Eigen::MatrixXi& triangles, const Eigen::MatrixXd& pose, const DeformParams& params,
@@ -92,10 +118,7 @@ void ViewQuantities::update(const std::map<Method, std::shared_ptr<const CageDef
     const DeformationAnalysis a = analyzeDeformation(*e.gradients, restMesh, faces, pose, params);
     ViewMeasurement& out = e.measurement;
     out.detJ = a.points.detJ;
-    out.values = quantity == 2 ? a.points.distortion : a.points.detJ;
-    if (quantity == 3)  // fold-overs only: every unfolded vertex at the neutral centre
-      for (Eigen::Index i = 0; i < out.values.size(); ++i)
-        if (out.detJ[i] > 0) out.values[i] = 1.0;
+    out.values = quantityDescriptors()[static_cast<std::size_t>(quantity)].values(a, triangles);
     out.closed = a.volume.closed;
     out.volumeChange = a.volume.change();
     out.foldovers = a.points.foldovers;

@@ -25,6 +25,8 @@ struct QuantityDescriptor {
   const char* name;  // the Show menu and the legend
   ColorScale scale;
   bool usesJacobian;
+  // The per-vertex scalars of a measured pose (#V); null for shading only.
+  Eigen::VectorXd (*values)(const DeformationAnalysis& analysis, const Eigen::MatrixXi& triangles);
 };
 
 // The "Show" choices; index 0 is shading only. Add a quantity by adding a descriptor and its values in

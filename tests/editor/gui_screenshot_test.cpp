@@ -311,12 +311,13 @@ std::pair<double, double> centreMeshPixels(const Image& img, Want want) {
           mesh ? static_cast<double>(good) / static_cast<double>(mesh) : 0.0};
 }
 
-// "legend detj: LO HI" from the screenshot's log.
-std::pair<double, double> legendRange(const std::string& log) {
-  const std::size_t at = log.find("legend detj: ");
+// "legend ID: LO HI" from the screenshot's log.
+std::pair<double, double> legendRange(const std::string& log, const std::string& id = "detj") {
+  const std::string key = "legend " + id + ": ";
+  const std::size_t at = log.find(key);
   if (at == std::string::npos) return {NAN, NAN};
   char* end = nullptr;
-  const double lo = std::strtod(log.c_str() + at + 13, &end);
+  const double lo = std::strtod(log.c_str() + at + key.size(), &end);
   return {lo, std::strtod(end, nullptr)};
 }
 
@@ -371,6 +372,13 @@ TEST(GuiScreenshot, DetJOfAUniformScaleIsTheCubeOfTheScale) {
   const auto [coverage, red] = centreMeshPixels(img, [](int r, int g, int b) { return r > g + 50 && r > b + 40; });
   EXPECT_GT(coverage, 0.2);
   EXPECT_GT(red, 0.99);
+  // Every triangle's area grows by s^2. 1e-4: the area ratio comes from positions, whose rounding-sized error (the
+  // editor's interactive integration) is divided by triangles with edges of ~0.08.
+  screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(scaled) + " --show area --hide-ui --size 320x240",
+             "area_scaled");
+  const auto [areaLo, areaHi] = legendRange(readLog("area_scaled"), "area");
+  EXPECT_NEAR(areaHi, s * s, 1e-4 * s * s);
+  EXPECT_NEAR(areaLo, 1 / (s * s), 1e-4);
 }
 
 TEST(GuiScreenshot, DetJLegendRangeIsWhatAnalyzeReports) {
