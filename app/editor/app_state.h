@@ -26,6 +26,7 @@
 #include "session.h"
 #include "transform.h"
 #include "unsaved_changes.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -82,6 +83,9 @@ struct AppState {
   // GPU backend: methods whose `deformed` entry is stale (the Renderer deformed them on the GPU); ensureCpuPoints()
   // computes them on the CPU when something needs the numbers (framing, export).
   std::vector<Method> cpuStale;
+  // ---- quantities shown on the meshes (view_quantity.h) ----
+  int show = 0;  // index into quantityDescriptors(); 0 = shading only; every view shows it, in one shared range
+  ViewQuantities quantities;
 
   // ---- editing (document.h: what undo restores) ----
   History history;

@@ -27,6 +27,7 @@
 #include "input.h"
 #include "layout.h"
 #include "panels.h"
+#include "quantity_overlay.h"
 #include "screenshot.h"
 
 namespace somicage {
@@ -52,6 +53,8 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   }
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
+  state.show = o.show;
+  state.showCage = !o.hideCage;
 }
 
 // Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
@@ -207,6 +210,8 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     frameAll(state);
     state.frameRequested = false;
   }
+  measureViews(state);
+  if (!state.hideUi || state.show > 0) drawQuantityOverlay(state, views);
   renderer.sync(state);
   ImGui::Render();
 
@@ -367,6 +372,7 @@ int runWindow(const EditorOptions& options) {
       } else {
         // A few frames let ImGui settle its layout before the capture.
         for (int i = 0; i < 4; ++i) {
+          if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
           if (i == 3) state.screenshotRequest = options.screenshotPath;
           frame(window, state, renderer, title, windowLink.queue);
         }
@@ -376,6 +382,11 @@ int runWindow(const EditorOptions& options) {
         } else {
           std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
                       backendDisplayName(state.activeBackend()));
+          if (state.show > 0) {  // the legend's numbers, for scripts and tests
+            const ColorRange range = shownRange(state);
+            std::printf("legend %s: %.17g %.17g\n", quantityDescriptors()[static_cast<std::size_t>(state.show)].id,
+                        range.lo, range.hi);
+          }
         }
       }
     } else {

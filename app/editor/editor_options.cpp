@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "errors.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -97,6 +98,12 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--nu-plot") {
+      o.nuPlot = true;
+    } else if (a == "--hide-cage") {
+      o.hideCage = true;
+    } else if (a == "--show") {
+      o.show = quantityIndex(value(), a);
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -151,6 +158,13 @@ std::string editorUsage() {
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
+         "                            change against nu (in the window: the Sweep nu button)\n"
+         "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
+         "  --show detj|distortion|foldover|area\n"
+         "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
+         "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
+         "                            magenta) or the triangles' area ratio (per vertex: geometric mean, log scale)\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"

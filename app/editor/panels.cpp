@@ -11,6 +11,7 @@
 #include <limits>
 #include <system_error>
 
+#include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
 
@@ -227,6 +228,7 @@ void drawControlPanel(AppState& state) {
   if (nuDone) commitEdit(state, "nu");
   if (gammaDone) commitEdit(state, "gamma");
   if (!somiglianaShown) ImGui::TextDisabled("(Green and MVC ignore these)");
+  drawNuPlot(state);
 
   sectionHeader("Pose");
   if (ImGui::Button("Reset pose")) resetPose(state);
@@ -265,6 +267,8 @@ void drawControlPanel(AppState& state) {
   tooltip("Draw the mesh's edges");
   ImGui::Checkbox("flat shading", &state.flatShading);
   tooltip("Faceted shading (one normal per triangle) instead of smooth");
+  drawShowChoice(state);
+  tooltip("Colour the meshes by a quantity of the pose (measured when the pose settles; one range for all views)");
 
   sectionHeader("Deformation backend");
   {

@@ -6,6 +6,7 @@
 #include "editor_options.h"
 #include "errors.h"
 #include "layout.h"
+#include "view_quantity.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -82,4 +83,15 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--bogus"}), "--bogus");
   EXPECT_EQ(sourceOf({"a.obj", "b.obj", "c.obj", "d.obj"}), "command line");
   EXPECT_EQ(sourceOf({"--method"}), "--method");
+  EXPECT_EQ(sourceOf({"--show", "volume"}), "--show");
+  EXPECT_EQ(sourceOf({"--show"}), "--show");
+}
+
+TEST(EditorOptions, ShowNamesAQuantityDescriptor) {
+  const EditorOptions o = parseEditorArgs({"--show", "detj", "--hide-cage"});
+  EXPECT_STREQ(quantityDescriptors()[static_cast<std::size_t>(o.show)].id, "detj");
+  EXPECT_TRUE(quantityDescriptors()[static_cast<std::size_t>(o.show)].usesJacobian);
+  EXPECT_TRUE(o.hideCage);
+  EXPECT_EQ(parseEditorArgs({}).show, 0);  // shading only
+  EXPECT_EQ(quantityDescriptors()[0].values, nullptr);
 }
