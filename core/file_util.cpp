@@ -13,7 +13,7 @@
 
 #include "errors.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 std::string readTextFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -63,4 +63,4 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
   }
 }
 
-}  // namespace somicage::editor
+}  // namespace somicage
