@@ -16,7 +16,8 @@ namespace somicage {
 const std::vector<CliCommand>& cliCommands() {
   static const std::vector<CliCommand> commands = {
       {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
-      {"deform", "deform a mesh (or point set) with a posed cage and write it as OBJ", runDeformCommand, deformUsage},
+      {"deform", "deform a mesh (or point set) with a posed cage and write it (OBJ, PLY, GLB)", runDeformCommand, deformUsage},
+      {"animate", "write a session's keyframed animation as a GLB or an OBJ sequence", runAnimateCommand, animateUsage},
       {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},

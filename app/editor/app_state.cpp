@@ -11,6 +11,7 @@
 
 #include "drop.h"
 #include "errors.h"
+#include "mesh_formats.h"
 #include "obj_io.h"
 
 namespace somicage::editor {
@@ -229,7 +230,9 @@ const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
 
 // ---- edits ----
 
-EditSnapshot snapshot(const AppState& state, const std::string& label) { return {state.pose, state.params, label}; }
+EditSnapshot snapshot(const AppState& state, const std::string& label) {
+  return {state.pose, state.params, state.animation.poses, state.animation.timeline, label};
+}
 
 void recordEdit(AppState& state, const std::string& label) { state.history.record(snapshot(state, label)); }
 
@@ -256,6 +259,8 @@ void undo(AppState& state) {
   state.statusMessage = "undo " + s.label;
   setPose(state, s.pose);
   setParams(state, s.params);
+  state.animation.poses = s.poses;
+  state.animation.timeline = s.timeline;
 }
 
 void redo(AppState& state) {
@@ -264,6 +269,8 @@ void redo(AppState& state) {
   state.statusMessage = "redo " + state.history.nextUndoLabel();
   setPose(state, s.pose);
   setParams(state, s.params);
+  state.animation.poses = s.poses;
+  state.animation.timeline = s.timeline;
 }
 
 void setMethod(AppState& state, Method method) {
@@ -310,10 +317,14 @@ Session makeSession(const AppState& state) {
   s.compare = state.compare;
   s.compareMethods = state.compareMethods;
   s.camera = state.camera.state();
+  s.poses = state.animation.poses;
+  s.timeline = state.animation.timeline;
   return s;
 }
 
 void applySession(AppState& state, const Session& s) {
+  state.animation.poses = s.poses;
+  state.animation.timeline = s.timeline;
   state.method = s.method;
   state.params = s.params;
   state.compare = s.compare;
@@ -378,11 +389,19 @@ void exportDeformedMesh(AppState& state, const std::string& path) {
   if (!state.scene) return;
   ensureCpuPoints(state, state.method);
   try {
-    PolygonMesh topology;
-    const Eigen::MatrixXi& f = state.scene->meshTriangles;
-    topology.faces.reserve(static_cast<std::size_t>(f.rows()));
-    for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
-    saveObj(path, displayedPoints(state, state.method), topology);
+    const Eigen::MatrixXd& points = displayedPoints(state, state.method);
+    if (state.scene->document) {  // a file: everything of it but the positions is kept (core/mesh_formats.h)
+      Eigen::MatrixXd positions = state.scene->document->geometry.vertices;  // a 2D scene keeps z
+      positions.leftCols(points.cols()) = points;
+      for (const std::string& note : writeMeshDocument(path, *state.scene->document, positions))
+        state.errors.push_back("export: " + note);
+    } else {
+      PolygonMesh topology;
+      const Eigen::MatrixXi& f = state.scene->meshTriangles;
+      topology.faces.reserve(static_cast<std::size_t>(f.rows()));
+      for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
+      saveObj(path, points, topology);
+    }
     state.statusMessage = "exported the deformed mesh (" + std::string(methodDisplayName(state.method)) + ") to " + path;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());

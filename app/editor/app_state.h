@@ -16,6 +16,7 @@
 #include "deformer.h"
 #include "editor_options.h"
 #include "history.h"
+#include "pose_keys.h"
 #include "precompute_worker.h"
 #include "recent_files.h"
 #include "scene.h"
@@ -89,6 +90,7 @@ struct AppState {
 
   // ---- editing ----
   UndoHistory history;
+  AnimationState animation;  // pose library, timeline, playback (pose_keys.h)
   OrbitCamera camera;
   Interaction interaction;
 

@@ -1,4 +1,5 @@
-// Undo/redo of edits as snapshots of the edited state (the posed cage and the deformation parameters).
+// Undo/redo of edits as snapshots of the edited state (the posed cage, the deformation parameters, the pose
+// library and the timeline's keys).
 // Pure, no GL. A cage has tens to hundreds of vertices, so whole snapshots are cheap and simple.
 #pragma once
 
@@ -8,12 +9,15 @@
 #include <string>
 
 #include "deformer.h"
+#include "pose_timeline.h"
 
 namespace somicage::editor {
 
 struct EditSnapshot {
   Eigen::MatrixXd pose;  // #V by d posed cage vertices
   DeformParams params;
+  PoseLibrary poses;  // the pose library and the keys are edits too
+  Timeline timeline;
   std::string label;     // what the edit that followed this snapshot did ("Grab", "nu", ...)
 };
 

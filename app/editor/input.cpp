@@ -33,7 +33,9 @@ void confirmTransform(AppState& state) {
   if (state.interaction.transform) {
     const TransformSession& t = *state.interaction.transform;
     if (t.original != state.pose) {
-      state.history.record({t.original, state.params, transformName(t.kind)});
+      EditSnapshot before = snapshot(state, transformName(t.kind));
+      before.pose = t.original;
+      state.history.record(std::move(before));
     }
   }
   state.interaction.transform.reset();

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cage.h"
+#include "mesh_document.h"
 
 namespace somicage::editor {
 
@@ -15,6 +17,7 @@ struct Scene {
   Eigen::MatrixXi meshTriangles;  // #F by 3 (polygons of the file triangulated; may be empty for point sets)
   Cage restCage;
   std::string meshPath, cagePath;    // empty for the built-in demos
+  std::shared_ptr<const MeshDocument> document;  // the mesh file as read, for lossless export (null for demos)
   std::vector<std::string> notices;  // what loadScene repaired in the cage, and warnings about it (one sentence each)
 
   int dim() const { return restCage.dim(); }
@@ -26,7 +29,7 @@ struct Scene {
 // polygon cage.
 Scene makeDemoScene(int dim);
 
-// Loads MESH.obj and CAGE.obj (core/obj_io.h). A 2D cage makes a 2D scene (the mesh keeps x, y). The cage's
+// Loads MESH and CAGE in any format of core/mesh_formats.h. A 2D cage makes a 2D scene (the mesh keeps x, y). The cage's
 // orientation is repaired as in the command line (core/cage_repair.h), which the notices say.
 // Throws InputError on any problem with the files, and when the repaired cage is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
