@@ -63,18 +63,21 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
   }
   if (fs::exists(target, error)) fs::remove(target, error);  // empty, checked above
   fs::rename(temporary.path, target, error);
-  if (error) throw InputError(out, -1, "cannot rename the finished sequence into place: " + error.message(), "check the permissions");
+  if (error)
+    throw InputError(out, -1, "cannot rename the finished sequence into place: " + error.message(),
+                     "check the permissions");
   temporary.kept = true;
   return {};
 }
 
 }  // namespace
 
-std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage, const Timeline& timeline,
-                                                  const PoseLibrary& poses, const DeformParams& base,
-                                                  const Eigen::MatrixXd& meshVertices, int dim, int first, int last,
-                                                  const ProgressCallback& progress) {
-  if (last < first) throw InputError("--frames", -1, "the last frame comes before the first", "write --frames A:B with A <= B");
+std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
+                                                  const Timeline& timeline, const PoseLibrary& poses,
+                                                  const DeformParams& base, const Eigen::MatrixXd& meshVertices,
+                                                  int dim, int first, int last, const ProgressCallback& progress) {
+  if (last < first)
+    throw InputError("--frames", -1, "the last frame comes before the first", "write --frames A:B with A <= B");
   std::vector<Eigen::MatrixXd> frames;
   for (int frame = first; frame <= last; ++frame) {
     const FrameState state = evaluateTimeline(timeline, poses, frame, base, cage.numVertices(), cage.dim());

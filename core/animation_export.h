@@ -18,9 +18,10 @@ namespace somicage {
 // The mesh's positions at frames first..last (inclusive): the timeline evaluated at each whole frame, then
 // deformed. A 2D cage moves x, y and keeps the mesh's z. progress gets the fraction of frames done; returning
 // false throws Cancelled. Throws InputError when a frame cannot be deformed (a point not finite).
-std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage, const Timeline& timeline,
-                                                  const PoseLibrary& poses, const DeformParams& base,
-                                                  const Eigen::MatrixXd& meshVertices, int dim, int first, int last,
+std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
+                                                  const Timeline& timeline, const PoseLibrary& poses,
+                                                  const DeformParams& base, const Eigen::MatrixXd& meshVertices,
+                                                  int dim, int first, int last,
                                                   const ProgressCallback& progress = noProgress);
 
 // Writes frames (frame k is timeline frame first + k) to out: a path ending in .glb gives one GLB at fps,

@@ -52,7 +52,8 @@ GltfLayout layoutOf(const MeshDocument& document) {
           triangles.push_back(static_cast<uint32_t>(vertex));
           continue;
         }
-        const size_t corner = static_cast<size_t>(std::find(faces[f].begin(), faces[f].end(), vertex) - faces[f].begin());
+        const size_t corner =
+            static_cast<size_t>(std::find(faces[f].begin(), faces[f].end(), vertex) - faces[f].begin());
         const std::pair<int, int> key{vertex, document.faceUVs[f][corner]};
         const auto [it, inserted] = glVertex.emplace(key, static_cast<uint32_t>(layout.meshVertex.size()));
         if (inserted) {
@@ -80,7 +81,8 @@ class BufferBuilder {
     view.byteOffset = buffer.size();
     view.byteLength = bytes;
     view.target = target;
-    buffer.insert(buffer.end(), static_cast<const unsigned char*>(data), static_cast<const unsigned char*>(data) + bytes);
+    buffer.insert(buffer.end(), static_cast<const unsigned char*>(data),
+                  static_cast<const unsigned char*>(data) + bytes);
     model_.bufferViews.push_back(view);
     tinygltf::Accessor accessor;
     accessor.bufferView = static_cast<int>(model_.bufferViews.size()) - 1;
@@ -174,9 +176,9 @@ std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDo
     primitive.attributes["POSITION"] = position;
     if (texcoord >= 0) primitive.attributes["TEXCOORD_0"] = texcoord;
     const std::vector<uint32_t>& triangles = layout.triangles[m];
-    primitive.indices = buffer.add(triangles.data(), triangles.size() * sizeof(uint32_t),
-                                   TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, triangles.size(),
-                                   TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    primitive.indices =
+        buffer.add(triangles.data(), triangles.size() * sizeof(uint32_t), TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
+                   TINYGLTF_TYPE_SCALAR, triangles.size(), TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
     for (const int target : targets) primitive.targets.push_back({{"POSITION", target}});
     mesh.primitives.push_back(primitive);
   }

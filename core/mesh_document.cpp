@@ -168,9 +168,9 @@ MeshDocument parseObjDocument(const std::string& text, const std::string& source
     }
     document.records.push_back(std::move(record));
   }
-  SOMICAGE_ASSERT(vertexCount == document.geometry.numVertices() &&
-                      document.faceNormals.size() == document.geometry.faces.size(),
-                  "the OBJ document and parseObj disagree on the records of " + source);
+  SOMICAGE_ASSERT(
+      vertexCount == document.geometry.numVertices() && document.faceNormals.size() == document.geometry.faces.size(),
+      "the OBJ document and parseObj disagree on the records of " + source);
   document.normalCount = static_cast<int>(normals.size());
   document.normals.resize(document.normalCount, 3);
   for (int n = 0; n < document.normalCount; ++n) document.normals.row(n) = normals[static_cast<size_t>(n)];

@@ -34,7 +34,7 @@ struct MeshDocument {
   std::vector<std::vector<int>> faceNormals;
   // Per face, per corner: the 0-based `vt` index, or -1 (used by the GLB writer, which carries UVs per vertex).
   std::vector<std::vector<int>> faceUVs;
-  Eigen::MatrixXd uvs;                 // #vt by 2
+  Eigen::MatrixXd uvs;                    // #vt by 2
   std::vector<std::string> faceMaterial;  // per face: the `usemtl` name in effect ("" = none)
 };
 

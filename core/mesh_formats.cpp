@@ -30,9 +30,7 @@ std::string extensionOf(const std::string& path) {
 
 // ---- Reading ----
 
-MeshDocument readObj(const std::string& path, const ReadOptions&) {
-  return parseObjDocument(readTextFile(path), path);
-}
+MeshDocument readObj(const std::string& path, const ReadOptions&) { return parseObjDocument(readTextFile(path), path); }
 
 // The transform of the first node (depth first) that shows mesh m, or nullptr when no node does.
 bool findMeshTransform(const aiNode* node, const aiMatrix4x4& parent, unsigned m, aiMatrix4x4& out) {
@@ -60,7 +58,8 @@ void addObjRecords(MeshDocument& document, bool hasUVs, bool hasNormals) {
   const int n = document.geometry.numVertices();
   for (int i = 0; i < n; ++i) document.records.push_back({ObjRecord::Kind::Position, i, ""});
   for (int i = 0; hasUVs && i < n; ++i) {
-    document.records.push_back({ObjRecord::Kind::Text, -1, "vt " + shortest(document.uvs(i, 0)) + " " + shortest(document.uvs(i, 1))});
+    document.records.push_back(
+        {ObjRecord::Kind::Text, -1, "vt " + shortest(document.uvs(i, 0)) + " " + shortest(document.uvs(i, 1))});
   }
   for (int i = 0; hasNormals && i < n; ++i) document.records.push_back({ObjRecord::Kind::Normal, i, ""});
   for (const std::vector<int>& face : document.geometry.faces) {
@@ -133,7 +132,8 @@ MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options)
     throw InputError(path, -1, "the file has no mesh vertices", "export the model with its mesh");
   }
   document.geometry.vertices.resize(static_cast<Eigen::Index>(positions.size()), 3);
-  for (size_t i = 0; i < positions.size(); ++i) document.geometry.vertices.row(static_cast<Eigen::Index>(i)) = positions[i];
+  for (size_t i = 0; i < positions.size(); ++i)
+    document.geometry.vertices.row(static_cast<Eigen::Index>(i)) = positions[i];
   if (options.weld) {
     document.geometry = weldVertices(document.geometry);
     allHaveUVs = allHaveNormals = false;  // per-corner attributes of welded vertices would have to be split
@@ -163,9 +163,7 @@ std::vector<std::string> writeObj(const std::string& path, const MeshDocument& d
   return {};
 }
 
-void appendBytes(std::string& out, const void* data, size_t size) {
-  out.append(static_cast<const char*>(data), size);
-}
+void appendBytes(std::string& out, const void* data, size_t size) { out.append(static_cast<const char*>(data), size); }
 
 std::vector<std::string> writePly(const std::string& path, const MeshDocument& document,
                                   const Eigen::MatrixXd& positions) {
@@ -201,7 +199,8 @@ std::vector<std::string> writePly(const std::string& path, const MeshDocument& d
   std::vector<std::string> notes;
   if (document.uvs.rows() > 0 || document.normalCount > 0)
     notes.push_back("PLY is written with positions and faces only: UVs and normals were dropped (write .obj or .glb)");
-  if (std::any_of(document.faceMaterial.begin(), document.faceMaterial.end(), [](const std::string& m) { return !m.empty(); }))
+  if (std::any_of(document.faceMaterial.begin(), document.faceMaterial.end(),
+                  [](const std::string& m) { return !m.empty(); }))
     notes.push_back("PLY carries no materials or groups: they were dropped (write .obj to keep them)");
   if (!document.geometry.lines.empty()) notes.push_back("PLY is written without the `l` polylines");
   return notes;
@@ -285,7 +284,8 @@ PolygonMesh weldVertices(const PolygonMesh& mesh) {
   }
   PolygonMesh welded = mesh;
   welded.vertices.resize(static_cast<Eigen::Index>(kept.size()), 3);
-  for (size_t k = 0; k < kept.size(); ++k) welded.vertices.row(static_cast<Eigen::Index>(k)) = mesh.vertices.row(kept[k]);
+  for (size_t k = 0; k < kept.size(); ++k)
+    welded.vertices.row(static_cast<Eigen::Index>(k)) = mesh.vertices.row(kept[k]);
   for (auto* lists : {&welded.faces, &welded.lines}) {
     for (std::vector<int>& list : *lists) {
       for (int& i : list) i = newIndex[static_cast<size_t>(i)];

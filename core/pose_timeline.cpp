@@ -58,8 +58,7 @@ void Timeline::setKey(const Keyframe& key) {
 }
 
 void Timeline::removeKey(double frame) {
-  keys.erase(std::remove_if(keys.begin(), keys.end(), [&](const Keyframe& k) { return k.frame == frame; }),
-             keys.end());
+  keys.erase(std::remove_if(keys.begin(), keys.end(), [&](const Keyframe& k) { return k.frame == frame; }), keys.end());
 }
 
 namespace {
@@ -67,8 +66,9 @@ namespace {
 const Eigen::MatrixXd& keyPose(const Keyframe& key, const PoseLibrary& library, Eigen::Index rows, Eigen::Index cols) {
   const NamedPose* pose = library.find(key.pose);
   if (!pose) {
-    throw InputError("timeline", -1, "the key at frame " + std::to_string(key.frame) + " uses the pose \"" + key.pose +
-                                         "\", which is not in the pose library",
+    throw InputError("timeline", -1,
+                     "the key at frame " + std::to_string(key.frame) + " uses the pose \"" + key.pose +
+                         "\", which is not in the pose library",
                      "store a pose under that name, or delete the key");
   }
   if (pose->vertices.rows() != rows || pose->vertices.cols() != cols) {
@@ -114,13 +114,12 @@ FrameState evaluateTimeline(const Timeline& timeline, const PoseLibrary& library
     state.cage = (1 - u) * p0 + u * p1;
   } else {
     // Tangents (per frame) at both ends of the segment: Catmull-Rom, one-sided at the first and last key.
-    const Eigen::MatrixXd m0 = k == 0 ? Eigen::MatrixXd((p1 - p0) / h)
-                                      : Eigen::MatrixXd((p1 - pose(k - 1)) / (t1 - keys[k - 1].frame));
-    const Eigen::MatrixXd m1 = k + 2 == n ? Eigen::MatrixXd((p1 - p0) / h)
-                                          : Eigen::MatrixXd((pose(k + 2) - p0) / (keys[k + 2].frame - t0));
+    const Eigen::MatrixXd m0 =
+        k == 0 ? Eigen::MatrixXd((p1 - p0) / h) : Eigen::MatrixXd((p1 - pose(k - 1)) / (t1 - keys[k - 1].frame));
+    const Eigen::MatrixXd m1 =
+        k + 2 == n ? Eigen::MatrixXd((p1 - p0) / h) : Eigen::MatrixXd((pose(k + 2) - p0) / (keys[k + 2].frame - t0));
     const double u2 = u * u, u3 = u2 * u;
-    state.cage = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * p1 +
-                 (u3 - u2) * h * m1;
+    state.cage = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * h * m1;
   }
   state.params.nu = lerpParameter(keyValue(keys[k].nu, base.nu), keyValue(keys[k + 1].nu, base.nu), u);
   state.params.gamma = lerpParameter(keyValue(keys[k].gamma, base.gamma), keyValue(keys[k + 1].gamma, base.gamma), u);

@@ -35,8 +35,8 @@ class PoseLibrary {
 };
 
 struct Keyframe {
-  double frame = 0;  // where the key sits on the timeline
-  std::string pose;  // a name in the PoseLibrary
+  double frame = 0;                 // where the key sits on the timeline
+  std::string pose;                 // a name in the PoseLibrary
   std::optional<double> nu, gamma;  // unset: the session's value
 };
 

@@ -90,7 +90,8 @@ PoseLibrary poseLibraryFromJson(const JsonValue& value, const std::string& sourc
     Eigen::MatrixXd vertices(static_cast<Eigen::Index>(rows.items().size()), static_cast<Eigen::Index>(cols));
     for (size_t i = 0; i < rows.items().size(); ++i) {
       const JsonValue& row = rows.items()[i];
-      if (!row.isArray() || row.items().size() != cols) fail(source, what + ": row " + std::to_string(i) + " has the wrong size");
+      if (!row.isArray() || row.items().size() != cols)
+        fail(source, what + ": row " + std::to_string(i) + " has the wrong size");
       for (size_t c = 0; c < cols; ++c) {
         const double x = numberOf(row.items()[c], what, source);
         if (!std::isfinite(x)) fail(source, what + " must be finite");

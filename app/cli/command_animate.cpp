@@ -21,13 +21,14 @@ namespace {
 const char* const kCommand = "somicage animate";
 
 ArgParser animateOptions() {
-  return ArgParser(kCommand, {
-                                 {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
-                                 {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
-                                 {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
-                                 {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
-                                 {"--threads", "N", "OpenMP threads (default: all cores)"},
-                             });
+  return ArgParser(kCommand,
+                   {
+                       {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
+                       {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
+                       {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
+                       {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
+                       {"--threads", "N", "OpenMP threads (default: all cores)"},
+                   });
 }
 
 // A session names its files as the editor opened them; a relative name is looked up next to the session first.

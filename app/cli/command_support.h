@@ -24,9 +24,9 @@ std::string formatNumber(double value, int digits = 6);
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
-// The cage the commands deform: read in any format of mesh_formats.h, then repairCage (cage_repair.h), then validateCage. Each repair is
-// printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections) as
-// "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
+// The cage the commands deform: read in any format of mesh_formats.h, then repairCage (cage_repair.h), then
+// validateCage. Each repair is printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections)
+// as "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
 Cage loadUsableCage(const std::string& path, const ReadOptions& read = {});
 
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory

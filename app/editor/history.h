@@ -18,7 +18,7 @@ struct EditSnapshot {
   DeformParams params;
   PoseLibrary poses;  // the pose library and the keys are edits too
   Timeline timeline;
-  std::string label;     // what the edit that followed this snapshot did ("Grab", "nu", ...)
+  std::string label;  // what the edit that followed this snapshot did ("Grab", "nu", ...)
 };
 
 class UndoHistory {

@@ -14,11 +14,11 @@ struct AppState;
 struct AnimationState {
   PoseLibrary poses;
   Timeline timeline;
-  double frame = 0;           // the frame under the timeline's cursor
+  double frame = 0;  // the frame under the timeline's cursor
   bool playing = false;
   double playStartFrame = 0;  // where playback started, and when (seconds on the frame loop's clock)
   double playStartTime = 0;
-  bool keyParams = false;     // new keys hold the current nu and gamma
+  bool keyParams = false;  // new keys hold the current nu and gamma
 };
 
 // Each is recorded for undo; errors (a taken name...) go to state.errors.

@@ -15,7 +15,7 @@ namespace somicage::editor {
 struct Session {
   std::string meshPath, cagePath;  // both empty: the built-in demo of dimension demoDim
   int demoDim = 3;
-  Eigen::MatrixXd pose;            // #V by d posed cage vertices; empty = the rest pose
+  Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
   Method method = Method::Somigliana;
   DeformParams params;
   bool compare = false;
@@ -26,7 +26,8 @@ struct Session {
 };
 
 // JSON text with "format": "somicage-session", "version": 2 (version 2 adds "poses" and "timeline",
-// core/pose_timeline_json.h; version 1 files load with an empty library and timeline). nu = +-infinity is written as "inf" / "-inf".
+// core/pose_timeline_json.h; version 1 files load with an empty library and timeline). nu = +-infinity is written as
+// "inf" / "-inf".
 std::string sessionToJson(const Session& session);
 // Throws InputError naming `source` on a syntax error, a missing or mistyped field, or an unknown method.
 Session sessionFromJson(const std::string& text, const std::string& source);
