@@ -25,6 +25,7 @@
 #include "layout.h"
 #include "panels.h"
 #include "screenshot.h"
+#include "timeline_panel.h"
 
 namespace somicage {
 
@@ -106,7 +107,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
   const double left = state.hideUi ? 0.0 : kPanelWidth;
-  const double bottom = state.hideUi ? 0.0 : statusBarHeight();
+  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + timelinePanelHeight();
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
@@ -120,11 +121,16 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawStatusBar(state);
     drawViewLabels(state, views);
     drawPathDialog(state);
+    drawTimelinePanel(state, left, statusBarHeight());
+    drawPoseLibraryPanel(state, top);
+    drawAnimationExportDialogs(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
   handleInput(state, views);
 
+  tickPlayback(state, glfwGetTime());
+  showNextExportFrame(state);
   updateDeformation(state);
   renderer.sync(state);
   ImGui::Render();
@@ -133,6 +139,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
   const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
   renderer.draw(state, views, fbWidth, fbHeight, scale);
+  captureExportFrame(state, fbWidth, fbHeight);  // the views without the panels
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
   if (!state.screenshotRequest.empty()) {

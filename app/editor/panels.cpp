@@ -96,6 +96,7 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Load posed cage...")) openDialog(state, PathDialog::Kind::LoadPose, "posed_cage.obj");
     if (ImGui::MenuItem("Save posed cage...")) openDialog(state, PathDialog::Kind::SavePose, "posed_cage.obj");
     if (ImGui::MenuItem("Export deformed mesh...")) openDialog(state, PathDialog::Kind::ExportMesh, "deformed.obj");
+    if (ImGui::MenuItem("Export animation...")) state.animation.exportDialogRequested = true;
     ImGui::Separator();
     if (ImGui::MenuItem("Open session...")) openDialog(state, PathDialog::Kind::LoadSession, "session.json");
     if (ImGui::MenuItem("Save session...")) openDialog(state, PathDialog::Kind::SaveSession, "session.json");

@@ -3,8 +3,10 @@
 // and playback show the timeline's evaluation (core/pose_timeline.h) in the viewports without recording edits.
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "animation_export_job.h"
 #include "pose_timeline.h"
 
 namespace somicage::editor {
@@ -19,6 +21,8 @@ struct AnimationState {
   double playStartFrame = 0;  // where playback started, and when (seconds on the frame loop's clock)
   double playStartTime = 0;
   bool keyParams = false;  // new keys hold the current nu and gamma
+  std::optional<AnimationExportJob> exportJob;  // File > Export animation in progress
+  bool exportDialogRequested = false;           // set by the File menu, opened by the timeline panel's code
 };
 
 // Each is recorded for undo; errors (a taken name...) go to state.errors.
