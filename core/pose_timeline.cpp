@@ -78,7 +78,17 @@ const Eigen::MatrixXd& keyPose(const Keyframe& key, const PoseLibrary& library, 
   return pose->vertices;
 }
 
-double keyValue(const std::optional<double>& value, double base) { return value ? *value : base; }
+// A key's nu or gamma: its own, else the nearest earlier key's, else the nearest later key's, else base. Keys that
+// do not set a parameter so never pull it back to whatever the editor shows at the moment.
+double keyValue(const std::vector<Keyframe>& keys, size_t k, std::optional<double> Keyframe::*field, double base) {
+  for (size_t j = k + 1; j-- > 0;) {
+    if (keys[j].*field) return *(keys[j].*field);
+  }
+  for (size_t j = k + 1; j < keys.size(); ++j) {
+    if (keys[j].*field) return *(keys[j].*field);
+  }
+  return base;
+}
 
 double lerpParameter(double a, double b, double u) {
   if (std::isinf(a) || std::isinf(b)) return u < 1 ? a : b;
@@ -99,8 +109,8 @@ FrameState evaluateTimeline(const Timeline& timeline, const PoseLibrary& library
   if (n == 1 || frame <= keys.front().frame || frame >= keys.back().frame) {
     const size_t k = (n == 1 || frame <= keys.front().frame) ? 0 : n - 1;
     state.cage = pose(k);
-    state.params.nu = keyValue(keys[k].nu, base.nu);
-    state.params.gamma = keyValue(keys[k].gamma, base.gamma);
+    state.params.nu = keyValue(keys, k, &Keyframe::nu, base.nu);
+    state.params.gamma = keyValue(keys, k, &Keyframe::gamma, base.gamma);
     return state;
   }
   size_t k = static_cast<size_t>(std::upper_bound(keys.begin(), keys.end(), frame,
@@ -121,8 +131,10 @@ FrameState evaluateTimeline(const Timeline& timeline, const PoseLibrary& library
     const double u2 = u * u, u3 = u2 * u;
     state.cage = (2 * u3 - 3 * u2 + 1) * p0 + (u3 - 2 * u2 + u) * h * m0 + (-2 * u3 + 3 * u2) * p1 + (u3 - u2) * h * m1;
   }
-  state.params.nu = lerpParameter(keyValue(keys[k].nu, base.nu), keyValue(keys[k + 1].nu, base.nu), u);
-  state.params.gamma = lerpParameter(keyValue(keys[k].gamma, base.gamma), keyValue(keys[k + 1].gamma, base.gamma), u);
+  state.params.nu =
+      lerpParameter(keyValue(keys, k, &Keyframe::nu, base.nu), keyValue(keys, k + 1, &Keyframe::nu, base.nu), u);
+  state.params.gamma = lerpParameter(keyValue(keys, k, &Keyframe::gamma, base.gamma),
+                                     keyValue(keys, k + 1, &Keyframe::gamma, base.gamma), u);
   return state;
 }
 

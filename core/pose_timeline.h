@@ -37,7 +37,7 @@ class PoseLibrary {
 struct Keyframe {
   double frame = 0;                 // where the key sits on the timeline
   std::string pose;                 // a name in the PoseLibrary
-  std::optional<double> nu, gamma;  // unset: the session's value
+  std::optional<double> nu, gamma;  // unset: see evaluateTimeline
 };
 
 enum class Interpolation { Linear, CatmullRom };
@@ -63,8 +63,9 @@ struct FrameState {
 // Linear blends the poses of the two keys; CatmullRom is the cubic Hermite spline through the key poses with
 // Catmull-Rom tangents (p[k+1] - p[k-1]) / (t[k+1] - t[k-1]) (one-sided at the ends), which passes through every
 // key and is C1 across keys even when they are unevenly spaced. nu and gamma are interpolated linearly (a
-// cubic could overshoot the valid range of nu); a key without them uses base's value; nu = +-inf holds its value
-// to the next key. Throws InputError when a key names a missing pose or a pose has the wrong shape.
+// cubic could overshoot the valid range of nu); a key without one takes the nearest earlier key's value (else
+// the nearest later key's; base's when no key sets it); nu = +-inf holds its value to the next key. Throws InputError
+// when a key names a missing pose or a pose has the wrong shape.
 FrameState evaluateTimeline(const Timeline& timeline, const PoseLibrary& library, double frame,
                             const DeformParams& base, Eigen::Index vertexCount, Eigen::Index dim);
 

@@ -86,7 +86,9 @@ TEST(PoseTimeline, ParametersBlendLinearlyAndInfinityHolds) {
   base.gamma = 1.0;
   const FrameState quarter = evaluateTimeline(f.timeline, f.library, 2.5, base, 8, 3);
   EXPECT_NEAR(quarter.params.nu, 0.175, 1e-15);
-  EXPECT_NEAR(quarter.params.gamma, 1.25, 1e-15) << "a key without gamma uses the session's";
+  EXPECT_EQ(quarter.params.gamma, 2.0) << "the keys without gamma take key 1's";
+  f.timeline.keys[1].gamma.reset();
+  EXPECT_EQ(evaluateTimeline(f.timeline, f.library, 2.5, base, 8, 3).params.gamma, 1.0) << "no key sets it: base";
   EXPECT_EQ(evaluateTimeline(f.timeline, f.library, 15, base, 8, 3).params.nu, 0.4);
   EXPECT_TRUE(std::isinf(evaluateTimeline(f.timeline, f.library, 20, base, 8, 3).params.nu));
 }
