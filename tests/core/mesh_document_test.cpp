@@ -13,27 +13,14 @@
 
 #include "errors.h"
 #include "file_util.h"
+#include "scratch_folder.h"
 
 namespace somicage {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "somicage-document-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  fs::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  fs::path path_;
-};
+using test::ScratchFolder;
 
 // A textured quad split in two groups and two materials, with per-vertex normals and a vertex colour token.
 const char* const kTexturedObj =
@@ -73,8 +60,8 @@ bool isPositionOrNormal(const std::string& line) { return line.rfind("v ", 0) ==
 
 TEST(MeshDocument, RestRoundTripKeepsEveryOtherRecordVerbatimAndPositionsExact) {
   ScratchFolder folder;
-  const MeshDocument document = parseObjDocument(kTexturedObj, (folder / "quad.obj").string());
-  const std::string out = (folder / "out.obj").string();
+  const MeshDocument document = parseObjDocument(kTexturedObj, folder / "quad.obj");
+  const std::string out = folder / "out.obj";
   writeObjDocument(out, document, document.geometry.vertices);
   const std::string written = readTextFile(out);
   ASSERT_FALSE(written.empty());
@@ -100,7 +87,7 @@ TEST(MeshDocument, MaterialLibraryResolvesFromAnotherFolder) {
   fs::create_directories(folder / "in");
   fs::create_directories(folder / "elsewhere/deep");
   std::ofstream(folder / "in/quad.mtl") << "newmtl red\nKd 1 0 0\nnewmtl blue\nKd 0 0 1\n";
-  const MeshDocument document = parseObjDocument(kTexturedObj, (folder / "in/quad.obj").string());
+  const MeshDocument document = parseObjDocument(kTexturedObj, folder / "in/quad.obj");
   const fs::path out = folder / "elsewhere/deep/out.obj";
   writeObjDocument(out.string(), document, document.geometry.vertices);
   const std::vector<std::string> lines = linesOf(readTextFile(out.string()));
@@ -109,8 +96,8 @@ TEST(MeshDocument, MaterialLibraryResolvesFromAnotherFolder) {
   EXPECT_TRUE(fs::equivalent(named, folder / "in/quad.mtl")) << lines[1];
 
   // Written next to the source, the line stays as it was.
-  writeObjDocument((folder / "in/copy.obj").string(), document, document.geometry.vertices);
-  EXPECT_EQ(linesOf(readTextFile((folder / "in/copy.obj").string()))[1], "mtllib quad.mtl");
+  writeObjDocument(folder / "in/copy.obj", document, document.geometry.vertices);
+  EXPECT_EQ(linesOf(readTextFile(folder / "in/copy.obj"))[1], "mtllib quad.mtl");
 }
 
 TEST(MeshDocument, NormalsOfAnAffinelyMappedFlatPatchAreTheInverseTransposeNormal) {

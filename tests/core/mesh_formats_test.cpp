@@ -14,27 +14,14 @@
 #include <fstream>
 
 #include "errors.h"
+#include "scratch_folder.h"
 
 namespace somicage {
 namespace {
 
 namespace fs = std::filesystem;
 
-class ScratchFolder {
- public:
-  ScratchFolder() {
-    std::string pattern = (fs::temp_directory_path() / "somicage-formats-XXXXXX").string();
-    path_ = ::mkdtemp(pattern.data());
-  }
-  ~ScratchFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-  }
-  std::string operator/(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  fs::path path_;
-};
+using test::ScratchFolder;
 
 // A square pyramid (a quad base, four triangles) and one vertex no face uses.
 const std::vector<std::array<double, 3>> kVertices = {{0, 0, 0}, {1, 0, 0},        {1, 1, 0},
@@ -48,6 +35,19 @@ std::string objText() {
   for (const auto& f : kFaces) {
     text += "f";
     for (const int i : f) text += " " + std::to_string(i + 1);
+    text += "\n";
+  }
+  return text;
+}
+
+// The vertices, one line each, then the faces as "count i j k ..." (0-based): the body of PLY and OFF files.
+std::string countedText() {
+  std::string text;
+  for (const auto& v : kVertices)
+    text += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+  for (const auto& f : kFaces) {
+    text += std::to_string(f.size());
+    for (const int i : f) text += " " + std::to_string(i);
     text += "\n";
   }
   return text;
@@ -75,27 +75,12 @@ TEST_F(MeshFormats, PlyGivesTheObjVerticesInOrder) {
   std::string ply =
       "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
       "element face 5\nproperty list uchar int vertex_indices\nend_header\n";
-  for (const auto& v : kVertices)
-    ply += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
-  for (const auto& f : kFaces) {
-    ply += std::to_string(f.size());
-    for (const int i : f) ply += " " + std::to_string(i);
-    ply += "\n";
-  }
-  write(folder / "mesh.ply", ply);
+  write(folder / "mesh.ply", ply + countedText());
   expectSameAsObj(loadAnyMesh(folder / "mesh.ply"), obj);
 }
 
 TEST_F(MeshFormats, OffGivesTheObjVerticesInOrder) {
-  std::string off = "OFF\n6 5 0\n";
-  for (const auto& v : kVertices)
-    off += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
-  for (const auto& f : kFaces) {
-    off += std::to_string(f.size());
-    for (const int i : f) off += " " + std::to_string(i);
-    off += "\n";
-  }
-  write(folder / "mesh.off", off);
+  write(folder / "mesh.off", "OFF\n6 5 0\n" + countedText());
   expectSameAsObj(loadAnyMesh(folder / "mesh.off"), obj);
 }
 
