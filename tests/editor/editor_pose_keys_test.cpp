@@ -1,9 +1,17 @@
 // The editor's pose library and timeline: each change is undoable and redoable, a failed change records nothing,
 // scrubbing shows the timeline's cage (a key's pose at its frame, the linear mean between two), and sessions keep
-// the library and the keys (version 1 sessions still load, with neither).
+// the library and the keys (version 1 sessions still load, with neither). File > Export animation runs one frame
+// per editor frame, matches the core export and leaves nothing when cancelled.
 #include <gtest/gtest.h>
+#include <stdlib.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "animation_export.h"
 #include "app_state.h"
+#include "obj_io.h"
 #include "pose_keys.h"
 #include "session.h"
 
@@ -93,6 +101,89 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   const Session old = sessionFromJson(v1, "old.json");
   EXPECT_TRUE(old.poses.poses().empty());
   EXPECT_TRUE(old.timeline.keys.empty());
+}
+
+}  // namespace
+
+namespace {
+
+// File > Export animation without a window: the frame loop's hooks run one timeline frame per call; the GLB
+// written must hold the same frames as the core writer's `deformTimelineFrames` (base = frame 0, one target per
+// later frame), the pose is restored, and Cancel leaves nothing.
+class EditorAnimationExport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (std::filesystem::temp_directory_path() / "somicage-export-XXXXXX").string();
+    folder = ::mkdtemp(pattern.data());
+    std::ofstream(folder / "cage.obj")
+        << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
+           "v -1 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    std::ofstream(folder / "mesh.obj")
+        << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+    requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "cage.obj").string());
+    std::optional<PrecomputeOutcome> out = state.worker.wait();
+    ASSERT_TRUE(out.has_value());
+    installOutcome(state, std::move(*out));
+    ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+    state.animation.timeline.firstFrame = 0;
+    state.animation.timeline.lastFrame = 4;
+    state.animation.frame = 0;
+    keyCurrentPose(state);
+    Eigen::MatrixXd moved = state.pose;
+    moved.row(6) += Eigen::RowVector3d(0.3, 0.2, 0.1);
+    setPose(state, moved);
+    state.animation.frame = 4;
+    keyCurrentPose(state);
+    posed = state.pose;
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder, ignored);
+  }
+  // Runs the hooks the way the frame loop does until the job ends (or `frames` editor frames passed).
+  void runFrames(int frames) {
+    for (int k = 0; k < frames && state.animation.exportJob; ++k) {
+      showNextExportFrame(state);
+      updateDeformation(state);
+      captureExportFrame(state, 0, 0);
+    }
+  }
+
+  std::filesystem::path folder;
+  AppState state;
+  Eigen::MatrixXd posed;
+};
+
+TEST_F(EditorAnimationExport, ObjSequenceHoldsTheTimelineFramesAndThePoseIsRestored) {
+  startAnimationExport(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string());
+  ASSERT_TRUE(state.animation.exportJob.has_value());
+  runFrames(100);
+  EXPECT_FALSE(state.animation.exportJob.has_value());
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_EQ(state.pose, posed);
+  const std::vector<Eigen::MatrixXd> expected =
+      deformTimelineFrames(*state.deformers.at(state.method), state.scene->restCage, state.animation.timeline,
+                           state.animation.poses, state.params, state.scene->document->geometry.vertices, 3, 0, 4);
+  for (int f = 0; f <= 4; ++f) {
+    const std::string name = (folder / "seq" / ("mesh_000" + std::to_string(f) + ".obj")).string();
+    const PolygonMesh frame = loadMesh(name);
+    EXPECT_LE((frame.vertices - expected[static_cast<size_t>(f)]).cwiseAbs().maxCoeff(), 1e-12) << name;
+  }
+}
+
+TEST_F(EditorAnimationExport, CancelLeavesNothing) {
+  startAnimationExport(state, AnimationExportJob::Kind::Glb, (folder / "anim.glb").string());
+  runFrames(2);
+  ASSERT_TRUE(state.animation.exportJob.has_value());
+  state.animation.exportJob->cancelRequested = true;
+  runFrames(1);
+  EXPECT_FALSE(state.animation.exportJob.has_value());
+  EXPECT_EQ(state.pose, posed);
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"cage.obj", "mesh.obj"}));
 }
 
 }  // namespace
