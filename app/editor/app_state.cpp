@@ -138,7 +138,7 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
-        state.pose = loadPosedVertices(state.pendingPosedPath, state.scene->restCage);
+        state.pose = posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
         posedLoaded = true;
       } catch (const std::exception& e) {
         state.errors.push_back(e.what());
@@ -373,7 +373,7 @@ void savePosedCage(AppState& state, const std::string& path) {
 void loadPosedCage(AppState& state, const std::string& path) {
   if (!state.scene) return;
   try {
-    const Eigen::MatrixXd pose = loadPosedVertices(path, state.scene->restCage);
+    const Eigen::MatrixXd pose = posedVerticesFromMesh(loadAnyMesh(path), state.scene->restCage, path);
     recordEdit(state, "Load pose");
     setPose(state, pose);
     state.statusMessage = "loaded pose " + path;
