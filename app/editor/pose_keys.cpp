@@ -21,8 +21,8 @@ void editAnimation(AppState& state, const std::string& label, Edit edit) {
     state.errors.push_back(e.what());
     return;
   }
-  recordEdit(state, label);
   state.animation = std::move(after);
+  commitEdit(state, label);
   state.statusMessage = label;
 }
 
@@ -38,8 +38,8 @@ void applyNamedPose(AppState& state, const std::string& name) {
     state.errors.push_back("pose library: \"" + name + "\" does not fit the current cage");
     return;
   }
-  recordEdit(state, "Apply pose " + name);
   setPose(state, pose->vertices);
+  commitEdit(state, "Apply pose " + name);
 }
 
 void renameNamedPose(AppState& state, const std::string& from, const std::string& to) {

@@ -73,11 +73,12 @@ void drawTimelinePanel(AppState& state, double left, double bottom) {
   }
   if (!hasKeys) ImGui::EndDisabled();
   ImGui::SameLine();
-  ImGui::Checkbox("Loop", &timeline.loop);
+  if (ImGui::Checkbox("Loop", &timeline.loop)) commitEdit(state, "Loop");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90);
   float fps = static_cast<float>(timeline.fps);
   if (ImGui::DragFloat("fps", &fps, 0.25f, 1.0f, 240.0f, "%.1f")) timeline.fps = std::clamp<double>(fps, 1.0, 240.0);
+  if (ImGui::IsItemDeactivatedAfterEdit()) commitEdit(state, "fps");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(150);
   int range[2] = {timeline.firstFrame, timeline.lastFrame};
@@ -85,6 +86,7 @@ void drawTimelinePanel(AppState& state, double left, double bottom) {
     timeline.firstFrame = std::max(0, range[0]);
     timeline.lastFrame = std::max(timeline.firstFrame, range[1]);
   }
+  if (ImGui::IsItemDeactivatedAfterEdit()) commitEdit(state, "Frame range");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(130);
   int interpolation = timeline.interpolation == Interpolation::Linear ? 0 : 1;

@@ -23,6 +23,7 @@ namespace {
 void loadDemo(AppState& state) {
   state.scene = std::make_shared<const Scene>(makeDemoScene(3));
   state.pose = state.scene->restCage.vertices;
+  state.history.reset(currentDocument(state), "Original", true);
 }
 
 TEST(EditorPoseKeys, LibraryEditsAreUndoable) {
@@ -51,9 +52,9 @@ TEST(EditorPoseKeys, LibraryEditsAreUndoable) {
   redo(state);
   EXPECT_NE(state.animation.poses.find("reach"), nullptr);
 
-  const size_t undoCount = state.history.undoCount();
+  const size_t undoCount = state.history.size();
   renameNamedPose(state, "reach", "rest");  // taken: an error, no edit
-  EXPECT_EQ(state.history.undoCount(), undoCount);
+  EXPECT_EQ(state.history.size(), undoCount);
   EXPECT_EQ(state.errors.size(), 1u);
 }
 
