@@ -378,6 +378,7 @@ Session makeSession(const AppState& state) {
 void applySession(AppState& state, const Session& s) {
   state.animation.poses = s.poses;
   state.animation.timeline = s.timeline;
+  if (!s.poses.poses().empty() || !s.timeline.keys.empty()) state.animation.showPanels = true;
   state.method = s.method;
   state.params = s.params;
   state.compare = s.compare;

@@ -186,7 +186,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
   const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
-  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + timelinePanelHeight();
+  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
@@ -198,8 +198,10 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawHistoryPanel(state);
     drawShortcutSheet(state);
     drawFileDialog(state);
-    drawTimelinePanel(state, left, statusBarHeight());
-    drawPoseLibraryPanel(state, top);
+    if (state.animation.showPanels) {
+      drawTimelinePanel(state, left, statusBarHeight());
+      drawPoseLibraryPanel(state, top);
+    }
     drawAnimationExportDialogs(state);
   }
   drawErrorModal(state);

@@ -20,9 +20,10 @@ struct AnimationState {
   bool playing = false;
   double playStartFrame = 0;  // where playback started, and when (seconds on the frame loop's clock)
   double playStartTime = 0;
-  bool keyParams = false;  // new keys hold the current nu and gamma
+  bool keyParams = false;                       // new keys hold the current nu and gamma
   std::optional<AnimationExportJob> exportJob;  // File > Export animation in progress
-  bool exportDialogRequested = false;           // set by the File menu, opened by the timeline panel's code
+  bool showPanels = false;             // the Timeline band and the Pose library (View menu; on when a session has keys)
+  bool exportDialogRequested = false;  // set by the File menu, opened by the timeline panel's code
 };
 
 // Each is recorded for undo; errors (a taken name...) go to state.errors.
