@@ -18,14 +18,14 @@ namespace somicage {
 
 enum class Method { Somigliana, Green, MeanValue };
 
-std::string methodName(Method method);                    // "somigliana", "green", "mvc"
-Method parseMethod(const std::string& name);              // throws InputError on an unknown name
+std::string methodName(Method method);        // "somigliana", "green", "mvc"
+Method parseMethod(const std::string& name);  // throws InputError on an unknown name
 
 // Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
 struct DeformParams {
-  double blend = 0.0;             // t in [0, 1]: 0 = global variant, 1 = local variant (Fig. 4)
-  double nu = 0.0;                // Poisson ratio in (-1, 0.5), or +-infinity
-  double gamma = 0.0;             // bulging scale >= 0 (section 4.4)
+  double blend = 0.0;              // t in [0, 1]: 0 = global variant, 1 = local variant (Fig. 4)
+  double nu = 0.0;                 // Poisson ratio in (-1, 0.5), or +-infinity
+  double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
 };
 
@@ -62,6 +62,13 @@ class CageDeformer {
 
   // The per-frame weight matrix W for a posed cage (#V by d, rest cage order). Validates params.
   virtual FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const = 0;
+
+  // The exact gradients dC_p/dx_a (a < d) of the point rows of C (#P rows, C's columns and storage each) for the
+  // deformation gradient (jacobian.h), from dual numbers through the method's closed forms; the rows of points
+  // that are not Inside (diagnostics().regions) are zero. Integrates again: build them only while a J-based
+  // quantity is in use. points: the points the deformer was made for.
+  virtual std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                            const ProgressCallback& progress) const = 0;
 
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }

@@ -1,7 +1,6 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same core calls
 // (loadUsableCage, makeDeformer, CageDeformer::deform, writeMeshDocument: everything of the mesh but its positions
 // is written back as it came, with normals recomputed).
-#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -38,24 +37,6 @@ ArgParser deformOptions() {
       });
 }
 
-// validateDeformParams names the parameter ("nu"); on the command line it is the option ("--nu").
-void validateOptions(const DeformParams& params) {
-  try {
-    validateDeformParams(params);
-  } catch (const InputError& e) {
-    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
-    throw InputError(source, -1, e.problem(), e.hint());
-  }
-}
-
-Method methodOption(const ArgParser& args) {
-  try {
-    return parseMethod(args.text("--method", "somigliana"));
-  } catch (const InputError& e) {
-    throw InputError("--method", -1, e.problem(), e.hint());
-  }
-}
-
 }  // namespace
 
 std::string deformUsage() {
@@ -81,13 +62,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   // Options first, so that a typo fails before any file is read.
   const Method method = methodOption(args);
-  DeformParams params;
-  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
-  params.blend = args.number("--blend", params.blend);
-  params.nu = args.numberOrInfinity("--nu", params.nu);
-  params.gamma = args.number("--gamma", params.gamma);
-  params.tractionCorrection = !args.has("--no-traction-fix");
-  validateOptions(params);
+  const DeformParams params = deformParamsOptions(args);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
@@ -102,11 +77,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const PolygonMesh& mesh = document.geometry;
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
   warnAboutMeshPlacement(cage, points, meshPath, cagePath);
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
-                                       args.has("--gamma") || args.has("--no-traction-fix"))) {
-    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only; " << methodName(method) << " ignores them\n";
-  }
+  noteIgnoredParameters(kCommand, args, method);
 
   // Precompute once, deform once.
   PrecomputeOptions options;

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <string>
 
+#include "cli/arg_parser.h"
 #include "deformer.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
@@ -21,6 +22,15 @@ std::string formatSeconds(double seconds);
 // %g with the given significant digits.
 std::string formatNumber(double value, int digits = 6);
 
+// --method (default somigliana); an unknown name throws InputError naming --method.
+Method methodOption(const ArgParser& args);
+
+// --variant, --blend, --nu, --gamma, --no-traction-fix as DeformParams, validated (InputError names the option).
+DeformParams deformParamsOptions(const ArgParser& args);
+
+// Prints a note on stderr when Somigliana-only options are given to another method.
+void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
+
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
@@ -32,8 +42,9 @@ Cage loadUsableCage(const std::string& path, const ReadOptions& read = {});
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
 // "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
+// withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath);
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
 // Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
 // (core/mesh_placement.h): different units, usually.
