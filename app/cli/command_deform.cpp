@@ -1,5 +1,6 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same core calls
-// (loadCage + repairCage, makeDeformer, CageDeformer::deform, saveObj).
+// (loadUsableCage, makeDeformer, CageDeformer::deform, writeMeshDocument: everything of the mesh but its positions
+// is written back as it came, with normals recomputed).
 #include <iostream>
 #include <sstream>
 
@@ -9,7 +10,7 @@
 #include "cli/progress_reporter.h"
 #include "deformer.h"
 #include "errors.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage {
 
@@ -21,10 +22,11 @@ ArgParser deformOptions() {
   return ArgParser(
       kCommand,
       {
-          {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
-          {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
-          {"--mesh", "IN.obj", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
-          {"--out", "OUT.obj", "where to write the result: IN's vertices moved, IN's faces", true},
+          {"--cage", "REST", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+          {"--posed", "POSED", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+          {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
+          {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
+          {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
           {"--method", "NAME", "somigliana (default), green or mvc"},
           {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
           {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
@@ -39,9 +41,12 @@ ArgParser deformOptions() {
 
 std::string deformUsage() {
   std::ostringstream out;
-  out << "usage: " << kCommand << " --cage REST.obj --posed POSED.obj --mesh IN.obj --out OUT.obj [OPTIONS]\n\n"
+  out << "usage: " << kCommand << " --cage REST --posed POSED --mesh IN --out OUT [OPTIONS]\n\n"
       << "Deforms the vertices of IN with the cage moved from REST to POSED and writes OUT with IN's vertex order\n"
-      << "and faces (coordinates with 17 significant digits). The cage is 2D when every z is 0.\n\n"
+      << "(coordinates with 17 significant digits). An OBJ OUT of an OBJ IN keeps every line of IN but the\n"
+      << "positions (UVs, groups, materials, smoothing groups, faces as written) and recomputes its normals.\n"
+      << "The cage is 2D when every z is 0. Reads " << readableExtensions() << "; writes " << writableExtensions()
+      << ".\n\n"
       << "options:\n"
       << deformOptions().optionHelp();
   return out.str();
@@ -64,9 +69,12 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
 
   // Inputs.
-  const Cage cage = loadUsableCage(cagePath);
-  const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
-  const PolygonMesh mesh = loadMesh(meshPath);
+  ReadOptions read;
+  read.weld = args.has("--weld");
+  const Cage cage = loadUsableCage(cagePath, read);
+  const Eigen::MatrixXd posed = posedVerticesFromMesh(loadAnyMesh(posedPath, read), cage, posedPath);
+  const MeshDocument document = loadMeshDocument(meshPath, read);
+  const PolygonMesh& mesh = document.geometry;
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
   warnAboutMeshPlacement(cage, points, meshPath, cagePath);
   noteIgnoredParameters(kCommand, args, method);
@@ -110,7 +118,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
   result.leftCols(cage.dim()) = deformed;
-  saveObj(outPath, result, mesh);
+  for (const std::string& note : writeMeshDocument(outPath, document, result))
+    std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
 
   std::ostringstream summary;
   summary << kCommand << ": " << cage.dim() << "D " << methodName(method);

@@ -35,8 +35,8 @@ void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
-Cage loadUsableCage(const std::string& path) {
-  CageRepair repair = repairCage(loadCage(path));
+Cage loadUsableCage(const std::string& path, const ReadOptions& read) {
+  CageRepair repair = repairCage(cageFromMesh(loadAnyMesh(path, read), path));
   for (const std::string& fix : repair.fixes) std::cerr << "somicage: note: " << path << ": " << fix << "\n";
   const CageReport report = validateCage(repair.cage);
   for (const std::string& warning : describeCageWarnings(report))

@@ -7,6 +7,7 @@
 
 #include "cli/arg_parser.h"
 #include "deformer.h"
+#include "mesh_formats.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -33,10 +34,10 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
-// The cage the commands deform: loadCage, then repairCage (cage_repair.h), then validateCage. Each repair is
-// printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections) as
-// "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
-Cage loadUsableCage(const std::string& path);
+// The cage the commands deform: read in any format of mesh_formats.h, then repairCage (cage_repair.h), then
+// validateCage. Each repair is printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections)
+// as "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
+Cage loadUsableCage(const std::string& path, const ReadOptions& read = {});
 
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints

@@ -27,6 +27,8 @@ int runHelpCommand(const std::vector<std::string>& args);
 std::string helpUsage();
 int runDeformCommand(const std::vector<std::string>& args);
 std::string deformUsage();
+int runAnimateCommand(const std::vector<std::string>& args);
+std::string animateUsage();
 int runCheckCommand(const std::vector<std::string>& args);
 std::string checkUsage();
 int runCageCommand(const std::vector<std::string>& args);

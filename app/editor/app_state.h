@@ -19,6 +19,7 @@
 #include "element_pick.h"
 #include "file_dialog.h"
 #include "history.h"
+#include "pose_keys.h"
 #include "precompute_worker.h"
 #include "recent_files.h"
 #include "scene.h"
@@ -93,6 +94,7 @@ struct AppState {
   std::optional<std::string> pendingDocumentPath;  // the session being opened (the scene loads on the worker)
   bool pendingRestored = false;  // the loading scene is a crashed run's autosave: unsaved from the start
   UnsavedPrompt unsaved;
+  AnimationState animation;  // pose library, timeline, playback (pose_keys.h)
   OrbitCamera camera;
   Interaction interaction;
 

@@ -29,6 +29,7 @@
 #include "panels.h"
 #include "quantity_overlay.h"
 #include "screenshot.h"
+#include "timeline_panel.h"
 
 namespace somicage {
 
@@ -188,7 +189,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
   const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
-  const double bottom = state.hideUi ? 0.0 : statusBarHeight();
+  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
@@ -200,11 +201,18 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawHistoryPanel(state);
     drawShortcutSheet(state);
     drawFileDialog(state);
+    if (state.animation.showPanels) {
+      drawTimelinePanel(state, left, statusBarHeight());
+      drawPoseLibraryPanel(state, top);
+    }
+    drawAnimationExportDialogs(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
   drawUnsavedModal(state);
   handleInput(state, views);
+  tickPlayback(state, glfwGetTime());
+  showNextExportFrame(state);
   updateDeformation(state);
   if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
     frameAll(state);
@@ -219,6 +227,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
   const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
   renderer.draw(state, views, fbWidth, fbHeight, scale);
+  captureExportFrame(state, fbWidth, fbHeight);  // the views without the panels
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
   if (!state.screenshotRequest.empty()) {
@@ -395,7 +404,8 @@ int runWindow(const EditorOptions& options) {
       while (!state.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.loadingScene;
+        demand.busy = state.worker.busy() || state.loadingScene || state.animation.playing ||
+                      state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);
         wait > 0 ? glfwWaitEventsTimeout(wait) : glfwPollEvents();

@@ -56,6 +56,10 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
     if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
     commandItem(state, "Export deformed mesh...", "export");
+    if (ImGui::MenuItem("Export animation...")) {
+      state.animation.exportDialogRequested = true;
+      state.animation.showPanels = true;  // the dialog is drawn with the panels' code
+    }
     ImGui::Separator();
     commandItem(state, "Open session...", "open_session");
     commandItem(state, "Save session", "save");
@@ -89,6 +93,7 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Compare methods", nullptr, &compare)) setCompare(state, compare);
     ImGui::MenuItem("Show cage", nullptr, &state.showCage);
     ImGui::MenuItem("Show mesh", nullptr, &state.showMesh);
+    ImGui::MenuItem("Timeline and pose library", nullptr, &state.animation.showPanels);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -7,8 +7,8 @@
 #include "cage_generation.h"
 #include "cage_repair.h"
 #include "cage_validation.h"
+#include "mesh_formats.h"
 #include "mesh_placement.h"
-#include "obj_io.h"
 
 namespace somicage::editor {
 
@@ -146,18 +146,20 @@ Cage generatedCage(const PolygonMesh& mesh, const std::string& meshPath, std::ve
 
 Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
-  CageRepair repair = cagePath.empty() ? CageRepair{generatedCage(loadMesh(meshPath), meshPath, s.notices), {}}
-                                       : repairCage(loadCage(cagePath));
+  auto document = std::make_shared<const MeshDocument>(loadMeshDocument(meshPath));
+  const PolygonMesh& mesh = document->geometry;
+  CageRepair repair = cagePath.empty() ? CageRepair{generatedCage(mesh, meshPath, s.notices), {}}
+                                       : repairCage(cageFromMesh(loadAnyMesh(cagePath), cagePath));
   const CageReport report = validateCage(repair.cage);
   requireValidCage(report, cagePath);
   s.restCage = std::move(repair.cage);
   for (const std::string& fix : repair.fixes) s.notices.push_back("cage repaired: " + fix);
   for (const std::string& warning : describeCageWarnings(report)) s.notices.push_back("cage warning: " + warning);
-  const PolygonMesh mesh = loadMesh(meshPath);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
   s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());
   if (const auto warning = describeMeshPlacement(measureMeshPlacement(s.restCage, s.meshVertices), meshPath, cagePath))
     s.notices.push_back("mesh warning: " + *warning);
+  s.document = std::move(document);
   s.meshPath = meshPath;
   s.cagePath = cagePath;
   const std::size_t slash = meshPath.find_last_of('/');

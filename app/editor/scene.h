@@ -2,10 +2,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cage.h"
+#include "mesh_document.h"
 
 namespace somicage::editor {
 
@@ -14,7 +16,8 @@ struct Scene {
   Eigen::MatrixXd meshVertices;   // #V by d, d = restCage.dim()
   Eigen::MatrixXi meshTriangles;  // #F by 3 (polygons of the file triangulated; may be empty for point sets)
   Cage restCage;
-  std::string meshPath, cagePath;    // empty for the built-in demos
+  std::string meshPath, cagePath;                // empty for the built-in demos
+  std::shared_ptr<const MeshDocument> document;  // the mesh file as read, for lossless export (null for demos)
   std::vector<std::string> notices;  // what loadScene repaired in the cage, and warnings about it (one sentence each)
 
   int dim() const { return restCage.dim(); }
@@ -26,10 +29,10 @@ struct Scene {
 // polygon cage.
 Scene makeDemoScene(int dim);
 
-// Loads MESH.obj and CAGE.obj (core/obj_io.h). A 2D cage makes a 2D scene (the mesh keeps x, y). The cage's
-// orientation is repaired as in the command line (core/cage_repair.h), which the notices say. An empty cagePath
-// makes a cage for the mesh (core/cage_generation.h, 200 faces), which the notices say too.
-// Throws InputError on any problem with the files, and when the repaired cage is still not valid.
+// Loads MESH and CAGE in any format of core/mesh_formats.h. A 2D cage makes a 2D scene (the mesh keeps x, y). The
+// cage's orientation is repaired as in the command line (core/cage_repair.h), which the notices say. An empty cagePath
+// makes a cage for the mesh (core/cage_generation.h, 200 faces), which the notices say too. Throws InputError on any
+// problem with the files, and when the repaired cage is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
 
 // Flips every triangle when the closed mesh (#V by 3, #F by 3) has a negative signed volume.

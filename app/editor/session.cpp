@@ -6,6 +6,7 @@
 #include "errors.h"
 #include "file_util.h"
 #include "json.h"
+#include "pose_timeline_json.h"
 
 namespace somicage::editor {
 
@@ -77,7 +78,7 @@ struct Reader {
 std::string sessionToJson(const Session& s) {
   JsonValue root = JsonValue::object();
   root.set("format", JsonValue::string("somicage-session"));
-  root.set("version", JsonValue::number(1));
+  root.set("version", JsonValue::number(2));
   root.set("mesh", JsonValue::string(s.meshPath));
   root.set("cage", JsonValue::string(s.cagePath));
   root.set("demoDim", JsonValue::number(s.demoDim));
@@ -105,6 +106,8 @@ std::string sessionToJson(const Session& s) {
   camera.set("yaw", JsonValue::number(s.camera.yaw));
   camera.set("pitch", JsonValue::number(s.camera.pitch));
   root.set("camera", std::move(camera));
+  root.set("poses", poseLibraryToJson(s.poses));
+  root.set("timeline", timelineToJson(s.timeline));
   return root.dump(2);
 }
 
@@ -113,7 +116,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   const Reader r{source};
   if (!root.isObject()) r.fail("a session file must hold a JSON object");
   if (r.string(root, "format") != "somicage-session") r.fail("not a SomiCage session (\"format\" differs)");
-  if (r.number(root, "version") != 1) r.fail("unsupported session version (this build reads version 1)");
+  const double version = r.number(root, "version");
+  if (version != 1 && version != 2) r.fail("unsupported session version (this build reads versions 1 and 2)");
   Session s;
   s.meshPath = r.string(root, "mesh");
   s.cagePath = r.string(root, "cage");
@@ -161,6 +165,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.camera.yaw = r.number(camera, "yaw");
   s.camera.pitch = r.number(camera, "pitch");
   if (!(s.camera.distance > 0) || !std::isfinite(s.camera.distance)) r.fail("camera \"distance\" must be positive");
+  if (const JsonValue* poses = root.find("poses")) s.poses = poseLibraryFromJson(*poses, source);
+  if (const JsonValue* timeline = root.find("timeline")) s.timeline = timelineFromJson(*timeline, source);
   return s;
 }
 

@@ -141,9 +141,9 @@ TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
     return std::string("accepted");
   };
   std::string newer = good;
-  ASSERT_NE(newer.find("\"version\": 1"), std::string::npos);
-  newer.replace(newer.find("\"version\": 1"), 12, "\"version\": 2");
-  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads version 1)"), std::string::npos)
+  ASSERT_NE(newer.find("\"version\": 2"), std::string::npos);
+  newer.replace(newer.find("\"version\": 2"), 12, "\"version\": 3");
+  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 and 2)"), std::string::npos)
       << messageFor(newer);
   std::string other = good;
   other.replace(other.find("somicage-session"), 16, "somicage-recent!");
