@@ -57,16 +57,15 @@ double atanMinusRational(double t) {
   return sum;
 }
 
-}  // namespace
-
-void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
+// integrateEdge for the point at xi along the edge and h along its normal from p0 (h = -0 on the edge: the limit
+// from inside, see integrateEdgeInteriorLimit).
+void integrateEdgeLocal(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, double xi, double h, EdgeIntegrals& out) {
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
   clear(out);
   if (l == 0) return;  // a zero-length edge carries no boundary
 
-  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x()), d = x - p0;
-  const double xi = d.dot(tau), h = d.dot(n);
+  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
   const double u0 = -xi, u1 = l - xi;
   const double hh = h * h, u01 = u0 * u1;
   const double R0sq = u0 * u0 + hh, R1sq = u1 * u1 + hh;
@@ -143,6 +142,23 @@ void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const E
   const double bnn0 = -(u1 * W0 - h3E1) * invL, bnn1 = -(h3E1 - u0 * W0) * invL;
   out.B[0] = btt0 * tt + btn0 * tn + bnn0 * nn;
   out.B[1] = btt1 * tt + btn1 * tn + bnn1 * nn;
+}
+
+}  // namespace
+
+void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
+  const Eigen::Vector2d e = p1 - p0, d = x - p0;
+  const double l = e.norm();
+  if (l == 0) return integrateEdgeLocal(p0, p1, 0, 0, out);
+  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
+  integrateEdgeLocal(p0, p1, d.dot(tau), d.dot(n), out);
+}
+
+void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& onEdge,
+                                EdgeIntegrals& out) {
+  const Eigen::Vector2d e = p1 - p0;
+  const double l = e.norm();
+  integrateEdgeLocal(p0, p1, l == 0 ? 0 : (onEdge - p0).dot(e) / l, -0.0, out);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -14,25 +14,25 @@ namespace somicage {
 
 // TriangleFrame (triangle_integrals.h) as plain arrays: makeTriangleFrame fills its `kernel` member.
 struct PortableTriangleFrame {
-  double origin[3], u[3], v[3], n[3];  // p0 and the orthonormal frame [u v n], u along p1 - p0
-  double q[3][2];                      // local 2D corners
-  double ell[3], tau[3][2], m[3][2];   // edge lengths, unit directions, outward in-plane normals
-  double grad[3][2];                   // in-plane gradients of the hat functions
-  double twiceArea;                    // 2A
-  int degenerate;                      // 1: a zero-area face, which contributes nothing
-  double ellOverTwiceArea[3];          // ell_e / (2A)
+  double origin[3], u[3], v[3], n[3];   // p0 and the orthonormal frame [u v n], u along p1 - p0
+  double q[3][2];                       // local 2D corners
+  double ell[3], tau[3][2], m[3][2];    // edge lengths, unit directions, outward in-plane normals
+  double grad[3][2];                    // in-plane gradients of the hat functions
+  double twiceArea;                     // 2A
+  int degenerate;                       // 1: a zero-area face, which contributes nothing
+  double ellOverTwiceArea[3];           // ell_e / (2A)
   double mm[3][3], tm[3][3], tt[3][3];  // m m^T, sym(tau m^T), tau tau^T per edge as (xx, xy, yy)
-  double mDotGrad[3][3];               // [k][e] = m_e . grad_k
+  double mDotGrad[3][3];                // [k][e] = m_e . grad_k
 };
 
 // TriangleIntegrals with plain arrays; matrices are row-major [i][j], V and B indexed by the corner k first.
 struct PortableTriangleIntegrals {
-  double S;              // int 1/R
-  double M[3][3];        // int r r^T / R^3
-  double D[3];           // int phi_k (n.r) / R^3
-  double V[3][3];        // int phi_k r / R^3
-  double B[3][3][3];     // int phi_k (n.r) r r^T / R^5
-  double solidAngle;     // signed solid angle, -2pi just inside the face
+  double S;           // int 1/R
+  double M[3][3];     // int r r^T / R^3
+  double D[3];        // int phi_k (n.r) / R^3
+  double V[3][3];     // int phi_k r / R^3
+  double B[3][3][3];  // int phi_k (n.r) r r^T / R^5
+  double solidAngle;  // signed solid angle, -2pi just inside the face
 };
 
 namespace portable_detail {
@@ -55,9 +55,11 @@ SOMICAGE_HD inline void rotateSymmetric(const double q[3][3], const double l[6],
 
 }  // namespace portable_detail
 
-// integrateTriangle (core/triangle_integrals.h) for the point x; a degenerate frame gives all zeros.
-SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f, const double x[3],
-                                                  PortableTriangleIntegrals& out) {
+// integrateTrianglePortable for the point with local coordinates (xu, xv, h) in the face's frame [u v n] about p0.
+// h = -0.0 with (xu, xv) strictly inside the face is the limit from the inside of the cage (W = -2pi): every other
+// term is continuous there and every h-weighted one vanishes (bem_layer_integrals.h relies on this).
+SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFrame& f, double xu, double xv, double h,
+                                                       PortableTriangleIntegrals& out) {
   if (f.degenerate) {
     out.S = 0, out.solidAngle = 0;
     for (int i = 0; i < 3; ++i) {
@@ -70,11 +72,8 @@ SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f
     return;
   }
 
-  // ---- Query point in the local frame; differences to the corners taken once (5.4) -----------------------------
-  const double rel[3] = {x[0] - f.origin[0], x[1] - f.origin[1], x[2] - f.origin[2]};
-  const double xu = rel[0] * f.u[0] + rel[1] * f.u[1] + rel[2] * f.u[2];
-  const double xv = rel[0] * f.v[0] + rel[1] * f.v[1] + rel[2] * f.v[2];
-  const double h = rel[0] * f.n[0] + rel[1] * f.n[1] + rel[2] * f.n[2], hh = h * h;
+  // ---- Differences to the corners in the local frame, taken once (5.4) ---------------------------------------
+  const double hh = h * h;
   double a[3][2], R[3], invR[3];
   for (int i = 0; i < 3; ++i) {
     a[i][0] = f.q[i][0] - xu;
@@ -174,6 +173,15 @@ SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f
                           -c * hJ52[2] - K11, c * h2J51[1] + w1,  -c * h3J50 - h * (g0 * h2J51[0] + g1 * h2J51[1])};
     portable_detail::rotateSymmetric(q, Bl, out.B[k]);
   }
+}
+
+// integrateTriangle (core/triangle_integrals.h) for the point x; a degenerate frame gives all zeros.
+SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f, const double x[3],
+                                                  PortableTriangleIntegrals& out) {
+  const double rel[3] = {x[0] - f.origin[0], x[1] - f.origin[1], x[2] - f.origin[2]};
+  integrateTriangleLocalPortable(f, rel[0] * f.u[0] + rel[1] * f.u[1] + rel[2] * f.u[2],
+                                 rel[0] * f.v[0] + rel[1] * f.v[1] + rel[2] * f.v[2],
+                                 rel[0] * f.n[0] + rel[1] * f.n[1] + rel[2] * f.n[2], out);
 }
 
 }  // namespace somicage
