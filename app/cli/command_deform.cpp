@@ -26,12 +26,13 @@ ArgParser deformOptions() {
           {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
           {"--mesh", "IN.obj", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
           {"--out", "OUT.obj", "where to write the result: IN's vertices moved, IN's faces", true},
-          {"--method", "NAME", "somigliana (default), green or mvc"},
+          {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
           {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
           {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana only"},
+          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
           {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
           {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
+          {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
           {"--threads", "N", "OpenMP threads (default: all cores)"},
       });
 }
@@ -82,6 +83,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   params.nu = args.numberOrInfinity("--nu", params.nu);
   params.gamma = args.number("--gamma", params.gamma);
   params.tractionCorrection = !args.has("--no-traction-fix");
+  params.corotational = args.has("--corotational");
   validateOptions(params);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
@@ -94,11 +96,13 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const PolygonMesh mesh = loadMesh(meshPath);
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
   warnAboutMeshPlacement(cage, points, meshPath, cagePath);
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
-                                       args.has("--gamma") || args.has("--no-traction-fix"))) {
+  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--gamma") ||
+                                       args.has("--no-traction-fix") || (method != Method::Bem && args.has("--nu")))) {
     std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only; " << methodName(method) << " ignores them\n";
+              << "only (--nu also to bem); " << methodName(method) << " ignores them\n";
   }
+  if (method != Method::Bem && args.has("--corotational"))
+    std::cerr << kCommand << ": note: --corotational applies to bem only; " << methodName(method) << " ignores it\n";
 
   // Precompute once, deform once.
   PrecomputeOptions options;
@@ -147,6 +151,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
     summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
             << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
   }
+  if (method == Method::Bem)
+    summary << " (nu " << formatNumber(params.nu) << (params.corotational ? ", corotational" : "") << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
           << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath

@@ -25,6 +25,7 @@ const char* methodDisplayName(Method method) {
     case Method::Somigliana: return "Somigliana";
     case Method::Green: return "Green";
     case Method::MeanValue: return "Mean value";
+    case Method::Bem: return "BEM";
   }
   return "?";
 }
@@ -48,6 +49,10 @@ std::string viewLabel(const AppState& state, Method method) {
       label += buf;
     }
     if (!state.params.tractionCorrection) label += "  no traction fix";
+  }
+  if (method == Method::Bem) {
+    std::snprintf(buf, sizeof buf, "  nu=%.2f%s", state.params.nu, state.params.corotational ? "  corotational" : "");
+    label += std::isinf(state.params.nu) ? std::string("  nu=inf") : std::string(buf);
   }
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;

@@ -161,25 +161,25 @@ void drawControlPanel(AppState& state) {
 
   sectionHeader("Method");
   int method = static_cast<int>(state.method);
-  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)"};
-  if (ImGui::Combo("method", &method, methods, 3)) setMethod(state, static_cast<Method>(method));
+  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)", "BEM (linear elasticity)"};
+  if (ImGui::Combo("method", &method, methods, 4)) setMethod(state, static_cast<Method>(method));
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   if (state.compare) {
-    bool use[3] = {false, false, false};
+    bool use[4] = {false, false, false, false};
     for (Method m : state.compareMethods) use[static_cast<int>(m)] = true;
     bool changed = false;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 4; ++i) {
       if (i > 0) ImGui::SameLine();
-      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c"};
+      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c", "BEM##c"};
       changed |= ImGui::Checkbox(shortNames[i], &use[i]);
     }
     if (changed) {
       std::vector<Method> list;
-      for (int i = 0; i < 3; ++i) {
+      for (int i = 0; i < 4; ++i) {
         if (use[i]) list.push_back(static_cast<Method>(i));
       }
-      if (list.size() >= 2) {
+      if (list.size() >= 2 && list.size() <= 3) {  // the compare view has up to three panes
         state.compareMethods = list;
         setCompare(state, true);
       }
@@ -225,12 +225,20 @@ void drawControlPanel(AppState& state) {
     recordEdit(state, "traction fix");
     state.params = before;
   }
+  if (ImGui::Checkbox("BEM: corotational", &p.corotational)) {
+    DeformParams before = state.params;
+    state.params = p;
+    state.params.corotational = !p.corotational;
+    recordEdit(state, "corotational");
+    state.params = before;
+  }
   if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
-      p.tractionCorrection != state.params.tractionCorrection) {
+      p.tractionCorrection != state.params.tractionCorrection || p.corotational != state.params.corotational) {
     setParams(state, p);
   }
   if (state.method != Method::Somigliana && !state.compare) {
-    ImGui::TextDisabled("(Green and MVC ignore these)");
+    ImGui::TextDisabled(state.method == Method::Bem ? "(BEM uses nu and corotational only)"
+                                                    : "(Green and MVC ignore these)");
   }
 
   sectionHeader("Pose");

@@ -15,6 +15,7 @@ const char* displayName(Method m) {
     case Method::Somigliana: return "Somigliana";
     case Method::Green: return "Green";
     case Method::MeanValue: return "MVC";
+    case Method::Bem: return "BEM";
   }
   return "?";
 }
