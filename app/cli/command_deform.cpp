@@ -8,6 +8,7 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
+#include "bem_system.h"
 #include "deformer.h"
 #include "errors.h"
 #include "obj_io.h"
@@ -38,8 +39,9 @@ ArgParser deformOptions() {
 }
 
 // validateDeformParams names the parameter ("nu"); on the command line it is the option ("--nu").
-void validateOptions(const DeformParams& params) {
+void validateOptions(const DeformParams& params, Method method) {
   try {
+    if (method == Method::Bem) validateBemPoissonRatio(params.nu);  // says why nu = 0.5 is refused
     validateDeformParams(params);
   } catch (const InputError& e) {
     const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
@@ -84,7 +86,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   params.gamma = args.number("--gamma", params.gamma);
   params.tractionCorrection = !args.has("--no-traction-fix");
   params.corotational = args.has("--corotational");
-  validateOptions(params);
+  validateOptions(params, method);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");

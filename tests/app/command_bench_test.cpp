@@ -17,7 +17,8 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   const std::vector<std::string> keys = {
       "mesh_vertices",    "cage_vertices", "cage_faces",          "threads",         "precompute_s",
       "pou_max",          "pou_median",    "baseline_quadrature", "baseline_points", "baseline_speedup",
-      "baseline_pou_max", "deform_ms",     "nu_update_ms",        "coord_bytes",     "peak_rss_bytes"};
+      "baseline_pou_max", "deform_ms",     "nu_update_ms",        "coord_bytes",     "peak_rss_bytes",
+      "bem_factor_ms"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
   EXPECT_EQ(json["mesh_vertices"].number, 5);
@@ -29,6 +30,8 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_GT(json["baseline_speedup"].number, 1.0);  // 192 Gauss points per triangle against one closed form
   ASSERT_EQ(json["deform_ms"].type, Json::Type::Object);
   EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
+  EXPECT_TRUE(json["deform_ms"].has("cpu_bem"));
+  EXPECT_GT(json["bem_factor_ms"].number, 0);
   EXPECT_GT(json["coord_bytes"].number, 0);
   EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
 }
