@@ -111,9 +111,10 @@ Cage circlePolygon(int edges) {
 }
 
 TEST_P(BemDeformerTest, KelvinSolutionErrorFallsUnderRefinement) {
-  // Dirichlet data from a point force 1.5 radii outside the unit sphere (circle); the exact interior solution is the
-  // same Kelvin field. The error at interior points (radius <= 0.5) must fall by at least 2.5x per refinement
-  // (faces x4 in 3D, edges x2 in 2D: at least first order in h). SOMICAGE_BEM_REFINEMENTS raises the number of
+  // Dirichlet data from a point force about 2.9 (2D: 2.5) radii from the centre of the unit sphere (circle), outside
+  // it; the exact interior solution is the
+  // same Kelvin field. The error at interior points (radius <= 0.5) must fall by at least 3.5x per halving of the
+  // element size h (faces x4 in 3D, edges x2 in 2D): second order, measured 2.00-2.01 (docs/engine.md). SOMICAGE_BEM_REFINEMENTS raises the number of
   // refinements for the convergence table of docs/engine.md (the default keeps CI under a second).
   const int d = GetParam();
   const char* extra = std::getenv("SOMICAGE_BEM_REFINEMENTS");
@@ -136,7 +137,7 @@ TEST_P(BemDeformerTest, KelvinSolutionErrorFallsUnderRefinement) {
     const double rate = level > 0 ? std::log(previous / error) / std::log(2.0) : 0;
     std::printf("  %5d  %.3e  %s\n", cage.numFaces(), error, level > 0 ? std::to_string(rate).c_str() : "");
     if (level > 0) {
-      EXPECT_GT(previous / error, 2.5) << cage.numFaces() << " faces";
+      EXPECT_GT(previous / error, 3.5) << cage.numFaces() << " faces";
     }
     previous = error;
   }
