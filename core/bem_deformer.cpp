@@ -67,10 +67,9 @@ class BemDeformer final : public CageDeformer {
  public:
   BemDeformer(const Cage& rest, const Eigen::MatrixXd& points, const PrecomputeOptions& options,
               const ProgressCallback& progress)
-      : CageDeformer(FrameCoordinates{}, options.threads),
-        system_(rest, options.threads, [&](double f) { return progress(0.1 * f); }) {
-    coordinates_ = bemFrameCoordinates(
-        rest, points, options, [&](double f) { return progress(0.1 + 0.9 * f); }, diagnostics_);
+      : CageDeformer(FrameCoordinates{}, options.threads), system_(rest, options.threads) {
+    // Progress is the points' integration: the collocation rows (F^2 pairs) are a small fraction of it.
+    coordinates_ = bemFrameCoordinates(rest, points, options, progress, diagnostics_);
   }
 
   Method method() const override { return Method::Bem; }

@@ -12,6 +12,7 @@
 
 #include "errors.h"
 #include "kelvin_kernels.h"
+#include "test_models.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -114,8 +115,9 @@ TEST_P(BemDeformerTest, KelvinSolutionErrorFallsUnderRefinement) {
   // Dirichlet data from a point force about 2.9 (2D: 2.5) radii from the centre of the unit sphere (circle), outside
   // it; the exact interior solution is the
   // same Kelvin field. The error at interior points (radius <= 0.5) must fall by at least 3.5x per halving of the
-  // element size h (faces x4 in 3D, edges x2 in 2D): second order, measured 2.00-2.01 (docs/engine.md). SOMICAGE_BEM_REFINEMENTS raises the number of
-  // refinements for the convergence table of docs/engine.md (the default keeps CI under a second).
+  // element size h (faces x4 in 3D, edges x2 in 2D): second order, measured 2.00-2.01 (docs/engine.md).
+  // SOMICAGE_BEM_REFINEMENTS raises the number of refinements for the convergence table of docs/engine.md (the default
+  // keeps CI under a second).
   const int d = GetParam();
   const char* extra = std::getenv("SOMICAGE_BEM_REFINEMENTS");
   const int refinements = extra ? std::atoi(extra) : 3;
@@ -178,6 +180,16 @@ TEST_P(BemDeformerTest, SomiglianaGlobalApproachesBemForSmallDeformations) {
     }
     previous = distance;
   }
+}
+
+TEST_P(BemDeformerTest, IndependentOfThreadsWithProgressAndCancel) {
+  const Scene s = sceneOf(GetParam());
+  test::expectDeformIndependentOfThreads(Method::Bem, s.cage, s.points, bumpyPose(s.cage, 0.1, 5));
+  // Enough points for several blocks of the precompute (point_blocks.h), so that progress has something to report.
+  const int many = 3 * (1 << 16) / s.cage.numFaces();
+  test::expectProgressAndCancel(
+      Method::Bem, s.cage,
+      GetParam() == 3 ? test::randomBallPoints(many, 0.6, 2) : test::randomDiscPoints(many, 0.4, 2));
 }
 
 TEST_P(BemDeformerTest, RejectsTheIncompressibleLimit) {
