@@ -34,26 +34,14 @@ namespace {
 // Adds one triangle's integrals to a row (vertex terms as in somigliana_coordinates.h, face terms S, M).
 void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], double* face,
                         double* row) {
-  for (int k = 0; k < 3; ++k) {
-    double* t = row + corners[k] * vertexTermCount(3);
-    const Eigen::Vector3d omega = I.V[k].cross(n);  // (n V^T - V n^T) w = (V x n) x w
-    const Eigen::Matrix3d& B = I.B[k];
-    t[0] += I.D[k];
-    t[1] += omega.x(), t[2] += omega.y(), t[3] += omega.z();
-    t[4] += B(0, 0), t[5] += B(1, 1), t[6] += B(2, 2), t[7] += B(0, 1), t[8] += B(0, 2), t[9] += B(1, 2);
-  }
+  addVertexTerms(I, n, corners, row);
   const Eigen::Matrix3d& M = I.M;
   face[0] = I.S;
   face[1] = M(0, 0), face[2] = M(1, 1), face[3] = M(2, 2), face[4] = M(0, 1), face[5] = M(0, 2), face[6] = M(1, 2);
 }
 
 void accumulateEdge(const EdgeIntegrals& I, const int ends[2], double* face, double* row) {
-  for (int k = 0; k < 2; ++k) {
-    double* t = row + ends[k] * vertexTermCount(2);
-    t[0] += I.D[k];
-    t[1] += I.A[k];
-    t[2] += I.B[k](0, 0), t[3] += I.B[k](1, 1), t[4] += I.B[k](0, 1);
-  }
+  addVertexTerms(I, ends, row);
   face[0] = I.S, face[1] = I.M(0, 0), face[2] = I.M(1, 1), face[3] = I.M(0, 1);
 }
 

@@ -218,20 +218,17 @@ void drawControlPanel(AppState& state) {
   float gamma = static_cast<float>(p.gamma);
   if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.gamma = gamma;
   undoOnActivate(state, "gamma");
-  if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) {
+  // A toggle records the parameters as they were before the click (the other edits of this frame included).
+  auto undoableToggle = [&](const char* label, bool DeformParams::*field, const char* edit) {
+    if (!ImGui::Checkbox(label, &(p.*field))) return;
     DeformParams before = state.params;
     state.params = p;
-    state.params.tractionCorrection = !p.tractionCorrection;
-    recordEdit(state, "traction fix");
+    state.params.*field = !(p.*field);
+    recordEdit(state, edit);
     state.params = before;
-  }
-  if (ImGui::Checkbox("BEM: corotational", &p.corotational)) {
-    DeformParams before = state.params;
-    state.params = p;
-    state.params.corotational = !p.corotational;
-    recordEdit(state, "corotational");
-    state.params = before;
-  }
+  };
+  undoableToggle("traction fix (Eq. 15)", &DeformParams::tractionCorrection, "traction fix");
+  undoableToggle("BEM: corotational", &DeformParams::corotational, "corotational");
   if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
       p.tractionCorrection != state.params.tractionCorrection || p.corotational != state.params.corotational) {
     setParams(state, p);
