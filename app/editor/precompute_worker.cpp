@@ -12,10 +12,14 @@ namespace somicage::editor {
 namespace {
 const char* displayName(Method m) {
   switch (m) {
-    case Method::Somigliana: return "Somigliana";
-    case Method::Green: return "Green";
-    case Method::MeanValue: return "MVC";
-    case Method::Bem: return "BEM";
+    case Method::Somigliana:
+      return "Somigliana";
+    case Method::Green:
+      return "Green";
+    case Method::MeanValue:
+      return "MVC";
+    case Method::Bem:
+      return "BEM";
   }
   return "?";
 }
@@ -98,7 +102,8 @@ void PrecomputeWorker::run(PrecomputeRequest request, std::uint64_t id) {
         progress_ = (static_cast<double>(k) + f) / static_cast<double>(n);
         return !cancel_.load();
       };
-      out.deformers[m] = makeDeformer(m, request.scene->restCage, request.scene->meshVertices, request.options, progress);
+      out.deformers[m] =
+          makeDeformer(m, request.scene->restCage, request.scene->meshVertices, request.options, progress);
     }
     progress_ = 1.0;
   } catch (const Cancelled&) {

@@ -107,7 +107,7 @@ Scene demo2D() {
   Eigen::MatrixXd loop(2 * perSide, 2);
   for (int i = 0; i < perSide; ++i) {
     const double x = -cx + 2 * cx * i / (perSide - 1);
-    loop.row(i) << x, -cy;                 // bottom, left to right
+    loop.row(i) << x, -cy;                   // bottom, left to right
     loop.row(2 * perSide - 1 - i) << x, cy;  // top, right to left
   }
   s.restCage = makePolygonCage(loop);

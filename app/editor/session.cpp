@@ -129,7 +129,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.pose.resize(static_cast<Eigen::Index>(pose.items().size()), static_cast<Eigen::Index>(cols));
     for (std::size_t i = 0; i < pose.items().size(); ++i) {
       const JsonValue& row = pose.items()[i];
-      if (!row.isArray() || row.items().size() != cols) r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
+      if (!row.isArray() || row.items().size() != cols)
+        r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
       for (std::size_t c = 0; c < cols; ++c) {
         if (!row.items()[c].isNumber()) r.fail("\"pose\" row " + std::to_string(i) + " holds a non-number");
         s.pose(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = row.items()[c].asNumber();

@@ -14,7 +14,7 @@ namespace somicage::editor {
 struct Session {
   std::string meshPath, cagePath;  // both empty: the built-in demo of dimension demoDim
   int demoDim = 3;
-  Eigen::MatrixXd pose;            // #V by d posed cage vertices; empty = the rest pose
+  Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
   Method method = Method::Somigliana;
   DeformParams params;
   bool compare = false;

@@ -33,9 +33,9 @@ TEST(EditorLayout, TinyWindowsStillGivePositiveSizes) {
 }
 
 TEST(EditorOptions, FilesAndParameters) {
-  const EditorOptions o = parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma",
-                                           "1.5", "--compare", "somigliana,green,mvc", "--screenshot", "out.png",
-                                           "--size", "800x600", "--hide-ui", "--local"});
+  const EditorOptions o =
+      parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma", "1.5", "--compare",
+                       "somigliana,green,mvc", "--screenshot", "out.png", "--size", "800x600", "--hide-ui", "--local"});
   EXPECT_EQ(o.meshPath, "m.obj");
   EXPECT_EQ(o.cagePath, "c.obj");
   EXPECT_EQ(o.posedPath, "p.obj");
