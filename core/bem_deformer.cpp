@@ -1,5 +1,6 @@
 #include "bem_deformer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <utility>
@@ -8,6 +9,7 @@
 #include "bem_layer_integrals.h"
 #include "bem_system.h"
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "errors.h"
 #include "exterior_points.h"
 
@@ -74,6 +76,25 @@ class BemDeformer final : public CageDeformer {
 
   Method method() const override { return Method::Bem; }
   int dim() const override { return system_.restCage().dim(); }
+
+  // C's inside rows are [integrals | x | 1 | 0]: their gradients [d integrals | e_a | 0 | 0]; zero elsewhere.
+  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                    const ProgressCallback& progress) const override {
+    const int d = dim(), columns = coordinates_.columns(), main = coordinates_.mainColumns;
+    const int integralColumns = main - d - 1;
+    std::vector<CoordinateMatrix<double>> gradients(static_cast<std::size_t>(d));
+    for (auto& g : gradients) g.setZero(points.rows(), columns);
+    integrateBemLayerGradients(system_.restCage(), points, threads_, progress, [&](int p, const double* const* rows) {
+      if (diagnostics_.regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
+      for (int a = 0; a < d; ++a) {
+        std::copy(rows[a], rows[a] + integralColumns, gradients[static_cast<std::size_t>(a)].row(p).data());
+        gradients[static_cast<std::size_t>(a)](p, integralColumns + a) = 1;
+      }
+    });
+    std::vector<FrameCoordinates> frames;
+    for (auto& g : gradients) frames.push_back(makeFrameCoordinates(std::move(g), main, coordinates_.isFloat()));
+    return frames;
+  }
 
   FrameWeights frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params) const override {
     validateBemPoissonRatio(params.nu);

@@ -64,6 +64,13 @@ class CageDeformer {
   // The per-frame weight matrix W for a posed cage (#V by d, rest cage order). Validates params.
   virtual FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const = 0;
 
+  // The exact gradients dC_p/dx_a (a < d) of the point rows of C (#P rows, C's columns and storage each) for the
+  // deformation gradient (jacobian.h), from dual numbers through the method's closed forms; the rows of points
+  // that are not Inside (diagnostics().regions) are zero. Integrates again: build them only while a J-based
+  // quantity is in use. points: the points the deformer was made for.
+  virtual std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                            const ProgressCallback& progress) const = 0;
+
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
   int numPoints() const { return coordinates_.numPoints(); }

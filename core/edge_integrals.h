@@ -18,6 +18,16 @@ struct EdgeIntegrals {
   double angle = 0;      // int h / R^2 with h = n.(x - p0): signed angle subtended by the edge, -pi just inside it
 };
 
+// The same integrals as plain arrays, for x given as doubles or as dual numbers (dual_number.h: then every output
+// carries its exact gradient with respect to x). Instantiated for double and dual::Dual<2>.
+template <typename Scalar>
+struct EdgeIntegralsOf {
+  Scalar S, M[2][2], D[2], A[2], B[2][2][2], angle;
+};
+template <typename Scalar>
+void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
+                     EdgeIntegralsOf<Scalar>& out);
+
 // Closed form, double precision, valid for any x not on the edge.
 void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out);
 

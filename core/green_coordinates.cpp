@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "errors.h"
 #include "exterior_points.h"
 #include "point_blocks.h"
@@ -191,6 +192,21 @@ class GreenDeformer : public CageDeformer {
 
   Method method() const override { return Method::Green; }
   int dim() const override { return rest_.dim(); }
+
+  // C's rows are [phi | psi | x | 1]: their gradients [dphi | dpsi | 0 | 0] (coordinate_gradients.h).
+  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                    const ProgressCallback& progress) const override {
+    const int columns = coordinates_.columns(), main = coordinates_.mainColumns;
+    std::vector<CoordinateMatrix<double>> gradients(dim());
+    for (auto& g : gradients) g.setZero(points.rows(), columns);
+    integrateGreenGradients(rest_, points, threads_, progress, [&](int p, const double* const* rows) {
+      if (diagnostics_.regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
+      for (int a = 0; a < dim(); ++a) std::copy(rows[a], rows[a] + main, gradients[a].row(p).data());
+    });
+    std::vector<FrameCoordinates> frames;
+    for (auto& g : gradients) frames.push_back(makeFrameCoordinates(std::move(g), main, coordinates_.isFloat()));
+    return frames;
+  }
 
   FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams&) const override {
     SOMICAGE_ASSERT(posedVertices.rows() == rest_.numVertices() && posedVertices.cols() == rest_.dim(),

@@ -26,6 +26,7 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "coordinate_gradients.h"
 #include "deformer.h"
 #include "somigliana_coordinates.h"
 
@@ -35,6 +36,11 @@ namespace somicage {
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.
 RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd& points, int threads = 0,
                                         const ProgressCallback& progress = noProgress);
+
+// The exact gradients of those coordinates with respect to the point (dual numbers through the same formulas):
+// rows of #V numbers (coordinate_gradients.h).
+void integrateMeanValueGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                 const ProgressCallback& progress, const GradientRowSink& sink);
 
 // The deformer: precomputes the coordinates; every frame is then one product C W (frame_evaluation.h) with
 // C = the coordinates (#P by #V) and W = the posed vertices (#V by d). It ignores DeformParams.

@@ -750,4 +750,10 @@ void saveObj(const std::string& path, const Eigen::MatrixXd& vertices, const Pol
   file.commit();
 }
 
+void saveTextFile(const std::string& path, const std::string& text) {
+  AtomicFile file(path);
+  file.buffer() = text;
+  file.commit();
+}
+
 }  // namespace somicage

@@ -75,4 +75,7 @@ PolygonMesh cageTopology(const Cage& cage);
 // InputError carries the system's reason (strerror).
 void saveObj(const std::string& path, const Eigen::MatrixXd& vertices, const PolygonMesh& topology);
 
+// Writes text to path with saveObj's atomic replace (same guarantees and errors).
+void saveTextFile(const std::string& path, const std::string& text);
+
 }  // namespace somicage

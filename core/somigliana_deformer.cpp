@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "errors.h"
 #include "exterior_points.h"
 
@@ -46,6 +47,42 @@ void setTColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
 // The column of vertex i's term k in C (term-major; see writeFrameRow).
 inline int vertexColumn(int i, int k, int numVertices) { return k * numVertices + i; }
 
+// A row of integrals (the layout of SomiglianaCoordinates::values) and their per-vertex sums (vertexTermCount
+// numbers) in C's layout, with zero [x | 1] columns. Vertex terms term-major (all vertices' D, then all omega_x,
+// ...): each output of a frame then reads one contiguous range (the symmetric part of T only the B terms, the
+// antisymmetric part only the omega terms).
+template <typename Scalar>
+void writeIntegralColumns(const double* integrals, const double* sums, int numVertices, int dim, Scalar* row,
+                          int columns) {
+  const int terms = vertexTermCount(dim), main = columns - terms - dim - 1, vertexColumns = numVertices * terms;
+  std::fill(row, row + columns, Scalar(0));
+  for (int i = 0; i < numVertices; ++i)
+    for (int k = 0; k < terms; ++k)
+      row[vertexColumn(i, k, numVertices)] = static_cast<Scalar>(integrals[i * terms + k]);
+  for (int k = vertexColumns; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
+}
+
+// The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the dual-number integrals of
+// coordinate_gradients.h in writeIntegralColumns' layout; zero rows for points that are not Inside.
+template <typename Scalar>
+void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<PointRegion>& regions,
+                             int threads, const ProgressCallback& progress, int columns,
+                             std::vector<CoordinateMatrix<Scalar>>& gradients) {
+  const int d = cage.dim(), terms = vertexTermCount(d), numVertices = cage.numVertices();
+  gradients.resize(d);  // one at a time: no temporary fourth copy
+  for (auto& g : gradients) g.setZero(points.rows(), columns);
+  integrateSomiglianaGradients(cage, points, threads, progress, [&](int p, const double* const* rows) {
+    if (regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
+    for (int a = 0; a < d; ++a) {
+      double sums[vertexTermCount(3)] = {0};
+      for (int i = 0; i < numVertices; ++i)
+        for (int k = 0; k < terms; ++k) sums[k] += rows[a][i * terms + k];
+      writeIntegralColumns(rows[a], sums, numVertices, d, gradients[a].row(p).data(), columns);
+    }
+  });
+}
+
 // Writes a point's row of C in the storage type: its integrals and their per-vertex sums where they are
 // reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region and its
 // partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
@@ -68,15 +105,7 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
     writeSimilarityRow(points, p, row, columns);
     return region;
   }
-  std::fill(row, row + columns, Scalar(0));
-  // Vertex terms term-major (all vertices' D, then all omega_x, ...): each output of a frame then reads one
-  // contiguous range (the symmetric part of T only the B terms, the antisymmetric part only the omega terms).
-  const int vertexColumns = numVertices * terms;
-  for (int i = 0; i < numVertices; ++i)
-    for (int k = 0; k < terms; ++k)
-      row[vertexColumn(i, k, numVertices)] = static_cast<Scalar>(integrals[i * terms + k]);
-  for (int k = vertexColumns; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
-  for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
+  writeIntegralColumns(integrals, sums, numVertices, dim, row, columns);
   return region;
 }
 
@@ -125,6 +154,26 @@ class SomiglianaDeformer final : public CageDeformer {
 
   Method method() const override { return Method::Somigliana; }
   int dim() const override { return rest_.dim(); }
+
+  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                    const ProgressCallback& progress) const override {
+    std::vector<FrameCoordinates> frames(dim());
+    const bool isFloat = coordinates_.isFloat();
+    std::vector<CoordinateMatrix<float>> floats;
+    std::vector<CoordinateMatrix<double>> doubles;
+    if (isFloat)
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, coordinates_.columns(), floats);
+    else
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, coordinates_.columns(), doubles);
+    for (int a = 0; a < dim(); ++a) {
+      frames[a].mainColumns = coordinates_.mainColumns;
+      if (isFloat)
+        frames[a].floats = std::move(floats[a]);
+      else
+        frames[a].doubles = std::move(doubles[a]);
+    }
+    return frames;
+  }
 
   // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T,
   // evaluated as o + T(x)^-1 [... (v~_i - o) ...] about the posed centroid o (frame_evaluation.h).

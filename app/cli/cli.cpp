@@ -17,6 +17,8 @@ const std::vector<CliCommand>& cliCommands() {
   static const std::vector<CliCommand> commands = {
       {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
       {"deform", "deform a mesh (or point set) with a posed cage and write it as OBJ", runDeformCommand, deformUsage},
+      {"analyze", "measure a pose: volume change, det J, distortion and fold-overs of a deformed mesh",
+       runAnalyzeCommand, analyzeUsage},
       {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},

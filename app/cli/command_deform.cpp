@@ -1,6 +1,5 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same core calls
 // (loadCage + repairCage, makeDeformer, CageDeformer::deform, saveObj).
-#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -8,7 +7,6 @@
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
-#include "bem_system.h"
 #include "deformer.h"
 #include "errors.h"
 #include "obj_io.h"
@@ -38,25 +36,6 @@ ArgParser deformOptions() {
       });
 }
 
-// validateDeformParams names the parameter ("nu"); on the command line it is the option ("--nu").
-void validateOptions(const DeformParams& params, Method method) {
-  try {
-    if (method == Method::Bem) validateBemPoissonRatio(params.nu);  // says why nu = 0.5 is refused
-    validateDeformParams(params);
-  } catch (const InputError& e) {
-    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
-    throw InputError(source, -1, e.problem(), e.hint());
-  }
-}
-
-Method methodOption(const ArgParser& args) {
-  try {
-    return parseMethod(args.text("--method", "somigliana"));
-  } catch (const InputError& e) {
-    throw InputError("--method", -1, e.problem(), e.hint());
-  }
-}
-
 }  // namespace
 
 std::string deformUsage() {
@@ -79,14 +58,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   // Options first, so that a typo fails before any file is read.
   const Method method = methodOption(args);
-  DeformParams params;
-  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
-  params.blend = args.number("--blend", params.blend);
-  params.nu = args.numberOrInfinity("--nu", params.nu);
-  params.gamma = args.number("--gamma", params.gamma);
-  params.tractionCorrection = !args.has("--no-traction-fix");
-  params.corotational = args.has("--corotational");
-  validateOptions(params, method);
+  const DeformParams params = deformParamsOptions(args, method);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
@@ -98,13 +70,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const PolygonMesh mesh = loadMesh(meshPath);
   const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
   warnAboutMeshPlacement(cage, points, meshPath, cagePath);
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--gamma") ||
-                                       args.has("--no-traction-fix") || (method != Method::Bem && args.has("--nu")))) {
-    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only (--nu also to bem); " << methodName(method) << " ignores them\n";
-  }
-  if (method != Method::Bem && args.has("--corotational"))
-    std::cerr << kCommand << ": note: --corotational applies to bem only; " << methodName(method) << " ignores it\n";
+  noteIgnoredParameters(kCommand, args, method);
 
   // Precompute once, deform once.
   PrecomputeOptions options;

@@ -5,8 +5,10 @@
 #include <cstdio>
 #include <iostream>
 
+#include "bem_system.h"
 #include "cage_repair.h"
 #include "cage_validation.h"
+#include "errors.h"
 #include "memory_estimate.h"
 #include "mesh_placement.h"
 
@@ -44,10 +46,49 @@ Cage loadUsableCage(const std::string& path) {
   return std::move(repair.cage);
 }
 
+Method methodOption(const ArgParser& args) {
+  try {
+    return parseMethod(args.text("--method", "somigliana"));
+  } catch (const InputError& e) {
+    throw InputError("--method", -1, e.problem(), e.hint());
+  }
+}
+
+DeformParams deformParamsOptions(const ArgParser& args, Method method) {
+  DeformParams params;
+  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
+  params.blend = args.number("--blend", params.blend);
+  params.nu = args.numberOrInfinity("--nu", params.nu);
+  params.gamma = args.number("--gamma", params.gamma);
+  params.tractionCorrection = !args.has("--no-traction-fix");
+  params.corotational = args.has("--corotational");
+  try {
+    if (method == Method::Bem) validateBemPoissonRatio(params.nu);  // says why nu = 0.5 is refused
+    validateDeformParams(params);
+  } catch (const InputError& e) {  // validateDeformParams names the parameter ("nu"); here it is the option
+    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
+    throw InputError(source, -1, e.problem(), e.hint());
+  }
+  return params;
+}
+
+void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method) {
+  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--gamma") ||
+                                       args.has("--no-traction-fix") || (method != Method::Bem && args.has("--nu")))) {
+    std::cerr << command << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
+              << "only (--nu also to bem); " << methodName(method) << " ignores them\n";
+  }
+  if (method != Method::Bem && args.has("--corotational"))
+    std::cerr << command << ": note: --corotational applies to bem only; " << methodName(method) << " ignores it\n";
+}
+
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath) {
-  const MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(),
-                                                           points, options.floatStorage, options.threads);
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients) {
+  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(), points,
+                                                     options.floatStorage, options.threads);
+  if (withGradients)
+    estimate.gradients =
+        estimateGradientBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(), points, options.floatStorage);
   const std::optional<std::size_t> available = availableMemoryBytes();
   requireMemory(estimate, available, meshPath, memoryHint(false));  // neither command offers another storage
   // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.

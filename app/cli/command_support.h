@@ -5,6 +5,7 @@
 #include <chrono>
 #include <string>
 
+#include "cli/arg_parser.h"
 #include "deformer.h"
 #include "obj_io.h"
 
@@ -20,6 +21,17 @@ std::string formatSeconds(double seconds);
 // %g with the given significant digits.
 std::string formatNumber(double value, int digits = 6);
 
+// --method (default somigliana); an unknown name throws InputError naming --method.
+Method methodOption(const ArgParser& args);
+
+// --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
+// (InputError names the option; bem also refuses nu = 0.5 with its reason).
+DeformParams deformParamsOptions(const ArgParser& args, Method method);
+
+// Prints a note on stderr when options are given to a method that ignores them (Somigliana-only ones; --nu is
+// bem's as well; --corotational is bem's only).
+void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
+
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
@@ -31,8 +43,9 @@ Cage loadUsableCage(const std::string& path);
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
 // "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
+// withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath);
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
 // Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
 // (core/mesh_placement.h): different units, usually.

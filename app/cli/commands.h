@@ -31,5 +31,7 @@ int runCheckCommand(const std::vector<std::string>& args);
 std::string checkUsage();
 int runBenchCommand(const std::vector<std::string>& args);
 std::string benchUsage();
+int runAnalyzeCommand(const std::vector<std::string>& args);
+std::string analyzeUsage();
 
 }  // namespace somicage
