@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "bem_layer_integrals.h"
 #include "dual_number.h"
 #include "edge_integrals.h"
 #include "point_blocks.h"
@@ -76,12 +77,14 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
   }
 }
 
-template <int Dim>
-void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                         const GradientRowSink& sink) {
+// Rows [vertex terms | faceTerms per face]: the vertex terms of somigliana_coordinates.h and, per face,
+// writeFace(face, integrals, n) for the face block.
+template <int Dim, typename WriteFace>
+void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                         int faceTerms, WriteFace writeFace, const GradientRowSink& sink) {
   const RowMatrixXd normals = faceNormals(cage, cage.vertices);  // row-major: rows as pointers
   const int vertexColumns = cage.numVertices() * vertexTermCount(Dim);
-  const int columns = vertexColumns + cage.numFaces() * faceTermCount(Dim);
+  const int columns = vertexColumns + cage.numFaces() * faceTerms;
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
   forEachPointInBlocks(
       static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
@@ -107,13 +110,36 @@ void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
               t[2] += I.B[k][0][0], t[3] += I.B[k][1][1], t[4] += I.B[k][0][1];
             }
           }
-          DualOf<Dim>* f = row + vertexColumns + j * faceTermCount(Dim);
-          f[0] += I.S;
-          for (int a = 0; a < Dim; ++a)
-            for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
+          writeFace(row + vertexColumns + j * faceTerms, I, n);
         });
         buffers.emit(p, sink);
       });
+}
+
+// Somigliana's face terms S_j and q_j = M_j n_j (somigliana_coordinates.h).
+template <int Dim>
+void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                         const GradientRowSink& sink) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double* n) {
+    f[0] += I.S;
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
+  };
+  vertexTermGradients<Dim>(cage, points, threads, progress, faceTermCount(Dim), writeFace, sink);
+}
+
+// The boundary element's face terms S_j and the full moment M_j (bem_layer_integrals.h).
+template <int Dim>
+void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                       const GradientRowSink& sink) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double*) {
+    f[0] = I.S;
+    if constexpr (Dim == 3)
+      f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[2][2], f[4] = I.M[0][1], f[5] = I.M[0][2], f[6] = I.M[1][2];
+    else
+      f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[0][1];
+  };
+  vertexTermGradients<Dim>(cage, points, threads, progress, bemFaceTermCount(Dim), writeFace, sink);
 }
 
 template <int Dim>
@@ -156,6 +182,15 @@ void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, in
     greenGradients<3>(cage, points, threads, progress, sink);
   else
     greenGradients<2>(cage, points, threads, progress, sink);
+}
+
+void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                const ProgressCallback& progress, const GradientRowSink& sink) {
+  assertCageAndPoints(cage, points);
+  if (cage.dim() == 3)
+    bemLayerGradients<3>(cage, points, threads, progress, sink);
+  else
+    bemLayerGradients<2>(cage, points, threads, progress, sink);
 }
 
 }  // namespace somicage

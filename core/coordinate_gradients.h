@@ -25,4 +25,8 @@ void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& point
 void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                              const ProgressCallback& progress, const GradientRowSink& sink);
 
+// BEM: rows in the layout of BemLayerIntegrals::values (bem_layer_integrals.h) for points off the cage.
+void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                const ProgressCallback& progress, const GradientRowSink& sink);
+
 }  // namespace somicage

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "bem_deformer.h"
 #include "errors.h"
 #include "green_coordinates.h"
 #include "mean_value_coordinates.h"
@@ -12,9 +13,14 @@ namespace somicage {
 
 std::string methodName(Method method) {
   switch (method) {
-    case Method::Somigliana: return "somigliana";
-    case Method::Green: return "green";
-    case Method::MeanValue: return "mvc";
+    case Method::Somigliana:
+      return "somigliana";
+    case Method::Green:
+      return "green";
+    case Method::MeanValue:
+      return "mvc";
+    case Method::Bem:
+      return "bem";
   }
   return "unknown";
 }
@@ -23,7 +29,8 @@ Method parseMethod(const std::string& name) {
   if (name == "somigliana") return Method::Somigliana;
   if (name == "green") return Method::Green;
   if (name == "mvc") return Method::MeanValue;
-  throw InputError("--method", -1, "unknown method '" + name + "'", "use somigliana, green or mvc");
+  if (name == "bem") return Method::Bem;
+  throw InputError("--method", -1, "unknown method '" + name + "'", "use somigliana, green, mvc or bem");
 }
 
 void validateDeformParams(const DeformParams& params) {
@@ -46,9 +53,14 @@ void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformPara
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                            const PrecomputeOptions& options, const ProgressCallback& progress) {
   switch (method) {
-    case Method::Somigliana: return makeSomiglianaDeformer(restCage, points, options, progress);
-    case Method::Green: return makeGreenDeformer(restCage, points, options, progress);
-    case Method::MeanValue: return makeMeanValueDeformer(restCage, points, options, progress);
+    case Method::Somigliana:
+      return makeSomiglianaDeformer(restCage, points, options, progress);
+    case Method::Green:
+      return makeGreenDeformer(restCage, points, options, progress);
+    case Method::MeanValue:
+      return makeMeanValueDeformer(restCage, points, options, progress);
+    case Method::Bem:
+      return makeBemDeformer(restCage, points, options, progress);
   }
   SOMICAGE_ASSERT(false, "every method has a factory");
   return nullptr;

@@ -16,9 +16,9 @@
 
 namespace somicage {
 
-enum class Method { Somigliana, Green, MeanValue };
+enum class Method { Somigliana, Green, MeanValue, Bem };
 
-std::string methodName(Method method);        // "somigliana", "green", "mvc"
+std::string methodName(Method method);        // "somigliana", "green", "mvc", "bem"
 Method parseMethod(const std::string& name);  // throws InputError on an unknown name
 
 // Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
@@ -27,6 +27,7 @@ struct DeformParams {
   double nu = 0.0;                 // Poisson ratio in (-1, 0.5), or +-infinity
   double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
+  bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_deformer.h)
 };
 
 // Throws InputError naming the parameter when a value is out of range or NaN.

@@ -71,11 +71,11 @@ void combine(const Scalar& a, const Eigen::Matrix2d& tt, const Scalar& b, const 
     for (int j = 0; j < 2; ++j) s[i][j] = a * tt(i, j) + b * tn(i, j) + c * nn(i, j);
 }
 
-}  // namespace
-
+// integrateEdgeOf for the point at xi along the edge and h along its normal from p0 (h = -0 on the edge: the limit
+// from inside, see integrateEdgeInteriorLimit).
 template <typename Scalar>
-void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
-                     EdgeIntegralsOf<Scalar>& out) {
+void integrateEdgeLocalOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar& xi, const Scalar& h,
+                          EdgeIntegralsOf<Scalar>& out) {
   using std::atan2, std::log, std::log1p;
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
@@ -88,10 +88,6 @@ void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const
   if (l == 0) return;  // a zero-length edge carries no boundary
 
   const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
-  // Eigen's dot, as before the scalar became a template: a contracted a*b + c*d would give points on the
-  // supporting line a rounding-sized h instead of 0.
-  const Eigen::Matrix<Scalar, 2, 1> d(x[0] - p0.x(), x[1] - p0.y());
-  const Scalar xi = d.dot(tau), h = d.dot(n);
   const Scalar u0 = -xi, u1 = l - xi;
   const Scalar hh = h * h, u01 = u0 * u1;
   const Scalar R0sq = u0 * u0 + hh, R1sq = u1 * u1 + hh;
@@ -170,6 +166,32 @@ void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const
   combine<Scalar>(btt1, tt, btn1, tn, bnn1, nn, out.B[1]);
 }
 
+void toEigen(const EdgeIntegralsOf<double>& I, EdgeIntegrals& out) {
+  out.S = I.S;
+  out.angle = I.angle;
+  out.M = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.M[0][0]);
+  for (int k = 0; k < 2; ++k) {
+    out.D[k] = I.D[k];
+    out.A[k] = I.A[k];
+    out.B[k] = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.B[k][0][0]);
+  }
+}
+
+}  // namespace
+
+template <typename Scalar>
+void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
+                     EdgeIntegralsOf<Scalar>& out) {
+  const Eigen::Vector2d e = p1 - p0;
+  const double l = e.norm();
+  if (l == 0) return integrateEdgeLocalOf<Scalar>(p0, p1, Scalar(0), Scalar(0), out);
+  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
+  // Eigen's dot, as before the scalar became a template: a contracted a*b + c*d would give points on the
+  // supporting line a rounding-sized h instead of 0.
+  const Eigen::Matrix<Scalar, 2, 1> d(x[0] - p0.x(), x[1] - p0.y());
+  integrateEdgeLocalOf<Scalar>(p0, p1, d.dot(tau), d.dot(n), out);
+}
+
 template void integrateEdgeOf<double>(const Eigen::Vector2d&, const Eigen::Vector2d&, const double[2],
                                       EdgeIntegralsOf<double>&);
 template void integrateEdgeOf<dual::Dual<2>>(const Eigen::Vector2d&, const Eigen::Vector2d&, const dual::Dual<2>[2],
@@ -179,14 +201,16 @@ void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const E
   EdgeIntegralsOf<double> I;
   const double point[2] = {x.x(), x.y()};
   integrateEdgeOf(p0, p1, point, I);
-  out.S = I.S;
-  out.angle = I.angle;
-  out.M = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.M[0][0]);
-  for (int k = 0; k < 2; ++k) {
-    out.D[k] = I.D[k];
-    out.A[k] = I.A[k];
-    out.B[k] = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.B[k][0][0]);
-  }
+  toEigen(I, out);
+}
+
+void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& onEdge,
+                                EdgeIntegrals& out) {
+  const Eigen::Vector2d e = p1 - p0;
+  const double l = e.norm();
+  EdgeIntegralsOf<double> I;
+  integrateEdgeLocalOf<double>(p0, p1, l == 0 ? 0 : (onEdge - p0).dot(e) / l, -0.0, I);
+  toEigen(I, out);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

@@ -31,6 +31,12 @@ void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const
 // Closed form, double precision, valid for any x not on the edge.
 void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out);
 
+// The limit of integrateEdge as x tends to the point `onEdge` of the edge (strictly between its ends; projected onto
+// it) from the inside of the polygon, h -> 0-: the closed form with h = -0 (exact, no quadrature). It carries the
+// jump of the double layer: angle = -pi, D_k = pi phi_k(onEdge), B_k = (pi/2) phi_k(onEdge) I.
+void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& onEdge,
+                                EdgeIntegrals& out);
+
 // Same outputs by composite Gauss-Legendre quadrature (segments x points per segment); for tests and baselines.
 void integrateEdgeGauss(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, int segments,
                         int pointsPerSegment, EdgeIntegrals& out);

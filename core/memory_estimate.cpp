@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "bem_layer_integrals.h"
 #include "errors.h"
 #include "somigliana_coordinates.h"
 
@@ -25,6 +26,8 @@ std::size_t mainColumns(Method method, int dim, int cageVertices, int cageFaces)
       return V + F;
     case Method::MeanValue:
       return V;
+    case Method::Bem:
+      return V * vertexTermCount(dim) + F * bemFaceTermCount(dim) + dim + 1;  // integrals, [x | 1]
   }
   return 0;
 }
@@ -37,6 +40,8 @@ std::size_t tailColumns(Method method, int dim) {
       return dim + 1;  // [x | 1]
     case Method::MeanValue:
       return 0;
+    case Method::Bem:
+      return dim + 1;  // [x | 1]
   }
   return 0;
 }
@@ -115,6 +120,14 @@ MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices
       // The weights are computed in double; float storage converts them while they are still alive.
       e.working = floatStorage ? doubleCoordinates : 0;
       break;
+    case Method::Bem: {
+      // The integrals in double while C is assembled, and the boundary matrix with its LU and data operator.
+      const std::size_t n = static_cast<std::size_t>(dim) * (static_cast<std::size_t>(cageFaces) + 1);
+      e.working = points * mainColumns(method, dim, cageVertices, cageFaces) * sizeof(double) +
+                  (floatStorage ? doubleCoordinates : 0) + points * sizeof(double) +
+                  (3 * n + static_cast<std::size_t>(dim * cageVertices)) * n * sizeof(double);
+      break;
+    }
   }
   e.output = 2 * points * static_cast<std::size_t>(dim) * sizeof(double);
   return e;

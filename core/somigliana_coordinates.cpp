@@ -76,9 +76,9 @@ Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
 
 namespace {
 
-// Adds one triangle's integrals to the row of point x (3D layout, see vertexTermCount).
-void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], int faceOffset,
-                        double* row, double& solidAngleSum) {
+}  // namespace
+
+void addVertexTerms(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], double* row) {
   for (int k = 0; k < 3; ++k) {
     double* t = row + corners[k] * vertexTermCount(3);
     const Eigen::Vector3d omega = I.V[k].cross(n);  // (n V^T - V n^T) w = (V x n) x w
@@ -87,6 +87,23 @@ void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, co
     t[1] += omega.x(), t[2] += omega.y(), t[3] += omega.z();
     t[4] += B(0, 0), t[5] += B(1, 1), t[6] += B(2, 2), t[7] += B(0, 1), t[8] += B(0, 2), t[9] += B(1, 2);
   }
+}
+
+void addVertexTerms(const EdgeIntegrals& I, const int ends[2], double* row) {
+  for (int k = 0; k < 2; ++k) {
+    double* t = row + ends[k] * vertexTermCount(2);
+    t[0] += I.D[k];
+    t[1] += I.A[k];
+    t[2] += I.B[k](0, 0), t[3] += I.B[k](1, 1), t[4] += I.B[k](0, 1);
+  }
+}
+
+namespace {
+
+// Adds one triangle's integrals to the row of point x (3D layout, see vertexTermCount).
+void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], int faceOffset,
+                        double* row, double& solidAngleSum) {
+  addVertexTerms(I, n, corners, row);
   double* f = row + faceOffset;
   const Eigen::Vector3d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y(), f[3] += q.z();
@@ -95,12 +112,7 @@ void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, co
 
 void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int ends[2], int faceOffset, double* row,
                     double& angleSum) {
-  for (int k = 0; k < 2; ++k) {
-    double* t = row + ends[k] * vertexTermCount(2);
-    t[0] += I.D[k];
-    t[1] += I.A[k];
-    t[2] += I.B[k](0, 0), t[3] += I.B[k](1, 1), t[4] += I.B[k](0, 1);
-  }
+  addVertexTerms(I, ends, row);
   double* f = row + faceOffset;
   const Eigen::Vector2d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y();

@@ -59,11 +59,13 @@ SOMICAGE_HD inline void rotateSymmetric(const double q[3][3], const Scalar l[6],
 
 }  // namespace portable_detail
 
-// integrateTriangle (core/triangle_integrals.h) for the point x; a degenerate frame gives all zeros. With dual
-// numbers for x (seeded with the unit vectors) every output carries its exact gradient with respect to x.
+// integrateTrianglePortable for the point with local coordinates (xu, xv, h) in the face's frame [u v n] about p0.
+// h = -0.0 with (xu, xv) strictly inside the face is the limit from the inside of the cage (W = -2pi): every other
+// term is continuous there and every h-weighted one vanishes (bem_layer_integrals.h relies on this).
 template <typename Scalar>
-SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f, const Scalar x[3],
-                                                  PortableTriangleIntegralsOf<Scalar>& out) {
+SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFrame& f, const Scalar& xu,
+                                                       const Scalar& xv, const Scalar& h,
+                                                       PortableTriangleIntegralsOf<Scalar>& out) {
   if (f.degenerate) {
     out.S = 0, out.solidAngle = 0;
     for (int i = 0; i < 3; ++i) {
@@ -76,11 +78,8 @@ SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f
     return;
   }
 
-  // ---- Query point in the local frame; differences to the corners taken once (5.4) -----------------------------
-  const Scalar rel[3] = {x[0] - f.origin[0], x[1] - f.origin[1], x[2] - f.origin[2]};
-  const Scalar xu = rel[0] * f.u[0] + rel[1] * f.u[1] + rel[2] * f.u[2];
-  const Scalar xv = rel[0] * f.v[0] + rel[1] * f.v[1] + rel[2] * f.v[2];
-  const Scalar h = rel[0] * f.n[0] + rel[1] * f.n[1] + rel[2] * f.n[2], hh = h * h;
+  // ---- Differences to the corners in the local frame, taken once (5.4) -------------------------------------------
+  const Scalar hh = h * h;
   Scalar a[3][2], R[3], invR[3];
   for (int i = 0; i < 3; ++i) {
     a[i][0] = f.q[i][0] - xu;
@@ -180,6 +179,18 @@ SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f
                           -c * hJ52[2] - K11, c * h2J51[1] + w1,  -c * h3J50 - h * (g0 * h2J51[0] + g1 * h2J51[1])};
     portable_detail::rotateSymmetric(q, Bl, out.B[k]);
   }
+}
+
+// integrateTriangle (core/triangle_integrals.h) for the point x; a degenerate frame gives all zeros. With dual
+// numbers for x (seeded with the unit vectors) every output carries its exact gradient with respect to x.
+template <typename Scalar>
+SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f, const Scalar x[3],
+                                                  PortableTriangleIntegralsOf<Scalar>& out) {
+  const Scalar rel[3] = {x[0] - f.origin[0], x[1] - f.origin[1], x[2] - f.origin[2]};
+  const Scalar xu = rel[0] * f.u[0] + rel[1] * f.u[1] + rel[2] * f.u[2];
+  const Scalar xv = rel[0] * f.v[0] + rel[1] * f.v[1] + rel[2] * f.v[2];
+  const Scalar h = rel[0] * f.n[0] + rel[1] * f.n[1] + rel[2] * f.n[2];
+  integrateTriangleLocalPortable(f, xu, xv, h, out);
 }
 
 }  // namespace somicage

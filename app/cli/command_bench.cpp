@@ -10,6 +10,8 @@
 #include <numeric>
 #include <random>
 
+#include "bem_deformer.h"
+#include "bem_system.h"
 #include "cli/arg_parser.h"
 #include "cli/cli.h"
 #include "cli/command_support.h"
@@ -252,6 +254,30 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const double pouMedian = median(unity);
   const int usedThreads = threads > 0 ? threads : omp_get_max_threads();
 
+  // The boundary element reference: factoring its boundary matrix (once per cage and nu), then frames (a solve and
+  // the product C W). After the peak RSS above, which stays the Somigliana figure.
+  std::vector<double> factorTimes;
+  {
+    const BemSystem system(cage, threads);
+    for (int r = 0; r < std::max(3, repeat); ++r) {
+      const CliClock::time_point start = CliClock::now();
+      system.factor(0.3);
+      factorTimes.push_back(1e3 * secondsSince(start));
+    }
+  }
+  const double bemFactorMs = median(factorTimes);
+  {
+    deformer.reset();
+    requirePrecomputeMemory(kCommand, Method::Bem, cage, static_cast<std::size_t>(points.rows()), precompute,
+                            options.text("--mesh"));
+    ProgressReporter progress("precompute bem");
+    const std::unique_ptr<CageDeformer> bem = makeBemDeformer(cage, points, precompute, progress.callback());
+    progress.finish();
+    DeformParams bemParams;
+    bemParams.nu = 0.3;
+    deformMs.emplace_back("cpu_bem", timeFrames(*bem, posed, bemParams, frames, false));
+  }
+
   if (json) {
     JsonObjectWriter out(std::cout);
     out.field("mesh_vertices", static_cast<int>(points.rows()));
@@ -267,6 +293,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     out.field("baseline_pou_max", baselineUnity);
     out.field("deform_ms", deformMs);
     out.field("nu_update_ms", nuUpdateMs);
+    out.field("bem_factor_ms", bemFactorMs);
     out.field("analyze_ms", analyzeMs);
     out.field("detj_updates_per_s", 1e3 / analyzeMs.back().second);
     out.field("gradient_precompute_s", gradientSeconds);
@@ -285,7 +312,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
   std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",
               quadrature, 3 * quadrature * quadrature, K, speedup, baselineUnity);
   for (const auto& [name, ms] : deformMs) {
-    const bool cpu = name.rfind("cpu", 0) == 0;
+    const bool cpu = name.rfind("cpu", 0) == 0 && name != "cpu_bem";  // the Somigliana coordinates' bandwidth
     std::printf("deform %-10s %.2f ms", name.c_str(), ms);
     if (cpu)
       std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,
@@ -294,6 +321,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   if (!gpuNote.empty()) std::printf("gpu               %s\n", gpuNote.c_str());
   std::printf("nu update         %.2f ms (a frame at a new nu: only the weights change)\n", nuUpdateMs);
+  std::printf("bem factor        %.2f ms (the boundary matrix of %d unknowns, once per cage and nu)\n", bemFactorMs,
+              cage.dim() * (cage.numFaces() + 1));
   for (const auto& [name, ms] : analyzeMs)
     std::printf("det J %-11s %.2f ms (%.1f updates/s: positions, J, det J and distortion)\n", name.c_str(), ms,
                 1e3 / ms);

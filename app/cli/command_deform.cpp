@@ -27,12 +27,13 @@ ArgParser deformOptions() {
           {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
           {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
           {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
-          {"--method", "NAME", "somigliana (default), green or mvc"},
+          {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
           {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
           {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana only"},
+          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
           {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
           {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
+          {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
           {"--threads", "N", "OpenMP threads (default: all cores)"},
       });
 }
@@ -62,7 +63,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   // Options first, so that a typo fails before any file is read.
   const Method method = methodOption(args);
-  const DeformParams params = deformParamsOptions(args);
+  const DeformParams params = deformParamsOptions(args, method);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
@@ -127,6 +128,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
     summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
             << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
   }
+  if (method == Method::Bem)
+    summary << " (nu " << formatNumber(params.nu) << (params.corotational ? ", corotational" : "") << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
           << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "bem_system.h"
 #include "cage_repair.h"
 #include "cage_validation.h"
 #include "errors.h"
@@ -53,14 +54,16 @@ Method methodOption(const ArgParser& args) {
   }
 }
 
-DeformParams deformParamsOptions(const ArgParser& args) {
+DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   DeformParams params;
   params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
   params.blend = args.number("--blend", params.blend);
   params.nu = args.numberOrInfinity("--nu", params.nu);
   params.gamma = args.number("--gamma", params.gamma);
   params.tractionCorrection = !args.has("--no-traction-fix");
+  params.corotational = args.has("--corotational");
   try {
+    if (method == Method::Bem) validateBemPoissonRatio(params.nu);  // says why nu = 0.5 is refused
     validateDeformParams(params);
   } catch (const InputError& e) {  // validateDeformParams names the parameter ("nu"); here it is the option
     const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
@@ -70,11 +73,13 @@ DeformParams deformParamsOptions(const ArgParser& args) {
 }
 
 void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method) {
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
-                                       args.has("--gamma") || args.has("--no-traction-fix"))) {
+  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--gamma") ||
+                                       args.has("--no-traction-fix") || (method != Method::Bem && args.has("--nu")))) {
     std::cerr << command << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only; " << methodName(method) << " ignores them\n";
+              << "only (--nu also to bem); " << methodName(method) << " ignores them\n";
   }
+  if (method != Method::Bem && args.has("--corotational"))
+    std::cerr << command << ": note: --corotational applies to bem only; " << methodName(method) << " ignores it\n";
 }
 
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,

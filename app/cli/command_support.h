@@ -25,10 +25,12 @@ std::string formatNumber(double value, int digits = 6);
 // --method (default somigliana); an unknown name throws InputError naming --method.
 Method methodOption(const ArgParser& args);
 
-// --variant, --blend, --nu, --gamma, --no-traction-fix as DeformParams, validated (InputError names the option).
-DeformParams deformParamsOptions(const ArgParser& args);
+// --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
+// (InputError names the option; bem also refuses nu = 0.5 with its reason).
+DeformParams deformParamsOptions(const ArgParser& args, Method method);
 
-// Prints a note on stderr when Somigliana-only options are given to another method.
+// Prints a note on stderr when options are given to a method that ignores them (Somigliana-only ones; --nu is
+// bem's as well; --corotational is bem's only).
 void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
 
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.

@@ -29,6 +29,8 @@ const char* methodDisplayName(Method method) {
       return "Green";
     case Method::MeanValue:
       return "Mean value";
+    case Method::Bem:
+      return "BEM";
   }
   return "?";
 }
@@ -52,6 +54,10 @@ std::string viewLabel(const AppState& state, Method method) {
       label += buf;
     }
     if (!state.params.tractionCorrection) label += "  no traction fix";
+  }
+  if (method == Method::Bem) {
+    std::snprintf(buf, sizeof buf, "  nu=%.2f%s", state.params.nu, state.params.corotational ? "  corotational" : "");
+    label += std::isinf(state.params.nu) ? std::string("  nu=inf") : std::string(buf);
   }
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;

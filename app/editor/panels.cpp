@@ -132,35 +132,36 @@ void drawControlPanel(AppState& state) {
 
   sectionHeader("Method");
   int method = static_cast<int>(state.method);
-  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)"};
-  if (ImGui::Combo("method", &method, methods, 3)) {
+  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)", "BEM (linear elasticity)"};
+  if (ImGui::Combo("method", &method, methods, 4)) {
     setMethod(state, static_cast<Method>(method));
     commitEdit(state, "Method");
   }
   tooltip(
       "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
-      "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates.");
+      "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates;\n"
+      "BEM: the linear-elastic solution of the pose (boundary elements, the same nu), a reference.");
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   tooltip(
       "Show two or three methods side by side with the same pose (View > Compare methods). A view setting:\n"
       "not an edit, not undone.");
   if (state.compare) {
-    bool use[3] = {false, false, false};
+    bool use[4] = {false, false, false, false};
     for (Method m : state.compareMethods) use[static_cast<int>(m)] = true;
     bool changed = false;
-    for (int i = 0; i < 3; ++i) {
+    for (int i = 0; i < 4; ++i) {
       if (i > 0) ImGui::SameLine();
-      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c"};
+      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c", "BEM##c"};
       changed |= ImGui::Checkbox(shortNames[i], &use[i]);
       tooltip("Show this method in the comparison (two at least)");
     }
     if (changed) {
       std::vector<Method> list;
-      for (int i = 0; i < 3; ++i) {
+      for (int i = 0; i < 4; ++i) {
         if (use[i]) list.push_back(static_cast<Method>(i));
       }
-      if (list.size() >= 2) {
+      if (list.size() >= 2 && list.size() <= 3) {  // the compare view has up to three panes
         state.compareMethods = list;
         setCompare(state, true);
       }
@@ -169,9 +170,9 @@ void drawControlPanel(AppState& state) {
 
   sectionHeader("Somigliana parameters");
   // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
-  bool somiglianaShown = false;
-  for (Method m : state.viewMethods()) somiglianaShown |= m == Method::Somigliana;
-  if (!somiglianaShown) ImGui::BeginDisabled();
+  bool parametersUsed = false;
+  for (Method m : state.viewMethods()) parametersUsed |= m == Method::Somigliana || m == Method::Bem;  // BEM uses nu
+  if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once
   int variant = p.blend <= 0.0 ? 0 : (p.blend >= 1.0 ? 1 : 2);
@@ -223,16 +224,20 @@ void drawControlPanel(AppState& state) {
   tooltip(
       "Traction correction (Eq. 15): s'_j = s_j - lambda . w_j, so that a similarity pose moves the mesh\n"
       "exactly as a similarity.");
-  if (!somiglianaShown) ImGui::EndDisabled();
+  if (ImGui::Checkbox("BEM: corotational", &p.corotational)) changed = "Corotational";
+  tooltip(
+      "BEM only: remove the cage's best-fit rotation (Umeyama) before the linear solve and apply it after,\n"
+      "so that large rotations of the cage do not shear the mesh.");
+  if (!parametersUsed) ImGui::EndDisabled();
   if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
-      p.tractionCorrection != state.params.tractionCorrection) {
+      p.tractionCorrection != state.params.tractionCorrection || p.corotational != state.params.corotational) {
     setParams(state, p);
   }
   if (!changed.empty()) commitEdit(state, changed);
   if (blendDone) commitEdit(state, "blend");
   if (nuDone) commitEdit(state, "nu");
   if (gammaDone) commitEdit(state, "gamma");
-  if (!somiglianaShown) ImGui::TextDisabled("(Green and MVC ignore these)");
+  if (!parametersUsed) ImGui::TextDisabled("(Green and MVC ignore these; BEM uses nu and corotational)");
   drawNuPlot(state);
 
   sectionHeader("Pose");

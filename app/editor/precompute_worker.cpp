@@ -18,6 +18,8 @@ const char* displayName(Method m) {
       return "Green";
     case Method::MeanValue:
       return "MVC";
+    case Method::Bem:
+      return "BEM";
   }
   return "?";
 }

@@ -95,6 +95,7 @@ std::string sessionToJson(const Session& s) {
   params.set("nu", numberOrInfinity(s.params.nu));
   params.set("gamma", JsonValue::number(s.params.gamma));
   params.set("tractionCorrection", JsonValue::boolean(s.params.tractionCorrection));
+  params.set("corotational", JsonValue::boolean(s.params.corotational));
   root.set("params", std::move(params));
   root.set("compare", JsonValue::boolean(s.compare));
   JsonValue methods = JsonValue::array();
@@ -146,6 +147,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.params.nu = r.number(params, "nu", true);
   s.params.gamma = r.number(params, "gamma");
   s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
+  // BEM's option; sessions saved before it existed do not have it (off).
+  s.params.corotational = params.find("corotational") != nullptr && r.boolean(params, "corotational");
   try {
     validateDeformParams(s.params);
   } catch (const InputError& e) {

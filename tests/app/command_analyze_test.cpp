@@ -57,8 +57,11 @@ std::vector<std::string> analyzeArgs(const std::string& posed, const std::vector
 TEST(CliAnalyze, VolumeChangeEqualsTheVolumeOfTheDeformedObj) {
   ScratchDir dir;
   const std::string posed = writeSquashedCube(dir, 0.8);
-  for (const std::vector<std::string>& method : std::vector<std::vector<std::string>>{
-           {"--variant", "local", "--nu", "0.3", "--gamma", "0.5"}, {"--method", "green"}, {"--method", "mvc"}}) {
+  for (const std::vector<std::string>& method :
+       std::vector<std::vector<std::string>>{{"--variant", "local", "--nu", "0.3", "--gamma", "0.5"},
+                                             {"--method", "green"},
+                                             {"--method", "mvc"},
+                                             {"--method", "bem", "--nu", "0.3", "--corotational"}}) {
     const RunResult analyzed = runSomicage(analyzeArgs(posed, method));
     ASSERT_EQ(analyzed.exitCode, 0) << analyzed;
     std::vector<std::string> deformArgs = {"deform",

@@ -20,7 +20,7 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
                                          "baseline_speedup", "baseline_pou_max",    "deform_ms",
                                          "nu_update_ms",     "coord_bytes",         "peak_rss_bytes",
                                          "analyze_ms",       "detj_updates_per_s",  "gradient_precompute_s",
-                                         "gradient_bytes"};
+                                         "gradient_bytes",   "bem_factor_ms"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
   EXPECT_EQ(json["mesh_vertices"].number, 5);
@@ -32,6 +32,8 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_GT(json["baseline_speedup"].number, 1.0);  // 192 Gauss points per triangle against one closed form
   ASSERT_EQ(json["deform_ms"].type, Json::Type::Object);
   EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
+  EXPECT_TRUE(json["deform_ms"].has("cpu_bem"));
+  EXPECT_GT(json["bem_factor_ms"].number, 0);
   EXPECT_GT(json["coord_bytes"].number, 0);
   EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
   ASSERT_EQ(json["analyze_ms"].type, Json::Type::Object);

@@ -209,7 +209,8 @@ TEST_P(ExteriorPointsTest, FloatStorageMatchesDouble) {
 INSTANTIATE_TEST_SUITE_P(Methods, ExteriorPointsTest,
                          ::testing::Values(Case{"somigliana3d", 3, Method::Somigliana},
                                            Case{"somigliana2d", 2, Method::Somigliana},
-                                           Case{"green3d", 3, Method::Green}, Case{"green2d", 2, Method::Green}),
+                                           Case{"green3d", 3, Method::Green}, Case{"green2d", 2, Method::Green},
+                                           Case{"bem3d", 3, Method::Bem}, Case{"bem2d", 2, Method::Bem}),
                          test::methodCaseName);
 
 TEST(ExteriorPoints, ProxiesAreInsideWithAccurateIntegrals) {

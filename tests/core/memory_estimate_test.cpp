@@ -40,7 +40,7 @@ void forEachDeformer(double lo, double hi, Check check) {
   const Cage cages[] = {test::makeExtrudedL(), makePolygonCage(test::lLoop())};
   for (const Cage& cage : cages) {
     const Eigen::MatrixXd points = test::randomBoxPoints(57, cage.dim(), lo, hi, 7);
-    for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue}) {
+    for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue, Method::Bem}) {
       for (bool floatStorage : {false, true}) {
         PrecomputeOptions options;
         options.floatStorage = floatStorage;

@@ -24,8 +24,9 @@ Session sample() {
   s.params.gamma = 2.25;
   s.params.blend = 0.125;
   s.params.tractionCorrection = false;
+  s.params.corotational = true;
   s.compare = true;
-  s.compareMethods = {Method::Somigliana, Method::MeanValue};
+  s.compareMethods = {Method::Somigliana, Method::Bem, Method::MeanValue};
   s.camera.target = Eigen::Vector3d(0.1, -0.2, 0.3);
   s.camera.distance = 7.5;
   s.camera.yaw = -1.25;
@@ -45,6 +46,7 @@ TEST(EditorSession, RoundTripIsExact) {
   EXPECT_EQ(b.params.gamma, a.params.gamma);
   EXPECT_EQ(b.params.blend, a.params.blend);
   EXPECT_EQ(b.params.tractionCorrection, a.params.tractionCorrection);
+  EXPECT_EQ(b.params.corotational, a.params.corotational);
   EXPECT_EQ(b.compare, a.compare);
   EXPECT_EQ(b.compareMethods, a.compareMethods);
   EXPECT_EQ(b.camera.target, a.camera.target);
