@@ -61,14 +61,15 @@ void defineDeformer(py::module_& module) {
       .def(
           "deform",
           [](const PythonDeformer& deformer, const py::handle& posed, double nu, double gamma,
-             const std::string& variant, std::optional<double> blend, bool tractionFix) {
-            return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix});
+             const std::string& variant, std::optional<double> blend, bool tractionFix, bool corotational) {
+            return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix, corotational});
           },
           py::arg("posed"), py::kw_only(), py::arg("nu") = 0.0, py::arg("gamma") = 0.0, py::arg("variant") = "global",
-          py::arg("blend") = py::none(), py::arg("traction_fix") = true,
+          py::arg("blend") = py::none(), py::arg("traction_fix") = true, py::arg("corotational") = false,
           "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed "
           "(V, d). nu: Poisson ratio in (-1, 0.5) or +-inf; gamma >= 0: bulging; variant: global or local; blend in "
-          "[0, 1] overrides variant; traction_fix: Eq. 15. Green and mvc ignore all but posed.")
+          "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation before "
+          "the linear-elastic solve. Green and mvc ignore all but posed; bem reads nu and corotational.")
       .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })
       .def_property_readonly("dim", &PythonDeformer::dim)
       .def_property_readonly("num_points", [](const PythonDeformer& d) { return d.engine().numPoints(); })
@@ -100,7 +101,7 @@ PYBIND11_MODULE(_somicage, module) {
       "methods",
       [] {
         std::vector<std::string> names;
-        for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue})
+        for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue, Method::Bem})
           names.push_back(methodName(method));
         return names;
       },

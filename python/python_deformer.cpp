@@ -80,6 +80,7 @@ Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDefo
   params.nu = options.nu;
   params.gamma = options.gamma;
   params.tractionCorrection = options.tractionFix;
+  params.corotational = options.corotational;
   validateDeformParams(params);
 
   py::gil_scoped_release release;

@@ -22,6 +22,7 @@ struct PythonDeformOptions {
   std::string variant = "global";
   std::optional<double> blend;  // overrides variant
   bool tractionFix = true;
+  bool corotational = false;  // bem: remove the best-fit rotation before the linear solve
 };
 
 class PythonDeformer {

@@ -51,7 +51,8 @@ class Deformer:
                  float_storage: bool = False, progress: Optional[Progress] = None) -> None:
         """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
-               blend: Optional[float] = None, traction_fix: bool = True) -> npt.NDArray[np.float64]:
+               blend: Optional[float] = None, traction_fix: bool = True,
+               corotational: bool = False) -> npt.NDArray[np.float64]:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
     @property
     def method(self) -> str: ...
