@@ -16,6 +16,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools  # the Python module and its tests
   python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (README, "Python")
   blender  # headless tests: the add-on (~55 MB download with blender-data; Debian's 3.4 runs /usr/bin/python3) and the GLB import
+)
 
 missing=()
 for p in "${packages[@]}"; do
