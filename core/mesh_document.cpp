@@ -15,20 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
-
-std::vector<std::string_view> tokensOf(std::string_view s) {
-  std::vector<std::string_view> tokens;
-  size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && isBlank(s[i])) ++i;
-    const size_t start = i;
-    while (i < s.size() && !isBlank(s[i])) ++i;
-    if (i > start) tokens.push_back(s.substr(start, i - start));
-  }
-  return tokens;
-}
-
 // The lines of the text, split as parseObj splits them (LF, CRLF or a lone CR), without the end of line.
 std::vector<std::string_view> linesOf(std::string_view text) {
   std::vector<std::string_view> lines;
@@ -107,7 +93,7 @@ std::string relocatedMaterialLibraries(std::string_view line, const std::string&
   const fs::path outFolder = fs::weakly_canonical(folderOf(out), error);
   if (error || sourceFolder == outFolder) return std::string(line);
   std::string rewritten = "mtllib";
-  const std::vector<std::string_view> tokens = tokensOf(line);
+  const std::vector<std::string_view> tokens = splitTokens(line);
   for (size_t k = 1; k < tokens.size(); ++k) {
     const fs::path name(std::string(tokens[k]));
     fs::path target = name;
@@ -141,7 +127,7 @@ MeshDocument parseObjDocument(const std::string& text, const std::string& source
     ObjRecord record;
     record.text = std::string(rawLine);
     if (keyword == "v") {
-      const std::vector<std::string_view> tokens = tokensOf(line);
+      const std::vector<std::string_view> tokens = splitTokens(line);
       record.kind = ObjRecord::Kind::Position;
       record.index = vertexCount++;
       record.text.clear();
@@ -149,15 +135,15 @@ MeshDocument parseObjDocument(const std::string& text, const std::string& source
     } else if (keyword == "vn") {
       record.kind = ObjRecord::Kind::Normal;
       record.index = static_cast<int>(normals.size());
-      normals.push_back(numbersOf(tokensOf(line), 3, source, lineNumber));
+      normals.push_back(numbersOf(splitTokens(line), 3, source, lineNumber));
     } else if (keyword == "vt") {
-      uvs.push_back(numbersOf(tokensOf(line), 2, source, lineNumber));
+      uvs.push_back(numbersOf(splitTokens(line), 2, source, lineNumber));
     } else if (keyword == "usemtl") {
-      const std::vector<std::string_view> tokens = tokensOf(line);
+      const std::vector<std::string_view> tokens = splitTokens(line);
       material = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
     } else if (keyword == "f") {
       std::vector<int> faceNormals, faceUVs;
-      const std::vector<std::string_view> tokens = tokensOf(line);
+      const std::vector<std::string_view> tokens = splitTokens(line);
       for (size_t k = 1; k < tokens.size(); ++k) {
         faceUVs.push_back(cornerIndex(tokens[k], 1, static_cast<int>(uvs.size()), source, lineNumber));
         faceNormals.push_back(cornerIndex(tokens[k], 2, static_cast<int>(normals.size()), source, lineNumber));

@@ -23,6 +23,20 @@
 
 namespace somicage {
 
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::vector<std::string_view> splitTokens(std::string_view s) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && isBlank(s[i])) ++i;
+    const size_t start = i;
+    while (i < s.size() && !isBlank(s[i])) ++i;
+    if (i > start) tokens.push_back(s.substr(start, i - start));
+  }
+  return tokens;
+}
+
 namespace {
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -93,20 +107,6 @@ long lineAt(std::string_view text, size_t offset) {
   std::string_view line;
   while (cursor.next(line)) continue;
   return cursor.lineNumber();
-}
-
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
-
-std::vector<std::string_view> splitTokens(std::string_view s) {
-  std::vector<std::string_view> tokens;
-  size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && isBlank(s[i])) ++i;
-    const size_t start = i;
-    while (i < s.size() && !isBlank(s[i])) ++i;
-    if (i > start) tokens.push_back(s.substr(start, i - start));
-  }
-  return tokens;
 }
 
 enum class NumberStatus { Ok, NotANumber, OutOfRange, NotFinite };

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cage.h"
@@ -32,6 +33,10 @@ struct PolygonMesh {
   int numVertices() const { return static_cast<int>(vertices.rows()); }
   int numFaces() const { return static_cast<int>(faces.size()); }
 };
+
+// OBJ separates tokens by spaces and tabs; every reader of OBJ lines splits them with these.
+bool isBlank(char c);
+std::vector<std::string_view> splitTokens(std::string_view line);
 
 // Parses OBJ text. source names the text in error messages (normally the file path).
 PolygonMesh parseObj(const std::string& text, const std::string& source);

@@ -26,22 +26,18 @@ const char* const kCommand = "somicage analyze";
 ArgParser analyzeOptions() {
   return ArgParser(
       kCommand,
-      {
-          {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
-          {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
-          {"--mesh", "MESH.obj", "the mesh whose deformation is measured (2D cage: its x, y)", true},
-          {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
-          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
-          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
-          {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
-          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
-          {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
-          {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
-          {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
-          {"--json", "", "print one JSON object"},
-          {"--threads", "N", "OpenMP threads (default: all cores)"},
-      });
+      withDeformParams(
+          {
+              {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+              {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+              {"--mesh", "MESH.obj", "the mesh whose deformation is measured (2D cage: its x, y)", true},
+          },
+          {
+              {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
+              {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
+              {"--json", "", "print one JSON object"},
+              {"--threads", "N", "OpenMP threads (default: all cores)"},
+          }));
 }
 
 // FROM:TO:N.

@@ -21,21 +21,17 @@ const char* const kCommand = "somicage deform";
 ArgParser deformOptions() {
   return ArgParser(
       kCommand,
-      {
-          {"--cage", "REST", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
-          {"--posed", "POSED", "the posed cage: the rest cage's vertices, moved, in the same order", true},
-          {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
-          {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
-          {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
-          {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
-          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
-          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
-          {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
-          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
-          {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
-          {"--threads", "N", "OpenMP threads (default: all cores)"},
-      });
+      withDeformParams(
+          {
+              {"--cage", "REST", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+              {"--posed", "POSED", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+              {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
+              {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
+              {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
+          },
+          {
+              {"--threads", "N", "OpenMP threads (default: all cores)"},
+          }));
 }
 
 }  // namespace

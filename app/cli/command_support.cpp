@@ -54,6 +54,21 @@ Method methodOption(const ArgParser& args) {
   }
 }
 
+std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
+  before.insert(before.end(),
+                {
+                    {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
+                    {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
+                    {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
+                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
+                    {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
+                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
+                    {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
+                });
+  before.insert(before.end(), after.begin(), after.end());
+  return before;
+}
+
 DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   DeformParams params;
   params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;

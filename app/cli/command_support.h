@@ -25,6 +25,10 @@ std::string formatNumber(double value, int digits = 6);
 // --method (default somigliana); an unknown name throws InputError naming --method.
 Method methodOption(const ArgParser& args);
 
+// before, then the options of every command that deforms (--method, --variant, --blend, --nu, --gamma,
+// --no-traction-fix, --corotational: read them with methodOption and deformParamsOptions), then after.
+std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
+
 // --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
 // (InputError names the option; bem also refuses nu = 0.5 with its reason).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
