@@ -95,7 +95,7 @@ std::string relocatedMaterialLibraries(std::string_view line, const std::string&
   std::string rewritten = "mtllib";
   const std::vector<std::string_view> tokens = splitTokens(line);
   for (size_t k = 1; k < tokens.size(); ++k) {
-    const fs::path name(std::string(tokens[k]));
+    const fs::path name{std::string(tokens[k])};
     fs::path target = name;
     if (name.is_relative() && fs::exists(sourceFolder / name, error)) {
       target = fs::relative(sourceFolder / name, outFolder, error);
