@@ -13,6 +13,30 @@
 using namespace somicage;
 using namespace somicage::editor;
 
+namespace {
+
+// For a convex body: each face's (3D) or edge's (2D, (e_y, -e_x)) normal has a positive component along the
+// direction from the vertices' centroid to the face's centroid.
+void expectNormalsPointAwayFromCentroid(const Eigen::MatrixXd& V, const Eigen::MatrixXi& faces, const char* what) {
+  const Eigen::RowVectorXd centroid = V.colwise().mean();
+  int inward = 0;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    Eigen::RowVectorXd faceCentroid = Eigen::RowVectorXd::Zero(V.cols()), normal(V.cols());
+    for (Eigen::Index k = 0; k < faces.cols(); ++k) faceCentroid += V.row(faces(f, k)) / double(faces.cols());
+    if (V.cols() == 3) {
+      const Eigen::Vector3d a = V.row(faces(f, 0)), b = V.row(faces(f, 1)), c = V.row(faces(f, 2));
+      normal = (b - a).cross(c - a).transpose();
+    } else {
+      const Eigen::RowVectorXd e = V.row(faces(f, 1)) - V.row(faces(f, 0));
+      normal << e(1), -e(0);
+    }
+    inward += normal.dot(faceCentroid - centroid) <= 0;
+  }
+  EXPECT_EQ(inward, 0) << what << ": faces whose normal points into the body";
+}
+
+}  // namespace
+
 TEST(EditorScene, DemoCagesEncloseTheirMeshesAndFaceOutward) {
   for (int dim : {2, 3}) {
     const Scene s = makeDemoScene(dim);
@@ -26,14 +50,19 @@ TEST(EditorScene, DemoCagesEncloseTheirMeshesAndFaceOutward) {
     bounds3(s.meshVertices, lo, hi);
     bounds3(s.restCage.vertices, clo, chi);
     EXPECT_TRUE((clo.array() <= lo.array()).all() && (hi.array() <= chi.array()).all());
+    // Outward: both the cage (a box) and the 3D mesh (a capped cylinder) are convex, so every face's normal points
+    // away from the body's centroid. This is measured face by face, independently of orientOutward's signed volume.
+    expectNormalsPointAwayFromCentroid(s.restCage.vertices, s.restCage.faces, "cage");
     if (dim == 3) {
-      EXPECT_GT(signedVolume(s.restCage.vertices, s.restCage.faces), 0.0);
-      EXPECT_GT(signedVolume(s.meshVertices, s.meshTriangles), 0.0);
-      // Closed: every edge is shared by exactly two faces in opposite directions.
+      expectNormalsPointAwayFromCentroid(s.meshVertices, s.meshTriangles, "mesh");
+      // Closed and consistently wound: every directed edge once, and its reverse once.
       std::map<std::pair<int, int>, int> edges;
       for (Eigen::Index f = 0; f < s.restCage.faces.rows(); ++f)
         for (int k = 0; k < 3; ++k) ++edges[{s.restCage.faces(f, k), s.restCage.faces(f, (k + 1) % 3)}];
-      for (const auto& [e, n] : edges) EXPECT_EQ(edges.count({e.second, e.first}), 1u);
+      for (const auto& [e, n] : edges) {
+        EXPECT_EQ(n, 1) << "edge " << e.first << "-" << e.second;
+        EXPECT_EQ(edges.count({e.second, e.first}), 1u) << "edge " << e.first << "-" << e.second;
+      }
     }
   }
 }
