@@ -21,16 +21,16 @@ void expectNormalsPointAwayFromCentroid(const Eigen::MatrixXd& V, const Eigen::M
   const Eigen::RowVectorXd centroid = V.colwise().mean();
   int inward = 0;
   for (Eigen::Index f = 0; f < faces.rows(); ++f) {
-    Eigen::RowVectorXd faceCentroid = Eigen::RowVectorXd::Zero(V.cols()), normal(V.cols());
+    Eigen::RowVectorXd faceCentroid = Eigen::RowVectorXd::Zero(V.cols());
     for (Eigen::Index k = 0; k < faces.cols(); ++k) faceCentroid += V.row(faces(f, k)) / double(faces.cols());
+    const Eigen::RowVectorXd toFace = faceCentroid - centroid, e1 = V.row(faces(f, 1)) - V.row(faces(f, 0));
+    double outward = e1(1) * toFace(0) - e1(0) * toFace(1);  // 2D: (e_y, -e_x) . toFace
     if (V.cols() == 3) {
-      const Eigen::Vector3d a = V.row(faces(f, 0)), b = V.row(faces(f, 1)), c = V.row(faces(f, 2));
-      normal = (b - a).cross(c - a).transpose();
-    } else {
-      const Eigen::RowVectorXd e = V.row(faces(f, 1)) - V.row(faces(f, 0));
-      normal << e(1), -e(0);
+      const Eigen::RowVectorXd e2 = V.row(faces(f, 2)) - V.row(faces(f, 0));
+      outward = (e1(1) * e2(2) - e1(2) * e2(1)) * toFace(0) + (e1(2) * e2(0) - e1(0) * e2(2)) * toFace(1) +
+                (e1(0) * e2(1) - e1(1) * e2(0)) * toFace(2);  // (e1 x e2) . toFace
     }
-    inward += normal.dot(faceCentroid - centroid) <= 0;
+    inward += outward <= 0;
   }
   EXPECT_EQ(inward, 0) << what << ": faces whose normal points into the body";
 }
