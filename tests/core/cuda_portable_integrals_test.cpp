@@ -20,6 +20,18 @@
 namespace somicage {
 namespace {
 
+// The cage's faces as the CUDA kernel receives them.
+std::vector<PortableFace> portableFaces(const Cage& cage) {
+  std::vector<PortableFace> faces(cage.numFaces());
+  for (int j = 0; j < cage.numFaces(); ++j) {
+    faces[j].frame = makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
+                                       cage.vertices.row(cage.faces(j, 2)))
+                         .kernel;
+    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
+  }
+  return faces;
+}
+
 TEST(CudaPortableIntegrals, DegenerateFaceGivesZeros) {
   const Eigen::Vector3d p(0, 0, 0), q(1, 1, 1);
   const TriangleFrame frame = makeTriangleFrame(p, q, 2 * q);  // collinear corners
@@ -56,13 +68,7 @@ TEST(CudaPortableIntegrals, RowsMatchTheReferenceQuadrature) {
   points.row(0) << 0, 0, 0;
   points.bottomRows(2) = test::pointsNearFaces(cage, 2, 0.01, 3);
 
-  std::vector<PortableFace> faces(cage.numFaces());
-  for (int j = 0; j < cage.numFaces(); ++j) {
-    faces[j].frame = makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
-                                       cage.vertices.row(cage.faces(j, 2)))
-                         .kernel;
-    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
-  }
+  const std::vector<PortableFace> faces = portableFaces(cage);
   const int numPoints = static_cast<int>(points.rows());
   const int columns = cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms;
   std::vector<double> rows(static_cast<size_t>(columns) * numPoints, 12345.0);  // overwritten, column-major
@@ -83,13 +89,7 @@ TEST(CudaPortableIntegrals, RowsMatchTheReferenceQuadrature) {
 // Outside the cage the winding number is 0 (the reference's solid-angle sum agrees).
 TEST(CudaPortableIntegrals, WindingNumberIsZeroOutside) {
   const Cage cage = test::makeBumpySphere(1);
-  std::vector<PortableFace> faces(cage.numFaces());
-  for (int j = 0; j < cage.numFaces(); ++j) {
-    faces[j].frame = makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
-                                       cage.vertices.row(cage.faces(j, 2)))
-                         .kernel;
-    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
-  }
+  const std::vector<PortableFace> faces = portableFaces(cage);
   std::vector<double> row(cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms);
   const double x[3] = {3, 0.2, -0.1};
   const double winding =
