@@ -127,9 +127,9 @@ Cage stripPolygon() {  // [-2, 2] x [-0.5, 0.5], 6 vertices along each long side
 }
 
 #ifdef SOMICAGE_SANITIZE
-constexpr int kPoints3 = 2, kPoints2 = 6;  // instrumented code is ~20x slower
+constexpr int kPoints3 = 2, kPoints2 = 6, kCheckPoints = 2;  // instrumented code is ~20x slower
 #else
-constexpr int kPoints3 = 14, kPoints2 = 24;
+constexpr int kPoints3 = 14, kPoints2 = 24, kCheckPoints = 5;  // per scene; per check of the reference
 #endif
 
 std::vector<ReferenceScene> referenceScenes() {
@@ -169,7 +169,7 @@ std::string describe(const reference::PoseParameters& p) {
 TEST(SomiglianaReference, QuadratureConvergesToTheIdentityOfEq7) {
   for (const Cage& cage : {test::makeBumpySphere(1), test::makeStarPolygon(6)}) {
     const int d = cage.dim();
-    const Eigen::MatrixXd points = interiorPoints(cage, 6, 11);
+    const Eigen::MatrixXd points = interiorPoints(cage, kCheckPoints, 11);
     const double diameter = cageDiameter(cage.vertices);
     const std::vector<double> nus = {0.0, 0.3, -0.5};
     std::vector<double> errors;
@@ -208,7 +208,7 @@ TEST(SomiglianaReference, QuadratureConvergesToTheIdentityOfEq7) {
 TEST(SomiglianaReference, ReproducesASimilarityPose) {
   for (const Cage& cage : {test::makeBumpySphere(1), test::makeStarPolygon(6)}) {
     const test::TestSimilarity similarity = test::randomSimilarity(cage.dim(), 5);
-    const Eigen::MatrixXd moved = similarity.apply(cage.vertices), points = interiorPoints(cage, 4, 2);
+    const Eigen::MatrixXd moved = similarity.apply(cage.vertices), points = interiorPoints(cage, kCheckPoints, 2);
     for (const reference::PoseParameters& p :
          {reference::PoseParameters{0, 0.3, 1.5, true}, reference::PoseParameters{1, -0.5, 0, false},
           reference::PoseParameters{0.5, kInf, 2, true}}) {
@@ -274,7 +274,8 @@ INSTANTIATE_TEST_SUITE_P(Poses, SomiglianaAgainstReference, ::testing::ValuesIn(
 // the agreement above is the quadrature converging onto the core, not a coincidence at one order.
 TEST(SomiglianaAgainstReference, DifferenceFallsWithTheGaussOrder) {
   const Cage cage = test::makeBumpySphere(1);
-  const Eigen::MatrixXd posed = smoothPerturbation(cage.vertices, 0.2, 3), points = interiorPoints(cage, 4, 23);
+  const Eigen::MatrixXd posed = smoothPerturbation(cage.vertices, 0.2, 3),
+                        points = interiorPoints(cage, kCheckPoints, 23);
   const reference::PoseParameters p{0.5, 0.3, 1.5, true};
   const Eigen::MatrixXd actual = coreDeformer(cage, points)->deform(posed, coreParams(p));
   const reference::BoundaryConditions bc = reference::boundaryConditions(cage, posed, p);
