@@ -107,7 +107,7 @@ void measureGeometry(const Cage& cage, CageReport& report) {
       for (int l = k + 1; l < cage.faces.cols(); ++l) repeated = repeated || cage.faces(j, k) == cage.faces(j, l);
     }
     volume += signedFaceMeasure(cage, j, centre);
-    if (repeated || !(areas(j) > minMeasure)) report.degenerateFaces.push_back(j);
+    if (repeated || !(areas(j) > minMeasure) || isDegenerateFace(cage, j)) report.degenerateFaces.push_back(j);
   }
   report.signedVolume = volume;
 
@@ -458,8 +458,7 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
                : "the polygon is clockwise (" + what + value.str() + "): reverse the order of its vertices");
     } else {
       problems.push_back("the cage encloses (nearly) no " + std::string(is3d ? "volume" : "area") + " (" + what +
-                         value.str() + " for a diameter of " + diameter.str() +
-                         "): " +
+                         value.str() + " for a diameter of " + diameter.str() + "): " +
                          (is3d ? "its faces must bound a solid, with normals pointing out"
                                : "its vertices must go counter-clockwise around an area"));
     }

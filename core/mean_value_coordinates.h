@@ -1,4 +1,5 @@
-// Mean value coordinates as a CageDeformer:
+// Mean value coordinates (the deformer over them is the method core/methods/mvc_method.cpp: C = the coordinates,
+// W = the posed vertices):
 //   2D: Floater 2003, in the signed form of Hormann & Floater 2006 ("Mean value coordinates for arbitrary planar
 //       polygons"), valid for any simple polygon (non-convex included) and any point of the plane;
 //   3D: Ju, Schaefer & Warren 2005 ("Mean value coordinates for closed triangular meshes"), their robust
@@ -24,10 +25,10 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
 
-#include "deformer.h"
-#include "somigliana_coordinates.h"
+#include "cage.h"
+#include "coordinate_layout.h"  // RowMatrixXd
+#include "progress.h"
 
 namespace somicage {
 
@@ -35,10 +36,5 @@ namespace somicage {
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.
 RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd& points, int threads = 0,
                                         const ProgressCallback& progress = noProgress);
-
-// The deformer: precomputes the coordinates; every frame is then one product C W (frame_evaluation.h) with
-// C = the coordinates (#P by #V) and W = the posed vertices (#V by d). It ignores DeformParams.
-std::unique_ptr<CageDeformer> makeMeanValueDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
-                                                    const PrecomputeOptions& options, const ProgressCallback& progress);
 
 }  // namespace somicage

@@ -61,6 +61,8 @@ Cage loadCage(const std::string& path);
 // The vertices of a posed cage (#V by d, d = restCage.dim(); a 2D cage takes x, y). The file must have the
 // rest cage's vertex count, in the same order; its faces are not compared (a pose may list them in another order).
 Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage);
+// Throws InputError naming source unless a pose has the rest cage's vertex count.
+void requirePosedVertexCount(const Cage& restCage, long vertices, const std::string& source);
 // The same from a parsed mesh; source names it in error messages.
 Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source);
 

@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libtinyobjloader-dev libgtest-dev  # core and tests
+  libeigen3-dev libgtest-dev  # core and tests
   libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor
   xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
   clang libclang-rt-dev libomp-dev  # the libFuzzer targets: clang, its fuzzer/sanitizer runtimes, OpenMP for clang

@@ -17,9 +17,9 @@
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
 #include "cuda/cuda_backend.h"
+#include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
-#include "somigliana_deformer.h"
 
 namespace somicage {
 
@@ -134,9 +134,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const bool json = options.has("--json");
   setThreadCount(threads);
 
-  const Cage cage = loadUsableCage(options.text("--cage"));
-  const Eigen::MatrixXd points = meshPoints(loadMesh(options.text("--mesh")), cage.dim());
-  warnAboutMeshPlacement(cage, points, options.text("--mesh"), options.text("--cage"));
+  const Cage cage = loadUsableCage(options.text("--cage"), printNotice);
+  const Eigen::MatrixXd points = meshPointsFor(cage, loadMesh(options.text("--mesh")).vertices, options.text("--mesh"),
+                                               options.text("--cage"), printNotice);
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
   PrecomputeOptions precompute;
@@ -145,7 +145,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
   precompute.integration.threads = threads;
 
   // Precompute as the editor does: exact integrals, stored in float.
-  requirePrecomputeMemory(kCommand, Method::Somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
+  const Method somigliana = methods::somigliana();
+  requirePrecomputeMemory(kCommand, somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
                           options.text("--mesh"));
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
@@ -153,7 +154,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     deformer.reset();
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
-    deformer = makeSomiglianaDeformer(cage, points, precompute, progress.callback());
+    deformer = makeDeformer(somigliana, cage, points, precompute, progress.callback());
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;

@@ -1,5 +1,5 @@
-// somicage deform: the batch form of what the editor does on every frame, through the same core calls
-// (loadCage + repairCage, makeDeformer, CageDeformer::deform, saveObj).
+// somicage deform: the batch form of what the editor does on every frame, through the same engine facade
+// (engine.h: loadUsableCage, meshPointsFor, precompute, deformPoints), then saveObj.
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -18,6 +18,14 @@ namespace {
 
 const char* const kCommand = "somicage deform";
 
+// "somigliana only": the methods that read --variant, --blend, --nu, --gamma and --no-traction-fix.
+std::string paramMethods() {
+  std::string names;
+  for (Method m : allMethods())
+    if (m->takesDeformParams) names += (names.empty() ? "" : ", ") + std::string(m->name);
+  return names + " only";
+}
+
 ArgParser deformOptions() {
   return ArgParser(
       kCommand,
@@ -26,12 +34,12 @@ ArgParser deformOptions() {
           {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
           {"--mesh", "IN.obj", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
           {"--out", "OUT.obj", "where to write the result: IN's vertices moved, IN's faces", true},
-          {"--method", "NAME", "somigliana (default), green or mvc"},
-          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
+          {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
+          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); " + paramMethods()},
           {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana only"},
-          {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
-          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
+          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); " + paramMethods()},
+          {"--gamma", "G", "bulging scale >= 0 (default 0); " + paramMethods()},
+          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; " + paramMethods()},
           {"--threads", "N", "OpenMP threads (default: all cores)"},
       });
 }
@@ -46,13 +54,7 @@ void validateOptions(const DeformParams& params) {
   }
 }
 
-Method methodOption(const ArgParser& args) {
-  try {
-    return parseMethod(args.text("--method", "somigliana"));
-  } catch (const InputError& e) {
-    throw InputError("--method", -1, e.problem(), e.hint());
-  }
-}
+Method methodOption(const ArgParser& args) { return parseMethod(args.text("--method", methodName(Method()))); }
 
 }  // namespace
 
@@ -89,15 +91,14 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
 
   // Inputs.
-  const Cage cage = loadUsableCage(cagePath);
+  const Cage cage = loadUsableCage(cagePath, printNotice);
   const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
   const PolygonMesh mesh = loadMesh(meshPath);
-  const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
-  warnAboutMeshPlacement(cage, points, meshPath, cagePath);
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
-                                       args.has("--gamma") || args.has("--no-traction-fix"))) {
-    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only; " << methodName(method) << " ignores them\n";
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
+  if (!method->takesDeformParams && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
+                                     args.has("--gamma") || args.has("--no-traction-fix"))) {
+    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to "
+              << paramMethods() << "; " << methodName(method) << " ignores them\n";
   }
 
   // Precompute once, deform once.
@@ -109,7 +110,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer = makeDeformer(method, cage, points, options, progress.callback());
+    deformer = precompute(method, cage, points, options, meshPath, progress.callback());
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
   const int exterior = deformer->diagnostics().exteriorCount();
@@ -119,23 +120,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
               << "into the deformation inside (docs/engine.md, \"Points outside the cage\")\n";
   }
   const CliClock::time_point deformStart = CliClock::now();
-  const Eigen::MatrixXd deformed = deformer->deform(posed, params);
+  const Eigen::MatrixXd deformed = deformPoints(*deformer, cage, posed, params, posedPath, meshPath);
   const double deformSeconds = secondsSince(deformStart);
-
-  Eigen::Index bad = 0, firstBad = -1;
-  for (Eigen::Index p = 0; p < deformed.rows(); ++p) {
-    if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;
-  }
-  if (bad > 0) {
-    std::ostringstream where;
-    where << points.row(firstBad);
-    throw InputError(meshPath, -1,
-                     std::to_string(bad) + " of " + std::to_string(deformed.rows()) +
-                         " points could not be deformed; the first is vertex " + std::to_string(firstBad) + " at (" +
-                         where.str() + ")",
-                     "nothing was written; this is a bug (every point gets a finite position, docs/engine.md): "
-                     "please report it with the input files");
-  }
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
   result.leftCols(cage.dim()) = deformed;
@@ -143,7 +129,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   std::ostringstream summary;
   summary << kCommand << ": " << cage.dim() << "D " << methodName(method);
-  if (method == Method::Somigliana) {
+  if (method->takesDeformParams) {
     summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
             << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
   }

@@ -5,10 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
-#include "cage_repair.h"
-#include "cage_validation.h"
 #include "memory_estimate.h"
-#include "mesh_placement.h"
 
 namespace somicage {
 
@@ -34,22 +31,17 @@ void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
-Cage loadUsableCage(const std::string& path) {
-  CageRepair repair = repairCage(loadCage(path));
-  for (const std::string& fix : repair.fixes) std::cerr << "somicage: note: " << path << ": " << fix << "\n";
-  const CageReport report = validateCage(repair.cage);
-  for (const std::string& warning : describeCageWarnings(report))
-    std::cerr << "somicage: warning: " << path << ": " << warning << "\n";
-  requireValidCage(report, path);
-  return std::move(repair.cage);
+void printNotice(const Notice& notice) {
+  std::cerr << "somicage: " << (notice.kind == Notice::Kind::Repair ? "note: " : "warning: ");
+  if (!notice.source.empty()) std::cerr << notice.source << ": ";
+  std::cerr << notice.text << "\n";
 }
 
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath) {
-  const MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(),
-                                                           points, options.floatStorage, options.threads);
+  // Neither command offers another storage.
+  const MemoryEstimate estimate = requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false));
   const std::optional<std::size_t> available = availableMemoryBytes();
-  requireMemory(estimate, available, meshPath, memoryHint(false));  // neither command offers another storage
   // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
   const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
   if (big)
@@ -57,13 +49,5 @@ void requirePrecomputeMemory(const std::string& command, Method method, const Ca
               << formatBytes(estimate.total()) << " in all ("
               << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
 }
-
-void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
-                            const std::string& cagePath) {
-  if (const auto warning = describeMeshPlacement(measureMeshPlacement(cage, points), meshPath, cagePath))
-    std::cerr << "somicage: warning: " << *warning << "\n";
-}
-
-Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim) { return mesh.vertices.leftCols(dim); }
 
 }  // namespace somicage

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "deformer.h"
+#include "engine.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -23,23 +24,14 @@ std::string formatNumber(double value, int digits = 6);
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
-// The cage the commands deform: loadCage, then repairCage (cage_repair.h), then validateCage. Each repair is
-// printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections) as
-// "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
-Cage loadUsableCage(const std::string& path);
+// Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
+// PATH: ..." for a warning. The commands load through the engine facade with it.
+void printNotice(const Notice& notice);
 
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
 // "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath);
-
-// Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
-// (core/mesh_placement.h): different units, usually.
-void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
-                            const std::string& cagePath);
-
-// The points a cage of dimension dim deforms: the mesh's x, y, z (3D) or x, y (2D), #V by dim.
-Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim);
 
 }  // namespace somicage

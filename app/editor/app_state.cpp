@@ -20,19 +20,10 @@ std::vector<Method> AppState::viewMethods() const {
   return {method};
 }
 
-const char* methodDisplayName(Method method) {
-  switch (method) {
-    case Method::Somigliana: return "Somigliana";
-    case Method::Green: return "Green";
-    case Method::MeanValue: return "Mean value";
-  }
-  return "?";
-}
-
 std::string viewLabel(const AppState& state, Method method) {
-  std::string label = methodDisplayName(method);
+  std::string label = method->displayName;
   char buf[160];
-  if (method == Method::Somigliana) {
+  if (method->takesDeformParams) {
     const double nu = state.params.nu;
     char nuText[32];
     if (std::isinf(nu)) {
@@ -319,7 +310,8 @@ void applySession(AppState& state, const Session& s) {
   state.compare = s.compare;
   if (!s.compareMethods.empty()) state.compareMethods = s.compareMethods;
   const bool sameScene = state.scene && !state.loadingScene && state.scene->meshPath == s.meshPath &&
-                         state.scene->cagePath == s.cagePath && (!s.meshPath.empty() || state.scene->dim() == s.demoDim);
+                         state.scene->cagePath == s.cagePath &&
+                         (!s.meshPath.empty() || state.scene->dim() == s.demoDim);
   if (sameScene) {
     recordEdit(state, "Load session");
     if (s.pose.rows() == state.pose.rows() && s.pose.cols() == state.pose.cols()) setPose(state, s.pose);
@@ -383,7 +375,7 @@ void exportDeformedMesh(AppState& state, const std::string& path) {
     topology.faces.reserve(static_cast<std::size_t>(f.rows()));
     for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
     saveObj(path, displayedPoints(state, state.method), topology);
-    state.statusMessage = "exported the deformed mesh (" + std::string(methodDisplayName(state.method)) + ") to " + path;
+    state.statusMessage = "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
   }
@@ -435,8 +427,12 @@ void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
       state.statusMessage = "opening mesh " + plan.mesh + ", cage " + plan.cage +
                             (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
       break;
-    case DropPlan::Kind::Pose: loadPosedCage(state, plan.posed); break;
-    case DropPlan::Kind::Session: loadSessionFile(state, plan.session); break;
+    case DropPlan::Kind::Pose:
+      loadPosedCage(state, plan.posed);
+      break;
+    case DropPlan::Kind::Session:
+      loadSessionFile(state, plan.session);
+      break;
   }
 }
 

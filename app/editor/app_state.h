@@ -31,8 +31,8 @@ struct Interaction {
   Mode mode = Mode::Idle;
   Eigen::Vector2d pressMouse = Eigen::Vector2d::Zero();  // window pixels
   Eigen::Vector2d lastMouse = Eigen::Vector2d::Zero();
-  int view = 0;                                          // viewport the interaction started in
-  std::optional<TransformSession> transform;             // Modal (G/R/S) and HandleDrag
+  int view = 0;                               // viewport the interaction started in
+  std::optional<TransformSession> transform;  // Modal (G/R/S) and HandleDrag
   bool boxAdditive = false;
 };
 
@@ -58,8 +58,8 @@ struct Stats {
 // The per-frame deformation backend and whether the GPU one can run here (set by the frame loop once the GL
 // context exists; the GPU work itself happens in the Renderer, see editor_renderer.h).
 struct BackendState {
-  DeformBackend requested = DeformBackend::Cpu;  // the panel's choice (--backend)
-  bool gpuAvailable = false;                     // OpenGL 4.3 compute shaders work in this context
+  DeformBackend requested = DeformBackend::Cpu;   // the panel's choice (--backend)
+  bool gpuAvailable = false;                      // OpenGL 4.3 compute shaders work in this context
   std::string gpuNote = "no OpenGL context yet";  // why the GPU is unavailable, or a caveat (software renderer)
 };
 
@@ -72,15 +72,15 @@ struct AppState {
   Selection selection;
 
   // ---- method and parameters ----
-  Method method = Method::Somigliana;
+  Method method;  // the registry's first (method.h)
   DeformParams params;
   bool compare = false;
-  std::vector<Method> compareMethods{Method::Somigliana, Method::Green, Method::MeanValue};
+  std::vector<Method> compareMethods = defaultCompareMethods();
 
   // ---- deformation ----
-  DeformerSet deformers;                         // for `scene`
-  std::map<Method, Eigen::MatrixXd> deformed;    // latest deformed points per method
-  std::uint64_t deformGeneration = 0;            // bumps when `deformed` changes (position upload)
+  DeformerSet deformers;                       // for `scene`
+  std::map<Method, Eigen::MatrixXd> deformed;  // latest deformed points per method
+  std::uint64_t deformGeneration = 0;          // bumps when `deformed` changes (position upload)
   bool deformDirty = true;
   BackendState backend;
   // GPU backend: methods whose `deformed` entry is stale (the Renderer deformed them on the GPU); ensureCpuPoints()
@@ -94,8 +94,8 @@ struct AppState {
 
   // ---- background work ----
   PrecomputeWorker worker;
-  bool loadingScene = false;                 // the running request replaces the scene
-  std::optional<Eigen::MatrixXd> pendingPose;   // applied when the loading scene arrives
+  bool loadingScene = false;                   // the running request replaces the scene
+  std::optional<Eigen::MatrixXd> pendingPose;  // applied when the loading scene arrives
   std::optional<CameraState> pendingCamera;
   std::string pendingPosedPath;              // loaded against the new cage when it arrives
   std::optional<RecentEntry> pendingRecent;  // the files being loaded; recorded when they arrive
@@ -123,8 +123,8 @@ struct AppState {
   bool flatShading = false;
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
   bool quitRequested = false;
-  double viewAspect = 1.6;  // width / height of the first viewport, set by the frame loop
-  bool frameRequested = false;  // frame the rest scene once the viewports are known
+  double viewAspect = 1.6;                // width / height of the first viewport, set by the frame loop
+  bool frameRequested = false;            // frame the rest scene once the viewports are known
   std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop
 
   // Methods shown, one per viewport.
@@ -173,7 +173,7 @@ bool hasDeformer(const AppState& state, Method method);
 EditSnapshot snapshot(const AppState& state, const std::string& label);
 void recordEdit(AppState& state, const std::string& label);  // call before changing pose/params
 void setPose(AppState& state, const Eigen::MatrixXd& pose);  // no history; marks dirty
-void resetPose(AppState& state);                              // recorded
+void resetPose(AppState& state);                             // recorded
 void undo(AppState& state);
 void redo(AppState& state);
 void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
@@ -209,6 +209,5 @@ void openRecent(AppState& state, const RecentEntry& entry);
 
 // "Somigliana  nu=0.30 gamma=1.00 global" etc.
 std::string viewLabel(const AppState& state, Method method);
-const char* methodDisplayName(Method method);
 
 }  // namespace somicage::editor

@@ -100,7 +100,8 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Open session...")) openDialog(state, PathDialog::Kind::LoadSession, "session.json");
     if (ImGui::MenuItem("Save session...")) openDialog(state, PathDialog::Kind::SaveSession, "session.json");
     ImGui::Separator();
-    if (ImGui::MenuItem("Screenshot...", "F12")) openDialog(state, PathDialog::Kind::Screenshot, defaultScreenshotName());
+    if (ImGui::MenuItem("Screenshot...", "F12"))
+      openDialog(state, PathDialog::Kind::Screenshot, defaultScreenshotName());
     ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quitRequested = true;
     ImGui::EndMenu();
@@ -147,7 +148,8 @@ void drawControlPanel(AppState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float top = static_cast<float>(menuBarHeight());
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + top));
-  ImGui::SetNextWindowSize(ImVec2(static_cast<float>(kPanelWidth), vp->Size.y - top - static_cast<float>(statusBarHeight())));
+  ImGui::SetNextWindowSize(
+      ImVec2(static_cast<float>(kPanelWidth), vp->Size.y - top - static_cast<float>(statusBarHeight())));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar;
   ImGui::Begin("Controls", nullptr, flags);
@@ -160,26 +162,32 @@ void drawControlPanel(AppState& state) {
   if (ImGui::Button("Open...")) openDialog(state, PathDialog::Kind::OpenFiles, "");
 
   sectionHeader("Method");
-  int method = static_cast<int>(state.method);
-  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)"};
-  if (ImGui::Combo("method", &method, methods, 3)) setMethod(state, static_cast<Method>(method));
+  const std::vector<Method>& all = allMethods();
+  if (ImGui::BeginCombo("method", state.method->displayName)) {
+    for (Method m : all)
+      if (ImGui::Selectable(m->displayName, m == state.method)) setMethod(state, m);
+    ImGui::EndCombo();
+  }
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   if (state.compare) {
-    bool use[3] = {false, false, false};
-    for (Method m : state.compareMethods) use[static_cast<int>(m)] = true;
+    std::vector<bool> use(all.size(), false);
+    for (std::size_t i = 0; i < all.size(); ++i)
+      use[i] =
+          std::find(state.compareMethods.begin(), state.compareMethods.end(), all[i]) != state.compareMethods.end();
     bool changed = false;
-    for (int i = 0; i < 3; ++i) {
+    for (std::size_t i = 0; i < all.size(); ++i) {
       if (i > 0) ImGui::SameLine();
-      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c"};
-      changed |= ImGui::Checkbox(shortNames[i], &use[i]);
+      bool on = use[i];
+      changed |= ImGui::Checkbox((std::string(all[i]->displayName) + "##c").c_str(), &on);
+      use[i] = on;
     }
     if (changed) {
       std::vector<Method> list;
-      for (int i = 0; i < 3; ++i) {
-        if (use[i]) list.push_back(static_cast<Method>(i));
+      for (std::size_t i = 0; i < all.size(); ++i) {
+        if (use[i]) list.push_back(all[i]);
       }
-      if (list.size() >= 2) {
+      if (list.size() >= 2 && list.size() <= kMaxCompareViews) {
         state.compareMethods = list;
         setCompare(state, true);
       }
@@ -229,8 +237,8 @@ void drawControlPanel(AppState& state) {
       p.tractionCorrection != state.params.tractionCorrection) {
     setParams(state, p);
   }
-  if (state.method != Method::Somigliana && !state.compare) {
-    ImGui::TextDisabled("(Green and MVC ignore these)");
+  if (!state.method->takesDeformParams && !state.compare) {
+    ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
   }
 
   sectionHeader("Pose");
@@ -253,7 +261,8 @@ void drawControlPanel(AppState& state) {
   sectionHeader("Deformation backend");
   {
     int backend = static_cast<int>(state.backend.requested);
-    if (ImGui::RadioButton("CPU", backend == static_cast<int>(DeformBackend::Cpu))) setBackend(state, DeformBackend::Cpu);
+    if (ImGui::RadioButton("CPU", backend == static_cast<int>(DeformBackend::Cpu)))
+      setBackend(state, DeformBackend::Cpu);
     ImGui::SameLine();
     if (!state.backend.gpuAvailable) ImGui::BeginDisabled();
     if (ImGui::RadioButton("GPU (compute shader)", backend == static_cast<int>(DeformBackend::Gpu)))
@@ -344,14 +353,29 @@ void drawPathDialog(AppState& state) {
   if (d.kind == PathDialog::Kind::None) return;
   const char* title = "File";
   switch (d.kind) {
-    case PathDialog::Kind::OpenFiles: title = "Open mesh + cage"; break;
-    case PathDialog::Kind::LoadPose: title = "Load posed cage"; break;
-    case PathDialog::Kind::SavePose: title = "Save posed cage"; break;
-    case PathDialog::Kind::ExportMesh: title = "Export deformed mesh"; break;
-    case PathDialog::Kind::SaveSession: title = "Save session"; break;
-    case PathDialog::Kind::LoadSession: title = "Open session"; break;
-    case PathDialog::Kind::Screenshot: title = "Save screenshot"; break;
-    case PathDialog::Kind::None: break;
+    case PathDialog::Kind::OpenFiles:
+      title = "Open mesh + cage";
+      break;
+    case PathDialog::Kind::LoadPose:
+      title = "Load posed cage";
+      break;
+    case PathDialog::Kind::SavePose:
+      title = "Save posed cage";
+      break;
+    case PathDialog::Kind::ExportMesh:
+      title = "Export deformed mesh";
+      break;
+    case PathDialog::Kind::SaveSession:
+      title = "Save session";
+      break;
+    case PathDialog::Kind::LoadSession:
+      title = "Open session";
+      break;
+    case PathDialog::Kind::Screenshot:
+      title = "Save screenshot";
+      break;
+    case PathDialog::Kind::None:
+      break;
   }
   if (d.justOpened) {
     ImGui::OpenPopup(title);
@@ -376,14 +400,29 @@ void drawPathDialog(AppState& state) {
   if (!ok && d.kind == PathDialog::Kind::OpenFiles && drawRecentFiles(state)) cancel = true;  // opened: just close
   if (ok) {
     switch (d.kind) {
-      case PathDialog::Kind::OpenFiles: requestSceneFiles(state, d.mesh, d.cage, d.posed); break;
-      case PathDialog::Kind::LoadPose: loadPosedCage(state, d.path); break;
-      case PathDialog::Kind::SavePose: savePosedCage(state, d.path); break;
-      case PathDialog::Kind::ExportMesh: exportDeformedMesh(state, d.path); break;
-      case PathDialog::Kind::SaveSession: saveSessionFile(state, d.path); break;
-      case PathDialog::Kind::LoadSession: loadSessionFile(state, d.path); break;
-      case PathDialog::Kind::Screenshot: state.screenshotRequest = d.path; break;
-      case PathDialog::Kind::None: break;
+      case PathDialog::Kind::OpenFiles:
+        requestSceneFiles(state, d.mesh, d.cage, d.posed);
+        break;
+      case PathDialog::Kind::LoadPose:
+        loadPosedCage(state, d.path);
+        break;
+      case PathDialog::Kind::SavePose:
+        savePosedCage(state, d.path);
+        break;
+      case PathDialog::Kind::ExportMesh:
+        exportDeformedMesh(state, d.path);
+        break;
+      case PathDialog::Kind::SaveSession:
+        saveSessionFile(state, d.path);
+        break;
+      case PathDialog::Kind::LoadSession:
+        loadSessionFile(state, d.path);
+        break;
+      case PathDialog::Kind::Screenshot:
+        state.screenshotRequest = d.path;
+        break;
+      case PathDialog::Kind::None:
+        break;
     }
   }
   if (ok || cancel) {

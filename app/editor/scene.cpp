@@ -4,9 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "cage_repair.h"
-#include "cage_validation.h"
-#include "mesh_placement.h"
+#include "engine.h"
 #include "obj_io.h"
 
 namespace somicage::editor {
@@ -50,7 +48,6 @@ Scene demo3D() {
   s.meshVertices = v;
   s.meshTriangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
   for (std::size_t f = 0; f < tris.size(); ++f) s.meshTriangles.row(static_cast<Eigen::Index>(f)) = tris[f].transpose();
-  orientOutward(s.meshVertices, s.meshTriangles);
 
   // Cage: square rings of 4 corners at 5 stations along x.
   const int stations = 5;
@@ -77,7 +74,6 @@ Scene demo3D() {
   s.restCage.vertices = cv;
   s.restCage.faces.resize(static_cast<Eigen::Index>(cf.size()), 3);
   for (std::size_t f = 0; f < cf.size(); ++f) s.restCage.faces.row(static_cast<Eigen::Index>(f)) = cf[f].transpose();
-  orientOutward(s.restCage.vertices, s.restCage.faces);
   return s;
 }
 
@@ -107,7 +103,7 @@ Scene demo2D() {
   Eigen::MatrixXd loop(2 * perSide, 2);
   for (int i = 0; i < perSide; ++i) {
     const double x = -cx + 2 * cx * i / (perSide - 1);
-    loop.row(i) << x, -cy;                 // bottom, left to right
+    loop.row(i) << x, -cy;                   // bottom, left to right
     loop.row(2 * perSide - 1 - i) << x, cy;  // top, right to left
   }
   s.restCage = makePolygonCage(loop);
@@ -116,37 +112,20 @@ Scene demo2D() {
 
 }  // namespace
 
-double signedVolume(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles) {
-  double volume = 0.0;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    const Eigen::Vector3d a = vertices.row(triangles(f, 0)).transpose();
-    const Eigen::Vector3d b = vertices.row(triangles(f, 1)).transpose();
-    const Eigen::Vector3d c = vertices.row(triangles(f, 2)).transpose();
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
-
-void orientOutward(const Eigen::MatrixXd& vertices, Eigen::MatrixXi& triangles) {
-  if (vertices.cols() != 3 || triangles.cols() != 3) return;
-  if (signedVolume(vertices, triangles) < 0) triangles.col(1).swap(triangles.col(2));
-}
-
 Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
 
 Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
-  CageRepair repair = repairCage(loadCage(cagePath));
-  const CageReport report = validateCage(repair.cage);
-  requireValidCage(report, cagePath);
-  s.restCage = std::move(repair.cage);
-  for (const std::string& fix : repair.fixes) s.notices.push_back("cage repaired: " + fix);
-  for (const std::string& warning : describeCageWarnings(report)) s.notices.push_back("cage warning: " + warning);
+  // The engine's one order (engine.h); its notices go to the status bar.
+  auto notice = [&](const Notice& n) {
+    const bool cage = n.source == cagePath;
+    s.notices.push_back(std::string(cage ? "cage " : "mesh ") +
+                        (n.kind == Notice::Kind::Repair ? "repaired: " : "warning: ") + n.text);
+  };
+  s.restCage = loadUsableCage(cagePath, notice);
   const PolygonMesh mesh = loadMesh(meshPath);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
-  s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());
-  if (const auto warning = describeMeshPlacement(measureMeshPlacement(s.restCage, s.meshVertices), meshPath, cagePath))
-    s.notices.push_back("mesh warning: " + *warning);
+  s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cagePath, notice);
   s.meshPath = meshPath;
   s.cagePath = cagePath;
   const std::size_t slash = meshPath.find_last_of('/');

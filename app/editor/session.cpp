@@ -1,5 +1,6 @@
 #include "session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -8,6 +9,11 @@
 #include "json.h"
 
 namespace somicage::editor {
+
+std::vector<Method> defaultCompareMethods() {
+  const std::vector<Method>& all = allMethods();
+  return std::vector<Method>(all.begin(), all.begin() + std::min(all.size(), kMaxCompareViews));
+}
 
 namespace {
 
@@ -57,7 +63,7 @@ struct Reader {
     try {
       return parseMethod(name);
     } catch (const InputError&) {
-      fail("unknown method \"" + name + "\" (expected somigliana, green or mvc)");
+      fail("unknown method \"" + name + "\" (expected " + methodNameList() + ")");
     }
   }
   Eigen::Vector3d vec3(const JsonValue& obj, const std::string& key) const {
@@ -128,7 +134,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.pose.resize(static_cast<Eigen::Index>(pose.items().size()), static_cast<Eigen::Index>(cols));
     for (std::size_t i = 0; i < pose.items().size(); ++i) {
       const JsonValue& row = pose.items()[i];
-      if (!row.isArray() || row.items().size() != cols) r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
+      if (!row.isArray() || row.items().size() != cols)
+        r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
       for (std::size_t c = 0; c < cols; ++c) {
         if (!row.items()[c].isNumber()) r.fail("\"pose\" row " + std::to_string(i) + " holds a non-number");
         s.pose(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = row.items()[c].asNumber();

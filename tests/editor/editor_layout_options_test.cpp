@@ -6,6 +6,7 @@
 #include "editor_options.h"
 #include "errors.h"
 #include "layout.h"
+#include "methods/method_descriptors.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -33,13 +34,13 @@ TEST(EditorLayout, TinyWindowsStillGivePositiveSizes) {
 }
 
 TEST(EditorOptions, FilesAndParameters) {
-  const EditorOptions o = parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma",
-                                           "1.5", "--compare", "somigliana,green,mvc", "--screenshot", "out.png",
-                                           "--size", "800x600", "--hide-ui", "--local"});
+  const EditorOptions o =
+      parseEditorArgs({"m.obj", "c.obj", "p.obj", "--method", "green", "--nu", "inf", "--gamma", "1.5", "--compare",
+                       "somigliana,green,mvc", "--screenshot", "out.png", "--size", "800x600", "--hide-ui", "--local"});
   EXPECT_EQ(o.meshPath, "m.obj");
   EXPECT_EQ(o.cagePath, "c.obj");
   EXPECT_EQ(o.posedPath, "p.obj");
-  EXPECT_EQ(*o.method, Method::Green);
+  EXPECT_EQ(*o.method, methods::green());
   EXPECT_TRUE(std::isinf(*o.nu));
   EXPECT_EQ(*o.gamma, 1.5);
   EXPECT_EQ(*o.blend, 1.0);

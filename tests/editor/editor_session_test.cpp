@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "json.h"
+#include "methods/method_descriptors.h"
 #include "session.h"
 
 using namespace somicage;
@@ -19,13 +20,13 @@ Session sample() {
   s.cagePath = "/models/cage.obj";
   s.pose.resize(3, 3);
   s.pose << 0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-7, 1e8, 4, 5, 6;
-  s.method = Method::Green;
+  s.method = methods::green();
   s.params.nu = -std::numeric_limits<double>::infinity();
   s.params.gamma = 2.25;
   s.params.blend = 0.125;
   s.params.tractionCorrection = false;
   s.compare = true;
-  s.compareMethods = {Method::Somigliana, Method::MeanValue};
+  s.compareMethods = {methods::somigliana(), methods::mvc()};
   s.camera.target = Eigen::Vector3d(0.1, -0.2, 0.3);
   s.camera.distance = 7.5;
   s.camera.yaw = -1.25;
