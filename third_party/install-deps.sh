@@ -9,6 +9,7 @@ packages=(
   libeigen3-dev libgtest-dev  # core and tests
   libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor
   xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
+  xdotool imagemagick  # the GUI input tests: real X key and mouse events, screenshots of the screen
   clang libclang-rt-dev libomp-dev  # the libFuzzer targets: clang, its fuzzer/sanitizer runtimes, OpenMP for clang
 )
 

@@ -108,7 +108,6 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     state.cpuStale.clear();
     state.pose = state.scene->restCage.vertices;
     state.selection.resize(state.scene->restCage.numVertices());
-    state.history.clear();
     state.interaction = Interaction{};
     state.camera.setMode2D(state.scene->dim() == 2);
     frameRest(state);
@@ -135,6 +134,20 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
       }
       state.pendingPosedPath.clear();
     }
+    // The new document's history: the state as opened, then the posed cage loaded with it (undoable, like any
+    // "Load posed cage"). Opening loses nothing, so it starts clean, except a crashed run's restored autosave,
+    // which exists nowhere else.
+    const Document opened = currentDocument(state);
+    if (posedLoaded) state.pose = state.scene->restCage.vertices;
+    state.history.reset(currentDocument(state), "Open " + state.scene->name, !state.pendingRestored);
+    if (posedLoaded) {
+      state.pose = opened.pose;
+      commitEdit(state, "Load posed cage");
+      if (!state.pendingRestored) state.history.markSaved();
+    }
+    state.documentPath = state.pendingDocumentPath.value_or("");
+    state.pendingDocumentPath.reset();
+    state.pendingRestored = false;
     ++state.poseGeneration;
     state.statusMessage = "loaded " + state.scene->name;
     for (const std::string& notice : state.scene->notices) state.statusMessage += "; " + notice;
@@ -220,9 +233,24 @@ const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
 
 // ---- edits ----
 
-EditSnapshot snapshot(const AppState& state, const std::string& label) { return {state.pose, state.params, label}; }
+Document currentDocument(const AppState& state) { return {state.pose, state.method, state.params}; }
 
-void recordEdit(AppState& state, const std::string& label) { state.history.record(snapshot(state, label)); }
+void applyDocument(AppState& state, const Document& document) {
+  if (document.pose.rows() == state.pose.rows() && document.pose.cols() == state.pose.cols())
+    setPose(state, document.pose);
+  setParams(state, document.params);
+  if (document.method != state.method) setMethod(state, document.method);
+}
+
+bool commitEdit(AppState& state, const std::string& name) {
+  if (!state.scene) return false;
+  const bool added = state.history.commit(name, currentDocument(state));
+  if (added && state.logActions) {
+    std::printf("step %s\n", name.c_str());
+    std::fflush(stdout);
+  }
+  return added;
+}
 
 void setPose(AppState& state, const Eigen::MatrixXd& pose) {
   state.pose = pose;
@@ -232,8 +260,8 @@ void setPose(AppState& state, const Eigen::MatrixXd& pose) {
 
 void resetPose(AppState& state) {
   if (!state.scene) return;
-  recordEdit(state, "Reset pose");
   setPose(state, state.scene->restCage.vertices);
+  state.statusMessage = commitEdit(state, "Reset pose") ? "reset the pose" : "the pose is at rest already";
 }
 
 void setParams(AppState& state, const DeformParams& params) {
@@ -242,28 +270,52 @@ void setParams(AppState& state, const DeformParams& params) {
 }
 
 void undo(AppState& state) {
-  if (!state.history.canUndo()) return;
-  const EditSnapshot s = state.history.undo(snapshot(state, ""));
-  state.statusMessage = "undo " + s.label;
-  setPose(state, s.pose);
-  setParams(state, s.params);
+  if (!state.history.canUndo()) {
+    state.statusMessage = "nothing to undo";
+    return;
+  }
+  const std::string name = state.history.step(state.history.cursor()).name;
+  applyDocument(state, state.history.undo());
+  state.statusMessage = "undo " + name;
 }
 
 void redo(AppState& state) {
-  if (!state.history.canRedo()) return;
-  const EditSnapshot s = state.history.redo(snapshot(state, ""));
-  state.statusMessage = "redo " + state.history.nextUndoLabel();
-  setPose(state, s.pose);
-  setParams(state, s.params);
+  if (!state.history.canRedo()) {
+    state.statusMessage = "nothing to redo";
+    return;
+  }
+  applyDocument(state, state.history.redo());
+  state.statusMessage = "redo " + state.history.step(state.history.cursor()).name;
+}
+
+void jumpToStep(AppState& state, std::size_t step) {
+  if (step >= state.history.size() || step == state.history.cursor()) return;
+  applyDocument(state, state.history.jumpTo(step));
+  state.statusMessage = "history: back at \"" + state.history.step(step).name + "\"";
+}
+
+bool hasUnsavedChanges(const AppState& state) { return state.history.unsaved(); }
+
+std::string documentName(const AppState& state) {
+  if (!state.documentPath.empty()) return std::filesystem::path(state.documentPath).stem().string();
+  return state.scene ? state.scene->name : "";
+}
+
+std::string windowTitle(const AppState& state) {
+  const std::string name = documentName(state);
+  if (name.empty()) return "SomiCage";
+  return name + (hasUnsavedChanges(state) ? "*" : "") + " - SomiCage";
 }
 
 void setMethod(AppState& state, Method method) {
+  if (state.method == method) return;
   state.method = method;
   state.deformDirty = true;
   ensureDeformers(state);
 }
 
 void setCompare(AppState& state, bool on) {
+  if (on && !state.compare) state.frameRequested = true;  // narrower views: frame everything again
   state.compare = on;
   state.deformDirty = true;
   ensureDeformers(state);
@@ -313,8 +365,8 @@ void applySession(AppState& state, const Session& s) {
                          state.scene->cagePath == s.cagePath &&
                          (!s.meshPath.empty() || state.scene->dim() == s.demoDim);
   if (sameScene) {
-    recordEdit(state, "Load session");
     if (s.pose.rows() == state.pose.rows() && s.pose.cols() == state.pose.cols()) setPose(state, s.pose);
+    commitEdit(state, "Load session");
     state.camera.setState(s.camera);
     state.deformDirty = true;
     ensureDeformers(state);
@@ -332,42 +384,48 @@ void applySession(AppState& state, const Session& s) {
 
 void acceptRestoreOffer(AppState& state) {
   if (!state.restoreOffer) return;
+  state.pendingRestored = true;
   applySession(state, *state.restoreOffer);
+  if (!state.loadingScene) state.pendingRestored = false;
   state.statusMessage = "restored the session from " + state.restoreOfferTime;
   state.restoreOffer.reset();
 }
 
 void discardRestoreOffer(AppState& state) { state.restoreOffer.reset(); }
 
-void savePosedCage(AppState& state, const std::string& path) {
-  if (!state.scene) return;
+bool savePosedCage(AppState& state, const std::string& path) {
+  if (!state.scene) return false;
   try {
     Cage posed = state.scene->restCage;
     posed.vertices = state.pose;
     saveObj(path, state.pose, cageTopology(posed));
     state.statusMessage = "saved posed cage " + path;
+    return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
+    return false;
   }
 }
 
-void loadPosedCage(AppState& state, const std::string& path) {
-  if (!state.scene) return;
+bool loadPosedCage(AppState& state, const std::string& path) {
+  if (!state.scene) return false;
   try {
     const Eigen::MatrixXd pose = loadPosedVertices(path, state.scene->restCage);
-    recordEdit(state, "Load pose");
     setPose(state, pose);
+    commitEdit(state, "Load posed cage");
     state.statusMessage = "loaded pose " + path;
     if (!state.scene->isDemo()) {
       noteRecent(state, RecentEntry::files(state.scene->meshPath, state.scene->cagePath, path));
     }
+    return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
+    return false;
   }
 }
 
-void exportDeformedMesh(AppState& state, const std::string& path) {
-  if (!state.scene) return;
+bool exportDeformedMesh(AppState& state, const std::string& path) {
+  if (!state.scene) return false;
   ensureCpuPoints(state, state.method);
   try {
     PolygonMesh topology;
@@ -375,28 +433,45 @@ void exportDeformedMesh(AppState& state, const std::string& path) {
     topology.faces.reserve(static_cast<std::size_t>(f.rows()));
     for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
     saveObj(path, displayedPoints(state, state.method), topology);
-    state.statusMessage = "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
+    state.statusMessage =
+        "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
+    return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
+    return false;
   }
 }
 
-void saveSessionFile(AppState& state, const std::string& path) {
+bool saveSessionFile(AppState& state, const std::string& path) {
   try {
     saveSession(path, makeSession(state));
+    state.documentPath = path;
+    state.history.markSaved();
     state.statusMessage = "saved session " + path;
+    return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());
+    return false;
   }
 }
 
-void loadSessionFile(AppState& state, const std::string& path) {
+bool loadSessionFile(AppState& state, const std::string& path) {
   try {
-    applySession(state, loadSession(path));
+    const Session session = loadSession(path);
+    state.pendingDocumentPath = path;
+    applySession(state, session);
+    if (state.pendingDocumentPath && !state.loadingScene) {  // the same scene: applied at once, as an edit
+      state.documentPath = path;
+      state.pendingDocumentPath.reset();
+      state.history.markSaved();
+    }
     state.statusMessage = "opened session " + path;
     noteRecent(state, RecentEntry::sessionFile(path));
+    return true;
   } catch (const std::exception& e) {
+    state.pendingDocumentPath.reset();
     state.errors.push_back(e.what());
+    return false;
   }
 }
 
@@ -423,15 +498,17 @@ void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
       state.dialog.mesh = plan.mesh;  // the Open panel shows what was dropped
       state.dialog.cage = plan.cage;
       state.dialog.posed = plan.posed;
-      requestSceneFiles(state, plan.mesh, plan.cage, plan.posed);
-      state.statusMessage = "opening mesh " + plan.mesh + ", cage " + plan.cage +
-                            (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
+      guardUnsaved(state, "open " + plan.mesh, [plan](AppState& s) {
+        requestSceneFiles(s, plan.mesh, plan.cage, plan.posed);
+        s.statusMessage = "opening mesh " + plan.mesh + ", cage " + plan.cage +
+                          (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
+      });
       break;
     case DropPlan::Kind::Pose:
       loadPosedCage(state, plan.posed);
       break;
     case DropPlan::Kind::Session:
-      loadSessionFile(state, plan.session);
+      guardUnsaved(state, "open " + plan.session, [plan](AppState& s) { loadSessionFile(s, plan.session); });
       break;
   }
 }
@@ -452,14 +529,16 @@ void noteRecent(AppState& state, RecentEntry entry) {
 }
 
 void openRecent(AppState& state, const RecentEntry& entry) {
-  if (entry.kind == RecentEntry::Kind::Session) {
-    loadSessionFile(state, entry.session);
-    return;
-  }
-  state.dialog.mesh = entry.mesh;
-  state.dialog.cage = entry.cage;
-  state.dialog.posed = entry.posed;
-  requestSceneFiles(state, entry.mesh, entry.cage, entry.posed);
+  guardUnsaved(state, "open " + entry.label(), [entry](AppState& s) {
+    if (entry.kind == RecentEntry::Kind::Session) {
+      loadSessionFile(s, entry.session);
+      return;
+    }
+    s.dialog.mesh = entry.mesh;
+    s.dialog.cage = entry.cage;
+    s.dialog.posed = entry.posed;
+    requestSceneFiles(s, entry.mesh, entry.cage, entry.posed);
+  });
 }
 
 }  // namespace somicage::editor

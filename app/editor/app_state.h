@@ -14,7 +14,10 @@
 
 #include "camera.h"
 #include "deformer.h"
+#include "document.h"
 #include "editor_options.h"
+#include "element_pick.h"
+#include "file_dialog.h"
 #include "history.h"
 #include "precompute_worker.h"
 #include "recent_files.h"
@@ -22,6 +25,7 @@
 #include "selection.h"
 #include "session.h"
 #include "transform.h"
+#include "unsaved_changes.h"
 
 namespace somicage::editor {
 
@@ -34,15 +38,6 @@ struct Interaction {
   int view = 0;                               // viewport the interaction started in
   std::optional<TransformSession> transform;  // Modal (G/R/S) and HandleDrag
   bool boxAdditive = false;
-};
-
-// The path prompts of the File menu (plain text fields: no native file dialogs).
-struct PathDialog {
-  enum class Kind { None, OpenFiles, LoadPose, SavePose, ExportMesh, SaveSession, LoadSession, Screenshot };
-  Kind kind = Kind::None;
-  bool justOpened = false;
-  std::string mesh, cage, posed;  // OpenFiles
-  std::string path;               // every other kind
 };
 
 struct Stats {
@@ -70,6 +65,7 @@ struct AppState {
   Eigen::MatrixXd pose;               // #V by d posed cage
   std::uint64_t poseGeneration = 0;   // bumps when pose or selection changes (cage upload)
   Selection selection;
+  ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
 
   // ---- method and parameters ----
   Method method;  // the registry's first (method.h)
@@ -87,8 +83,12 @@ struct AppState {
   // computes them on the CPU when something needs the numbers (framing, export).
   std::vector<Method> cpuStale;
 
-  // ---- editing ----
-  UndoHistory history;
+  // ---- editing (document.h: what undo restores) ----
+  History history;
+  std::string documentPath;                        // the session file the document was opened from or saved to; "" none
+  std::optional<std::string> pendingDocumentPath;  // the session being opened (the scene loads on the worker)
+  bool pendingRestored = false;  // the loading scene is a crashed run's autosave: unsaved from the start
+  UnsavedPrompt unsaved;
   OrbitCamera camera;
   Interaction interaction;
 
@@ -115,16 +115,19 @@ struct AppState {
   std::string glRenderer;           // for the status bar
 
   // ---- UI flags and requests handled by the frame loop ----
-  PathDialog dialog;
+  FileDialogState dialog;
+  bool showHistoryPanel = false;
+  bool showShortcuts = false;  // F1
   bool hideUi = false;
   bool showCage = true;
   bool showMesh = true;
   int wireframe = -1;  // -1: automatic (on in 2D), 0 off, 1 on
   bool flatShading = false;
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
-  bool quitRequested = false;
-  double viewAspect = 1.6;                // width / height of the first viewport, set by the frame loop
-  bool frameRequested = false;            // frame the rest scene once the viewports are known
+  bool quitRequested = false;     // set by the (guarded) quit command; the frame loop ends, then the autosave goes
+  bool logActions = false;        // --log-actions: keyboard commands are printed to stdout
+  double viewAspect = 1.6;        // width / height of the first viewport, set by the frame loop
+  bool frameRequested = false;    // frame the rest scene once the viewports are known
   std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop
 
   // Methods shown, one per viewport.
@@ -169,15 +172,25 @@ const char* backendDisplayName(DeformBackend backend);
 const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method);
 bool hasDeformer(const AppState& state, Method method);
 
-// Edits, each recorded for undo.
-EditSnapshot snapshot(const AppState& state, const std::string& label);
-void recordEdit(AppState& state, const std::string& label);  // call before changing pose/params
-void setPose(AppState& state, const Eigen::MatrixXd& pose);  // no history; marks dirty
-void resetPose(AppState& state);                             // recorded
+// ---- edits (history.h) ----
+// A command changes the document (setPose / setParams / setMethod, which record nothing) and then commits it:
+// commitEdit names the new state as one undo step (none when nothing changed). Live edits (a drag, a slider)
+// commit once, when they end.
+Document currentDocument(const AppState& state);
+void applyDocument(AppState& state, const Document& document);  // restores exactly; no history
+bool commitEdit(AppState& state, const std::string& name);
+void setPose(AppState& state, const Eigen::MatrixXd& pose);   // no history; marks dirty
+void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
+void setMethod(AppState& state, Method method);               // no history
+void resetPose(AppState& state);                              // committed: "Reset pose"
 void undo(AppState& state);
 void redo(AppState& state);
-void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
-void setMethod(AppState& state, Method method);
+void jumpToStep(AppState& state, std::size_t step);  // the Undo History panel
+// Unsaved changes: the document differs from its saved (or freshly opened) state.
+bool hasUnsavedChanges(const AppState& state);
+// "my_session" (the session file's name) or the scene's name; the window title adds "*" when unsaved.
+std::string documentName(const AppState& state);
+std::string windowTitle(const AppState& state);
 void setCompare(AppState& state, bool on);
 
 // Frames the current pose and the displayed mesh (F); frameRest frames the rest cage and mesh.
@@ -187,11 +200,12 @@ void frameRest(AppState& state);
 // Sessions and files (errors go to state.errors, never thrown).
 Session makeSession(const AppState& state);
 void applySession(AppState& state, const Session& session);
-void savePosedCage(AppState& state, const std::string& path);
-void loadPosedCage(AppState& state, const std::string& path);
-void exportDeformedMesh(AppState& state, const std::string& path);
-void saveSessionFile(AppState& state, const std::string& path);
-void loadSessionFile(AppState& state, const std::string& path);
+// Each returns true on success. They write where they are told: the dialogs check the paths (file_dialog.h).
+bool savePosedCage(AppState& state, const std::string& path);
+bool loadPosedCage(AppState& state, const std::string& path);  // committed: "Load posed cage"
+bool exportDeformedMesh(AppState& state, const std::string& path);
+bool saveSessionFile(AppState& state, const std::string& path);  // marks the document saved
+bool loadSessionFile(AppState& state, const std::string& path);
 
 // Crash recovery: applies state.restoreOffer (the Restore button, --restore-autosave) or drops it (Discard).
 void acceptRestoreOffer(AppState& state);

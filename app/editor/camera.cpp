@@ -25,9 +25,7 @@ Eigen::Vector3d OrbitCamera::forward() const {
 
 Eigen::Vector3d OrbitCamera::eye() const { return state_.target - state_.distance * forward(); }
 
-Eigen::Vector3d OrbitCamera::right() const {
-  return Eigen::Vector3d(std::cos(state_.yaw), 0.0, -std::sin(state_.yaw));
-}
+Eigen::Vector3d OrbitCamera::right() const { return Eigen::Vector3d(std::cos(state_.yaw), 0.0, -std::sin(state_.yaw)); }
 
 Eigen::Vector3d OrbitCamera::up() const { return right().cross(forward()); }
 

@@ -12,6 +12,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "app_state.h"
@@ -19,6 +20,8 @@
 #include "editor_options.h"
 #include "editor_renderer.h"
 #include "errors.h"
+#include "event_queue.h"
+#include "frame_pacing.h"
 #include "gl_context.h"
 #include "gpu_deformer.h"
 #include "input.h"
@@ -72,26 +75,102 @@ void chooseBackend(AppState& state, const EditorOptions& options) {
     std::fprintf(stderr, "somicage: --backend gpu: %s; deforming on the CPU\n", reason.c_str());
 }
 
-// GLFW 3.3 drop callback: queues the paths (the window user pointer is the AppState); the frame loop opens them.
+// What the GLFW callbacks reach through the window user pointer: the state (drops), the input queue, and whether
+// anything happened since the last frame. Lives inside runWindow's state block; the callbacks are removed before
+// it goes.
+struct WindowLink {
+  AppState* state = nullptr;
+  InputEventQueue queue;
+  bool activity = true;
+};
+
+WindowLink* link(GLFWwindow* window) { return static_cast<WindowLink*>(glfwGetWindowUserPointer(window)); }
+
+// ImGui's backend is initialised without its callbacks: these queue the input (event_queue.h) and forward the
+// rest at once, chained the way ImGui_ImplGlfw_InitForOpenGL(window, true) would.
+void keyCallback(GLFWwindow* w, int key, int scancode, int action, int mods) {
+  if (WindowLink* l = link(w)) l->queue.push(InputEvent::key(key, scancode, action, mods));
+}
+void charCallback(GLFWwindow* w, unsigned codepoint) {
+  if (WindowLink* l = link(w)) l->queue.push(InputEvent::character(codepoint));
+}
+void mouseButtonCallback(GLFWwindow* w, int button, int action, int mods) {
+  if (WindowLink* l = link(w)) l->queue.push(InputEvent::mouseButton(button, action, mods));
+}
+void scrollCallback(GLFWwindow* w, double dx, double dy) {
+  if (WindowLink* l = link(w)) l->queue.push(InputEvent::scroll(dx, dy));
+}
+void noteActivity(GLFWwindow* w) {
+  if (WindowLink* l = link(w)) l->activity = true;
+}
+void focusCallback(GLFWwindow* w, int focused) {
+  ImGui_ImplGlfw_WindowFocusCallback(w, focused);
+  noteActivity(w);
+}
+void cursorEnterCallback(GLFWwindow* w, int entered) {
+  ImGui_ImplGlfw_CursorEnterCallback(w, entered);
+  noteActivity(w);
+}
+void cursorPosCallback(GLFWwindow* w, double, double) { noteActivity(w); }  // ImGui 1.86 polls the position
+void sizeCallback(GLFWwindow* w, int, int) { noteActivity(w); }
+void refreshCallback(GLFWwindow* w) { noteActivity(w); }
+
+// GLFW 3.3 drop callback: queues the paths; the frame loop opens them.
 void dropCallback(GLFWwindow* window, int count, const char** paths) {
-  auto* state = static_cast<AppState*>(glfwGetWindowUserPointer(window));
-  if (!state) return;
+  WindowLink* l = link(window);
+  if (!l || !l->state) return;
   std::vector<std::string> dropped;
   for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
-  state->droppedPaths = std::move(dropped);  // one drop per event; a newer one replaces an unhandled one
+  l->state->droppedPaths = std::move(dropped);  // one drop per event; a newer one replaces an unhandled one
+  l->activity = true;
+}
+
+void installCallbacks(GLFWwindow* window, WindowLink* windowLink) {
+  glfwSetWindowUserPointer(window, windowLink);
+  glfwSetKeyCallback(window, windowLink ? keyCallback : nullptr);
+  glfwSetCharCallback(window, windowLink ? charCallback : nullptr);
+  glfwSetMouseButtonCallback(window, windowLink ? mouseButtonCallback : nullptr);
+  glfwSetScrollCallback(window, windowLink ? scrollCallback : nullptr);
+  glfwSetWindowFocusCallback(window, windowLink ? focusCallback : nullptr);
+  glfwSetCursorEnterCallback(window, windowLink ? cursorEnterCallback : nullptr);
+  glfwSetCursorPosCallback(window, windowLink ? cursorPosCallback : nullptr);
+  glfwSetWindowSizeCallback(window, windowLink ? sizeCallback : nullptr);
+  glfwSetWindowRefreshCallback(window, windowLink ? refreshCallback : nullptr);
+  glfwSetDropCallback(window, windowLink ? dropCallback : nullptr);
+}
+
+// Hands this frame's share of the queued input to ImGui's backend, in order.
+void feedInput(GLFWwindow* window, InputEventQueue& queue) {
+  for (const InputEvent& e : queue.takeFrame(ImGui::GetIO().WantTextInput)) {
+    switch (e.type) {
+      case InputEvent::Type::Key:
+        ImGui_ImplGlfw_KeyCallback(window, e.code, e.scancode, e.action, e.mods);
+        break;
+      case InputEvent::Type::Char:
+        ImGui_ImplGlfw_CharCallback(window, static_cast<unsigned>(e.code));
+        break;
+      case InputEvent::Type::MouseButton:
+        ImGui_ImplGlfw_MouseButtonCallback(window, e.code, e.action, e.mods);
+        break;
+      case InputEvent::Type::Scroll:
+        ImGui_ImplGlfw_ScrollCallback(window, e.dx, e.dy);
+        break;
+    }
+  }
 }
 
 void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) {
-  const std::string title = state.scene ? "SomiCage - " + state.scene->name : "SomiCage";
+  const std::string title = windowTitle(state);
   if (title != shown) {
     glfwSetWindowTitle(window, title.c_str());
     shown = title;
   }
 }
 
-// One frame: events, worker results, UI, deformation, drawing, optional screenshot, swap.
-void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title) {
-  glfwPollEvents();
+// One frame: queued input, worker results, UI, deformation, drawing, optional screenshot, swap. Events are
+// polled (or waited for) by the caller.
+void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
+  feedInput(window, queue);
   pollWorker(state);
   if (!state.droppedPaths.empty()) {
     std::vector<std::string> dropped;
@@ -105,27 +184,29 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   const ImGuiIO& io = ImGui::GetIO();
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
-  const double left = state.hideUi ? 0.0 : kPanelWidth;
+  const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
   const double bottom = state.hideUi ? 0.0 : statusBarHeight();
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
-  if (state.frameRequested) {
-    frameRest(state);
-    state.frameRequested = false;
-  }
   if (!state.hideUi) {
     drawMainMenu(state);
     drawControlPanel(state);
     drawStatusBar(state);
     drawViewLabels(state, views);
-    drawPathDialog(state);
+    drawHistoryPanel(state);
+    drawShortcutSheet(state);
+    drawFileDialog(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
+  drawUnsavedModal(state);
   handleInput(state, views);
-
   updateDeformation(state);
+  if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
+    frameAll(state);
+    state.frameRequested = false;
+  }
   renderer.sync(state);
   ImGui::Render();
 
@@ -147,6 +228,12 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   glfwSwapBuffers(window);
   updateTitle(window, state, title);
+}
+
+// Anything that needs frames without new input.
+bool changing(const AppState& state) {
+  return state.deformDirty || !state.screenshotRequest.empty() || !state.droppedPaths.empty() || state.frameRequested ||
+         state.interaction.mode != Interaction::Mode::Idle;
 }
 
 // Writes the session when the interval has passed and it changed; not while a scene loads (the pose would not match
@@ -196,8 +283,9 @@ int runWindow(const EditorOptions& options) {
   glfwSetErrorCallback(glfwErrorCallback);
   if (!window) window = createWindow(3);
   if (!window) {
-    std::fprintf(stderr, "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
-                         "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
+    std::fprintf(stderr,
+                 "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
+                 "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
     glfwTerminate();
     return 1;
   }
@@ -222,7 +310,7 @@ int runWindow(const EditorOptions& options) {
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
   ImGui::StyleColorsDark();
   ImGui::GetStyle().WindowRounding = 0.0f;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplGlfw_InitForOpenGL(window, false);  // our callbacks queue the input (installCallbacks)
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   try {
@@ -237,9 +325,11 @@ int runWindow(const EditorOptions& options) {
       state.recentPath = recentFilesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
       state.recent = loadRecentFiles(state.recentPath);
     }
-    // Events are polled only inside this block (frame()), so the pointer never outlives `state`.
-    glfwSetWindowUserPointer(window, &state);
-    glfwSetDropCallback(window, dropCallback);
+    state.logActions = options.logActions;
+    // Events are polled only inside this block, so the pointer never outlives `state`.
+    WindowLink windowLink;
+    windowLink.state = &state;
+    installCallbacks(window, &windowLink);
     // Crash safety (autosave.h): interactive runs autosave and offer a crashed run's session; a --screenshot run
     // only reads one when asked to restore it, and never writes the user's files.
     std::optional<Autosave> autosave;
@@ -278,7 +368,7 @@ int runWindow(const EditorOptions& options) {
         // A few frames let ImGui settle its layout before the capture.
         for (int i = 0; i < 4; ++i) {
           if (i == 3) state.screenshotRequest = options.screenshotPath;
-          frame(window, state, renderer, title);
+          frame(window, state, renderer, title, windowLink.queue);
         }
         if (!state.errors.empty()) {
           for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
@@ -289,24 +379,42 @@ int runWindow(const EditorOptions& options) {
         }
       }
     } else {
+      FramePacer pacer;
       auto last = std::chrono::steady_clock::now();
-      while (!glfwWindowShouldClose(window) && !state.quitRequested) {
-        frame(window, state, renderer, title);
+      while (!state.quitRequested) {
+        FrameDemand demand;
+        demand.queued = !windowLink.queue.empty();
+        demand.busy = state.worker.busy() || state.loadingScene;
+        demand.changing = changing(state);
+        const double wait = pacer.waitSeconds(demand);
+        wait > 0 ? glfwWaitEventsTimeout(wait) : glfwPollEvents();
+        if (glfwWindowShouldClose(window)) {  // the window's close button asks like Ctrl+Q
+          glfwSetWindowShouldClose(window, GLFW_FALSE);
+          requestQuit(state);
+          windowLink.activity = true;
+        }
+        demand.input = windowLink.activity;
+        demand.queued = !windowLink.queue.empty();
+        windowLink.activity = false;
+        if (pacer.shouldDraw(demand)) {
+          frame(window, state, renderer, title, windowLink.queue);
+          if (options.frameDelayMs > 0) std::this_thread::sleep_for(std::chrono::milliseconds(options.frameDelayMs));
+          const auto now = std::chrono::steady_clock::now();
+          const double dt = std::chrono::duration<double>(now - last).count();
+          last = now;
+          if (dt > 0 && dt < 1.0) state.stats.fps = state.stats.fps > 0 ? 0.9 * state.stats.fps + 0.1 / dt : 1.0 / dt;
+        }
         if (autosave) autosaveTick(*autosave, state);
-        const auto now = std::chrono::steady_clock::now();
-        const double dt = std::chrono::duration<double>(now - last).count();
-        last = now;
-        if (dt > 0) state.stats.fps = state.stats.fps > 0 ? 0.9 * state.stats.fps + 0.1 / dt : 1.0 / dt;
       }
       state.worker.cancel();
-      if (autosave) autosave->finish();  // a clean exit: nothing to restore next time
+      // The user chose to quit (and answered the unsaved-changes question): only now the autosave goes.
+      if (autosave) autosave->finish();
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
     rc = 1;
   }
-  glfwSetDropCallback(window, nullptr);  // `state` is gone
-  glfwSetWindowUserPointer(window, nullptr);
+  installCallbacks(window, nullptr);  // `state` and the queue are gone
 
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

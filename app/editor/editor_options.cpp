@@ -90,6 +90,14 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.hideUi = true;
     } else if (a == "--restore-autosave") {
       o.restoreAutosave = true;
+    } else if (a == "--frame-delay") {
+      const std::string& v = value();
+      const double ms = parseNumber(v, a);
+      if (!(ms >= 0 && ms <= 10000))
+        throw InputError(a, -1, "expected milliseconds in [0, 10000], got '" + v + "'", "--frame-delay 150");
+      o.frameDelayMs = static_cast<int>(ms);
+    } else if (a == "--log-actions") {
+      o.logActions = true;
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -149,7 +157,13 @@ std::string editorUsage() {
          "  --flat                    faceted shading instead of smooth\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
-         "                            (default: gpu on a hardware GPU, cpu otherwise)\n";
+         "                            (default: gpu on a hardware GPU, cpu otherwise)\n"
+         "  --frame-delay MS          testing: make every frame MS slower (tries input at low frame rates)\n"
+         "  --log-actions             print each keyboard command, undo step and dialog to stdout (testing)\n"
+         "  -h, --help                this list\n"
+         "\n"
+         "In the editor: F1 lists the shortcuts. Ctrl+S saves the session, Ctrl+Z / Ctrl+Shift+Z undo / redo,\n"
+         "Edit > Undo History jumps to any step.\n";
 }
 
 }  // namespace somicage::editor

@@ -23,10 +23,12 @@ struct EditorOptions {
   std::vector<Method> compare;                // --compare a,b[,c]; empty = one view
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH
-  bool flatShading = false;                  // --flat: faceted shading
+  bool flatShading = false;                   // --flat: faceted shading
   bool hideUi = false;                        // --hide-ui: only the viewports (for clean screenshots)
   std::optional<DeformBackend> backend;       // --backend cpu|gpu; default: GPU on a hardware GPU, else CPU
   bool restoreAutosave = false;               // --restore-autosave: restore a crashed session without asking
+  int frameDelayMs = 0;                       // --frame-delay MS: testing, every frame MS slower (low frame rates)
+  bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
   bool help = false;                          // -h / --help
 };
 

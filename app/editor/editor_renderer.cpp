@@ -126,7 +126,8 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
     rect.x = static_cast<int>(std::lround(r.x * framebufferScale));
     rect.width = std::max(1, static_cast<int>(std::lround(r.width * framebufferScale)));
     rect.height = std::max(1, static_cast<int>(std::lround(r.height * framebufferScale)));
-    rect.y = framebufferHeight - static_cast<int>(std::lround(r.y * framebufferScale)) - rect.height;  // GL: bottom-left
+    rect.y =
+        framebufferHeight - static_cast<int>(std::lround(r.y * framebufferScale)) - rect.height;  // GL: bottom-left
     render::beginViewport(rect, &kViewBackground);
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
     if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);

@@ -4,31 +4,37 @@
 
 namespace somicage::editor {
 
-void UndoHistory::record(EditSnapshot before) {
-  undo_.push_back(std::move(before));
-  while (undo_.size() > capacity_) undo_.pop_front();
-  redo_.clear();
+void History::reset(Document original, std::string name, bool clean) {
+  steps_.clear();
+  steps_.push_back({std::move(name), std::move(original)});
+  cursor_ = 0;
+  saved_.reset();
+  if (clean) saved_ = 0;
 }
 
-EditSnapshot UndoHistory::undo(EditSnapshot current) {
-  EditSnapshot previous = std::move(undo_.back());
-  undo_.pop_back();
-  current.label = previous.label;
-  redo_.push_back(std::move(current));
-  return previous;
+bool History::commit(const std::string& name, Document after) {
+  if (steps_.empty()) {
+    reset(std::move(after), name, true);
+    return false;
+  }
+  if (after == steps_[cursor_].state) return false;
+  steps_.resize(cursor_ + 1);  // the redo steps go
+  if (saved_ && *saved_ > cursor_) saved_.reset();
+  steps_.push_back({name, std::move(after)});
+  ++cursor_;
+  if (steps_.size() > capacity_) {
+    steps_.erase(steps_.begin());
+    --cursor_;
+    if (saved_) saved_ = *saved_ == 0 ? std::optional<std::size_t>() : std::optional<std::size_t>(*saved_ - 1);
+  }
+  return true;
 }
 
-EditSnapshot UndoHistory::redo(EditSnapshot current) {
-  EditSnapshot next = std::move(redo_.back());
-  redo_.pop_back();
-  current.label = next.label;
-  undo_.push_back(std::move(current));
-  return next;
-}
-
-void UndoHistory::clear() {
-  undo_.clear();
-  redo_.clear();
+const Document& History::undo() { return steps_[--cursor_].state; }
+const Document& History::redo() { return steps_[++cursor_].state; }
+const Document& History::jumpTo(std::size_t index) {
+  cursor_ = index;
+  return steps_[cursor_].state;
 }
 
 }  // namespace somicage::editor

@@ -4,14 +4,19 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "screenshot.h"
+#include <algorithm>
+#include <cstdio>
+
+#include "gizmo.h"
+#include "pose_clear.h"
+#include "shortcuts.h"
 
 namespace somicage::editor {
 
 namespace {
 
-constexpr double kPickRadius = 12.0;     // pixels
-constexpr double kDragThreshold = 3.0;   // pixels before a press becomes a drag
+constexpr double kPickRadius = 12.0;    // pixels
+constexpr double kDragThreshold = 3.0;  // pixels before a press becomes a drag
 
 Eigen::Vector2d mousePos() {
   const ImVec2 m = ImGui::GetIO().MousePos;
@@ -20,22 +25,44 @@ Eigen::Vector2d mousePos() {
 
 void selectionChanged(AppState& state) { ++state.poseGeneration; }
 
+// --log-actions: the keyboard commands, one line each, as they run (the GUI tests count them).
+void logAction(const AppState& state, const char* id) {
+  if (!state.logActions) return;
+  std::printf("action %s\n", id);
+  std::fflush(stdout);
+}
+
+double cageSize(const AppState& state) {
+  const Eigen::MatrixXd& rest = state.scene->restCage.vertices;
+  return rest.rows() > 0 ? (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm() : 1.0;
+}
+
 void startModal(AppState& state, TransformKind kind, const std::vector<ViewRect>& views, int view) {
-  if (state.selection.empty() || views.empty()) return;
+  if (views.empty()) return;
+  if (state.selection.empty()) {
+    state.statusMessage = std::string(transformName(kind)) + ": nothing selected (click a handle, or A for all)";
+    return;
+  }
   const ViewRect& r = views[static_cast<std::size_t>(view < 0 ? 0 : view)];
   state.interaction.mode = Interaction::Mode::Modal;
   state.interaction.view = view < 0 ? 0 : view;
   state.interaction.transform =
       beginTransform(kind, state.selection.indices(), state.pose, mousePos() - r.origin(), r.size());
+  state.interaction.transform->gridStep = gridStepFor(cageSize(state));
+}
+
+void clearSelected(AppState& state, ClearKind kind) {
+  if (state.selection.empty()) {
+    state.statusMessage = std::string(clearKindName(kind)) + ": nothing selected";
+    return;
+  }
+  setPose(state, clearTransform(kind, state.scene->restCage.vertices, state.pose, state.selection.indices()));
+  state.statusMessage = commitEdit(state, clearKindName(kind)) ? clearKindName(kind)
+                                                               : std::string(clearKindName(kind)) + ": already at rest";
 }
 
 void confirmTransform(AppState& state) {
-  if (state.interaction.transform) {
-    const TransformSession& t = *state.interaction.transform;
-    if (t.original != state.pose) {
-      state.history.record({t.original, state.params, transformName(t.kind)});
-    }
-  }
+  if (state.interaction.transform) commitEdit(state, transformName(state.interaction.transform->kind));
   state.interaction.transform.reset();
   state.interaction.mode = Interaction::Mode::Idle;
 }
@@ -48,14 +75,18 @@ void cancelTransform(AppState& state) {
 
 void updateTransform(AppState& state, const std::vector<ViewRect>& views) {
   if (!state.interaction.transform) return;
-  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  state.interaction.transform->fine = ImGui::GetIO().KeyShift;
+  state.interaction.transform->snap = ImGui::GetIO().KeyCtrl;
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   const Eigen::MatrixXd pose = applyTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
   if (pose != state.pose) setPose(state, pose);
 }
 
 void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& views) {
   if (!state.interaction.transform || state.interaction.mode != Interaction::Mode::Modal) return;
-  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
   const std::string text = describeTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
@@ -63,6 +94,112 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
   draw->AddRectFilled(ImVec2(pos.x - 6, pos.y - 3), ImVec2(pos.x + size.x + 6, pos.y + size.y + 3),
                       IM_COL32(30, 30, 36, 220), 4.0f);
   draw->AddText(pos, IM_COL32(255, 200, 120, 255), text.c_str());
+}
+
+// The active axis as a line through the pivot, in the axis colour (x red, y green, z blue), across the view.
+void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
+  const std::optional<TransformSession>& t = state.interaction.transform;
+  if (!t || t->axis == Axis::None || (t->axis == Axis::Z && state.dim() == 2)) return;
+  const ViewRect& r =
+      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+  Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+  dir[static_cast<int>(t->axis) - 1] = 1.0;
+  Eigen::Vector2d centre;
+  const Eigen::Vector2d screenDir(dir.dot(state.camera.right()), -dir.dot(state.camera.up()));
+  if (!state.camera.project(t->pivot, r.width, r.height, centre) || screenDir.norm() < 1e-3) return;
+  const Eigen::Vector2d a = centre - 4000.0 * screenDir.normalized(), b = centre + 4000.0 * screenDir.normalized();
+  const ImU32 colours[3] = {IM_COL32(235, 70, 70, 220), IM_COL32(90, 210, 90, 220), IM_COL32(80, 140, 255, 220)};
+  // The background list: over the 3D picture, under the panels and dialogs.
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  draw->PushClipRect(ImVec2(static_cast<float>(r.x), static_cast<float>(r.y)),
+                     ImVec2(static_cast<float>(r.x + r.width), static_cast<float>(r.y + r.height)));
+  draw->AddLine(ImVec2(static_cast<float>(r.x + a.x()), static_cast<float>(r.y + a.y())),
+                ImVec2(static_cast<float>(r.x + b.x()), static_cast<float>(r.y + b.y())),
+                colours[static_cast<int>(t->axis) - 1], 2.0f);
+  draw->PopClipRect();
+}
+
+// The selection's gizmo (gizmo.h) in view `r`; `hot` is the part under the mouse (drawn brighter).
+bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
+  if (state.selection.empty()) return false;
+  const Eigen::VectorXd c = state.selection.centroid(state.pose);
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(c.size(), 3); ++k) pivot[k] = c[k];
+  return layoutGizmo(state.camera, pivot, state.dim(), r.width, r.height, g);
+}
+
+void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
+  GizmoLayout g;
+  if (!selectionGizmo(state, r, g)) return;
+  const auto at = [&](const Eigen::Vector2d& p) {
+    return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
+  };
+  const ImU32 colours[3] = {IM_COL32(235, 70, 70, 255), IM_COL32(90, 210, 90, 255), IM_COL32(80, 140, 255, 255)};
+  const ImU32 hotColour = IM_COL32(255, 230, 120, 255);
+  const Axis axes[3] = {Axis::X, Axis::Y, Axis::Z};
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();  // under the panels and dialogs
+  draw->PushClipRect(at(Eigen::Vector2d::Zero()), at(r.size()));
+  const GizmoPart ring{GizmoPart::Kind::Rotate, Axis::None}, centre{GizmoPart::Kind::Move, Axis::None};
+  draw->AddCircle(at(g.centre), static_cast<float>(GizmoLayout::kRingPixels),
+                  hot == ring ? hotColour : IM_COL32(230, 230, 235, 160), 64, hot == ring ? 3.0f : 1.5f);
+  for (int a = 0; a < 3; ++a) {
+    if (!g.shown[a]) continue;
+    const bool moveHot = hot == GizmoPart{GizmoPart::Kind::Move, axes[a]};
+    const bool scaleHot = hot == GizmoPart{GizmoPart::Kind::Scale, axes[a]};
+    draw->AddLine(at(g.centre), at(g.tips[a]), moveHot ? hotColour : colours[a], moveHot ? 4.0f : 2.5f);
+    const Eigen::Vector2d dir = (g.tips[a] - g.centre).normalized(), side(-dir.y(), dir.x());
+    draw->AddTriangleFilled(at(g.tips[a] + 10.0 * dir), at(g.tips[a] + 5.0 * side), at(g.tips[a] - 5.0 * side),
+                            moveHot ? hotColour : colours[a]);
+    const float k = static_cast<float>(GizmoLayout::kGrabPixels) - 2.0f;
+    const ImVec2 b = at(g.boxes[a]);
+    draw->AddRectFilled(ImVec2(b.x - k, b.y - k), ImVec2(b.x + k, b.y + k), scaleHot ? hotColour : colours[a]);
+  }
+  draw->AddCircleFilled(at(g.centre), static_cast<float>(GizmoLayout::kCentrePixels),
+                        hot == centre ? hotColour : IM_COL32(240, 240, 240, 200));
+  draw->PopClipRect();
+}
+
+// What a click would pick (element_pick.h), outlined under the mouse.
+void drawHover(const AppState& state, const ViewRect& r, const Eigen::Vector2d& mouse) {
+  const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+  const std::vector<int> hit =
+      pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+  if (hit.empty()) return;
+  const auto at = [&](int v) {
+    const Eigen::Vector2d& p = pts[static_cast<std::size_t>(v)].position;
+    return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
+  };
+  const ImU32 colour = IM_COL32(255, 240, 150, 230);
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  if (hit.size() == 1) {
+    draw->AddCircle(at(hit[0]), 9.0f, colour, 20, 2.5f);
+  } else if (hit.size() == 2) {
+    draw->AddLine(at(hit[0]), at(hit[1]), colour, 4.0f);
+  } else {
+    draw->AddTriangleFilled(at(hit[0]), at(hit[1]), at(hit[2]), IM_COL32(255, 240, 150, 70));
+    draw->AddTriangle(at(hit[0]), at(hit[1]), at(hit[2]), colour, 2.5f);
+  }
+}
+
+void setElementMode(AppState& state, ElementMode mode) {
+  state.elementMode = mode;
+  state.statusMessage = std::string("a click selects ") + elementModeName(mode) +
+                        (mode == ElementMode::Vertex ? "" : " (their vertices)");
+}
+
+// Digits, '.', '-' and Backspace during G / R / S (Blender's numeric input).
+void typeNumbers(AppState& state, const std::vector<ViewRect>& views) {
+  static const std::pair<int, char> kKeys[] = {
+      {GLFW_KEY_0, '0'},         {GLFW_KEY_1, '1'},          {GLFW_KEY_2, '2'},     {GLFW_KEY_3, '3'},
+      {GLFW_KEY_4, '4'},         {GLFW_KEY_5, '5'},          {GLFW_KEY_6, '6'},     {GLFW_KEY_7, '7'},
+      {GLFW_KEY_8, '8'},         {GLFW_KEY_9, '9'},          {GLFW_KEY_KP_0, '0'},  {GLFW_KEY_KP_1, '1'},
+      {GLFW_KEY_KP_2, '2'},      {GLFW_KEY_KP_3, '3'},       {GLFW_KEY_KP_4, '4'},  {GLFW_KEY_KP_5, '5'},
+      {GLFW_KEY_KP_6, '6'},      {GLFW_KEY_KP_7, '7'},       {GLFW_KEY_KP_8, '8'},  {GLFW_KEY_KP_9, '9'},
+      {GLFW_KEY_PERIOD, '.'},    {GLFW_KEY_KP_DECIMAL, '.'}, {GLFW_KEY_MINUS, '-'}, {GLFW_KEY_KP_SUBTRACT, '-'},
+      {GLFW_KEY_BACKSPACE, '\b'}};
+  for (const auto& [key, c] : kKeys) {
+    if (ImGui::IsKeyPressed(key) && typeIntoTransform(*state.interaction.transform, c)) updateTransform(state, views);
+  }
 }
 
 void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hoveredView) {
@@ -87,6 +224,7 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
         updateTransform(state, views);
       }
     }
+    typeNumbers(state, views);
     const int kinds[3] = {GLFW_KEY_G, GLFW_KEY_R, GLFW_KEY_S};
     const TransformKind kindValues[3] = {TransformKind::Grab, TransformKind::Rotate, TransformKind::Scale};
     for (int k = 0; k < 3; ++k) {
@@ -100,23 +238,56 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
   }
   if (it.mode != Interaction::Mode::Idle) return;
 
-  if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Z)) {
-    shift ? redo(state) : undo(state);
-  } else if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Y)) {
-    redo(state);
-  } else if (ctrl && ImGui::IsKeyPressed(GLFW_KEY_Q, false)) {
-    state.quitRequested = true;
-  } else if (!ctrl && ImGui::IsKeyPressed(GLFW_KEY_A, false)) {
-    alt ? state.selection.clear() : state.selection.selectAll();
-    selectionChanged(state);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_F, false)) {
-    frameAll(state);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_G, false)) {
-    startModal(state, TransformKind::Grab, views, hoveredView);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_R, false)) {
-    startModal(state, TransformKind::Rotate, views, hoveredView);
-  } else if (!ctrl && !alt && ImGui::IsKeyPressed(GLFW_KEY_S, false)) {
-    startModal(state, TransformKind::Scale, views, hoveredView);
+  const int mods = (shift ? kShift : 0) | (ctrl ? kCtrl : 0) | (alt ? kAlt : 0);
+  for (const Shortcut& sc : shortcuts()) {
+    const bool repeats = sc.run == undo || sc.run == redo;  // holding Ctrl+Z walks back
+    if (sc.run && sc.mods == mods && ImGui::IsKeyPressed(sc.key, repeats)) {
+      logAction(state, sc.id);
+      sc.run(state);
+      return;
+    }
+  }
+  struct ViewKey {
+    int key, mods;
+    const char* id;
+    void (*run)(AppState&, const std::vector<ViewRect>&, int);
+  };
+  static const ViewKey kViewKeys[] = {
+      {GLFW_KEY_A, kNoMods, "select_all",
+       [](AppState& s, const std::vector<ViewRect>&, int) {
+         s.selection.selectAll();
+         selectionChanged(s);
+       }},
+      {GLFW_KEY_A, kAlt, "select_none",
+       [](AppState& s, const std::vector<ViewRect>&, int) {
+         s.selection.clear();
+         selectionChanged(s);
+       }},
+      {GLFW_KEY_G, kNoMods, "grab",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Grab, v, h); }},
+      {GLFW_KEY_R, kNoMods, "rotate",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Rotate, v, h); }},
+      {GLFW_KEY_S, kNoMods, "scale",
+       [](AppState& s, const std::vector<ViewRect>& v, int h) { startModal(s, TransformKind::Scale, v, h); }},
+      {GLFW_KEY_1, kNoMods, "pick_vertices",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Vertex); }},
+      {GLFW_KEY_2, kNoMods, "pick_edges",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Edge); }},
+      {GLFW_KEY_3, kNoMods, "pick_faces",
+       [](AppState& s, const std::vector<ViewRect>&, int) { setElementMode(s, ElementMode::Face); }},
+      {GLFW_KEY_G, kAlt, "clear_location",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Location); }},
+      {GLFW_KEY_R, kAlt, "clear_rotation",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Rotation); }},
+      {GLFW_KEY_S, kAlt, "clear_scale",
+       [](AppState& s, const std::vector<ViewRect>&, int) { clearSelected(s, ClearKind::Scale); }},
+  };
+  for (const ViewKey& vk : kViewKeys) {
+    if (vk.mods == mods && ImGui::IsKeyPressed(vk.key, false)) {
+      logAction(state, vk.id);
+      vk.run(state, views, hoveredView);
+      return;
+    }
   }
 }
 
@@ -125,7 +296,6 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
 void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   const ImGuiIO& io = ImGui::GetIO();
   if (!state.scene || views.empty()) return;
-  if (ImGui::IsKeyPressed(GLFW_KEY_F12, false)) state.screenshotRequest = defaultScreenshotName();
 
   Interaction& it = state.interaction;
   const Eigen::Vector2d mouse = mousePos();
@@ -138,6 +308,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) confirmTransform(state);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) cancelTransform(state);
     drawTransformHeader(state, views);
+    drawAxisLine(state, views);
     return;
   }
 
@@ -161,6 +332,14 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
       }
       return;
     case Interaction::Mode::HandleDrag: {
+      drawAxisLine(state, views);
+      if (it.transform) {
+        const GizmoPart dragged{it.transform->kind == TransformKind::Grab    ? GizmoPart::Kind::Move
+                                : it.transform->kind == TransformKind::Scale ? GizmoPart::Kind::Scale
+                                                                             : GizmoPart::Kind::Rotate,
+                                it.transform->axis};
+        drawGizmo(state, views[static_cast<std::size_t>(it.view)], dragged);
+      }
       if (ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
           cancelTransform(state);
@@ -199,9 +378,17 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
       break;
   }
 
-  // ---- idle: new presses (only over a viewport ImGui does not claim) ----
-  if (io.WantCaptureMouse || hovered < 0) return;
+  // ---- idle: the gizmo, and new presses (only over a viewport ImGui does not claim) ----
+  GizmoPart hot;
+  GizmoLayout gizmo;
+  const bool overView = !io.WantCaptureMouse && hovered >= 0;
+  if (overView && selectionGizmo(state, views[static_cast<std::size_t>(hovered)], gizmo))
+    hot = pickGizmo(gizmo, mouse - views[static_cast<std::size_t>(hovered)].origin());
+  for (std::size_t v = 0; v < views.size(); ++v)
+    drawGizmo(state, views[v], static_cast<int>(v) == hovered ? hot : GizmoPart{});
+  if (!overView) return;
   const ViewRect& r = views[static_cast<std::size_t>(hovered)];
+  if (hot.kind == GizmoPart::Kind::None) drawHover(state, r, mouse);
   if (io.MouseWheel != 0.0f) state.camera.zoom(io.MouseWheel);
 
   const bool middle = ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
@@ -213,23 +400,37 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     it.mode = pan ? Interaction::Mode::Pan : Interaction::Mode::Orbit;
     return;
   }
+  if (left && hot.kind != GizmoPart::Kind::None) {  // drag a gizmo part: G / R / S with its axis
+    const TransformKind kinds[] = {TransformKind::Grab, TransformKind::Grab, TransformKind::Scale,
+                                   TransformKind::Rotate};
+    it.view = hovered;
+    it.pressMouse = mouse;
+    it.mode = Interaction::Mode::HandleDrag;
+    it.transform = beginTransform(kinds[static_cast<int>(hot.kind)], state.selection.indices(), state.pose,
+                                  mouse - r.origin(), r.size());
+    it.transform->axis = hot.axis;
+    it.transform->gridStep = gridStepFor(cageSize(state));
+    return;
+  }
   if (left) {
     it.view = hovered;
     it.pressMouse = mouse;
     const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
-    const int hit = pickPoint(pts, mouse - r.origin(), kPickRadius);
-    if (hit >= 0) {
+    const std::vector<int> hit =
+        pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+    if (!hit.empty()) {
       if (io.KeyShift) {
-        state.selection.click(hit, Selection::Mode::Toggle);
+        state.selection.apply(hit, Selection::Mode::Toggle);
         selectionChanged(state);
         return;
       }
-      if (!state.selection.isSelected(hit)) {
-        state.selection.click(hit, Selection::Mode::Replace);
+      if (!std::all_of(hit.begin(), hit.end(), [&](int v) { return state.selection.isSelected(v); })) {
+        state.selection.apply(hit, Selection::Mode::Replace);
         selectionChanged(state);
       }
       it.mode = Interaction::Mode::HandleDrag;
-      it.transform = beginTransform(TransformKind::Grab, state.selection.indices(), state.pose, mouse - r.origin(), r.size());
+      it.transform =
+          beginTransform(TransformKind::Grab, state.selection.indices(), state.pose, mouse - r.origin(), r.size());
     } else {
       it.mode = Interaction::Mode::Box;
       it.boxAdditive = io.KeyShift;

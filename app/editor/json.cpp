@@ -51,11 +51,21 @@ void escape(const std::string& s, std::string& out) {
   out += '"';
   for (char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (static_cast<unsigned char>(c) < 0x20) {
           char buf[8];
@@ -73,15 +83,21 @@ void dumpTo(const JsonValue& v, int indent, int depth, std::string& out) {
   const std::string pad = indent > 0 ? "\n" + std::string(static_cast<std::size_t>(indent * (depth + 1)), ' ') : "";
   const std::string padEnd = indent > 0 ? "\n" + std::string(static_cast<std::size_t>(indent * depth), ' ') : "";
   switch (v.type()) {
-    case JsonValue::Type::Null: out += "null"; break;
-    case JsonValue::Type::Bool: out += v.asBool() ? "true" : "false"; break;
+    case JsonValue::Type::Null:
+      out += "null";
+      break;
+    case JsonValue::Type::Bool:
+      out += v.asBool() ? "true" : "false";
+      break;
     case JsonValue::Type::Number: {
       char buf[40];
       std::snprintf(buf, sizeof buf, "%.17g", std::isfinite(v.asNumber()) ? v.asNumber() : 0.0);
       out += buf;
       break;
     }
-    case JsonValue::Type::String: escape(v.asString(), out); break;
+    case JsonValue::Type::String:
+      escape(v.asString(), out);
+      break;
     case JsonValue::Type::Array: {
       // Arrays of numbers stay on one line (poses are rows of 2 or 3 numbers).
       bool flat = true;
@@ -132,7 +148,8 @@ class Parser {
     throw InputError(source_, line, what, "fix the JSON syntax, or save the session again from the editor");
   }
   void skipSpace() {
-    while (pos_ < text_.size() && (text_[pos_] == ' ' || text_[pos_] == '\n' || text_[pos_] == '\t' || text_[pos_] == '\r'))
+    while (pos_ < text_.size() &&
+           (text_[pos_] == ' ' || text_[pos_] == '\n' || text_[pos_] == '\t' || text_[pos_] == '\r'))
       ++pos_;
   }
   bool consume(const char* word) {
@@ -184,14 +201,30 @@ class Parser {
       if (pos_ >= text_.size()) fail("unterminated escape");
       const char e = text_[pos_++];
       switch (e) {
-        case '"': out += '"'; break;
-        case '\\': out += '\\'; break;
-        case '/': out += '/'; break;
-        case 'n': out += '\n'; break;
-        case 't': out += '\t'; break;
-        case 'r': out += '\r'; break;
-        case 'b': out += '\b'; break;
-        case 'f': out += '\f'; break;
+        case '"':
+          out += '"';
+          break;
+        case '\\':
+          out += '\\';
+          break;
+        case '/':
+          out += '/';
+          break;
+        case 'n':
+          out += '\n';
+          break;
+        case 't':
+          out += '\t';
+          break;
+        case 'r':
+          out += '\r';
+          break;
+        case 'b':
+          out += '\b';
+          break;
+        case 'f':
+          out += '\f';
+          break;
         case 'u': {
           if (pos_ + 4 > text_.size() ||
               !std::all_of(text_.begin() + static_cast<std::ptrdiff_t>(pos_),
@@ -213,7 +246,8 @@ class Parser {
           }
           break;
         }
-        default: fail(std::string("unknown escape \\") + e);
+        default:
+          fail(std::string("unknown escape \\") + e);
       }
     }
   }

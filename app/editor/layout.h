@@ -9,7 +9,9 @@ namespace somicage::editor {
 // A viewport in window pixels, top-left origin (GLFW / ImGui convention).
 struct ViewRect {
   double x = 0, y = 0, width = 1, height = 1;
-  bool contains(const Eigen::Vector2d& p) const { return p.x() >= x && p.x() < x + width && p.y() >= y && p.y() < y + height; }
+  bool contains(const Eigen::Vector2d& p) const {
+    return p.x() >= x && p.x() < x + width && p.y() >= y && p.y() < y + height;
+  }
   Eigen::Vector2d size() const { return {width, height}; }
   Eigen::Vector2d origin() const { return {x, y}; }
 };

@@ -1,7 +1,10 @@
 #include "panels.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -9,29 +12,11 @@
 #include <system_error>
 
 #include "screenshot.h"
+#include "shortcuts.h"
 
 namespace somicage::editor {
 
 namespace {
-
-// std::string-backed text field (ImGui 1.86 has no std::string overload without imgui_stdlib).
-bool inputText(const char* label, std::string& text) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf, "%s", text.c_str());
-  const bool changed = ImGui::InputText(label, buf, sizeof buf);
-  if (changed) text = buf;
-  return changed;
-}
-
-void openDialog(AppState& state, PathDialog::Kind kind, const std::string& suggestion) {
-  state.dialog.kind = kind;
-  state.dialog.justOpened = true;
-  if (state.dialog.path.empty() || kind == PathDialog::Kind::Screenshot) state.dialog.path = suggestion;
-  if (kind == PathDialog::Kind::OpenFiles && state.scene && !state.scene->isDemo()) {
-    state.dialog.mesh = state.scene->meshPath;
-    state.dialog.cage = state.scene->cagePath;
-  }
-}
 
 // A titled separator (ImGui 1.86 has no SeparatorText).
 void sectionHeader(const char* title) {
@@ -40,89 +25,65 @@ void sectionHeader(const char* title) {
   ImGui::Separator();
 }
 
-// Records an undo snapshot when a widget starts being edited, so a whole slider drag is one undo step.
-void undoOnActivate(AppState& state, const char* label) {
-  if (ImGui::IsItemActivated()) recordEdit(state, label);
-}
-
-// The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
-// names it). Returns true when an entry was opened.
-bool drawRecentFiles(AppState& state) {
-  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
-  if (entries.empty()) return false;
-  sectionHeader("Recent");
-  bool opened = false;
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const RecentEntry& e = entries[i];
-    std::string missing;
-    for (const std::string& path : e.paths()) {
-      std::error_code ec;
-      if (!std::filesystem::exists(path, ec)) {
-        missing = path;
-        break;
-      }
-    }
-    ImGui::PushID(static_cast<int>(i));
-    if (!missing.empty()) ImGui::BeginDisabled();
-    const bool clicked = ImGui::Selectable(e.label().c_str(), false, ImGuiSelectableFlags_DontClosePopups);
-    if (!missing.empty()) ImGui::EndDisabled();
-    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
-      std::string tip;
-      for (const std::string& path : e.paths()) tip += path + "\n";
-      if (!missing.empty()) tip += "missing: " + missing;
-      ImGui::SetTooltip("%s", tip.c_str());
-    }
-    ImGui::PopID();
-    if (clicked && !opened) {
-      openRecent(state, e);
-      opened = true;
-    }
-  }
-  return opened;
+void openDemo(AppState& state, int dim) {
+  guardUnsaved(state, dim == 2 ? "open the 2D demo" : "open the 3D demo", [dim](AppState& s) { requestDemo(s, dim); });
 }
 
 }  // namespace
 
+void tooltip(const char* text) {
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) ImGui::SetTooltip("%s", text);
+}
+
+double panelWidth(double windowWidth) { return std::clamp(0.42 * windowWidth, 220.0, 340.0); }
+
 double menuBarHeight() { return ImGui::GetFrameHeight(); }
 double statusBarHeight() { return ImGui::GetFrameHeight() + 6.0; }
+
+// A menu item for a command of the shortcut table (shortcuts.h): its key label comes from there.
+void commandItem(AppState& state, const char* label, const char* id, bool enabled = true) {
+  if (ImGui::MenuItem(label, shortcutLabel(id), false, enabled)) runCommand(state, id);
+}
 
 void drawMainMenu(AppState& state) {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open mesh + cage...")) openDialog(state, PathDialog::Kind::OpenFiles, "");
-    if (ImGui::MenuItem("3D demo")) requestDemo(state, 3);
-    if (ImGui::MenuItem("2D demo")) requestDemo(state, 2);
+    commandItem(state, "New (3D demo)", "new");
+    commandItem(state, "Open mesh + cage...", "open");
+    if (ImGui::MenuItem("2D demo")) openDemo(state, 2);
     ImGui::Separator();
-    if (ImGui::MenuItem("Load posed cage...")) openDialog(state, PathDialog::Kind::LoadPose, "posed_cage.obj");
-    if (ImGui::MenuItem("Save posed cage...")) openDialog(state, PathDialog::Kind::SavePose, "posed_cage.obj");
-    if (ImGui::MenuItem("Export deformed mesh...")) openDialog(state, PathDialog::Kind::ExportMesh, "deformed.obj");
+    if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
+    if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
+    commandItem(state, "Export deformed mesh...", "export");
     ImGui::Separator();
-    if (ImGui::MenuItem("Open session...")) openDialog(state, PathDialog::Kind::LoadSession, "session.json");
-    if (ImGui::MenuItem("Save session...")) openDialog(state, PathDialog::Kind::SaveSession, "session.json");
+    commandItem(state, "Open session...", "open_session");
+    commandItem(state, "Save session", "save");
+    commandItem(state, "Save session as...", "save_as");
     ImGui::Separator();
-    if (ImGui::MenuItem("Screenshot...", "F12"))
-      openDialog(state, PathDialog::Kind::Screenshot, defaultScreenshotName());
+    if (ImGui::MenuItem("Screenshot...", shortcutLabel("screenshot")))
+      openFileDialog(state, FileDialogPurpose::Screenshot);
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) state.quitRequested = true;
+    commandItem(state, "Quit", "quit");
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit")) {
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, state.history.canUndo())) undo(state);
-    if (ImGui::MenuItem("Redo", "Ctrl+Shift+Z", false, state.history.canRedo())) redo(state);
+    commandItem(state, "Undo", "undo", state.history.canUndo());
+    commandItem(state, "Redo", "redo", state.history.canRedo());
+    ImGui::MenuItem("Undo History", shortcutLabel("history"), &state.showHistoryPanel);
     ImGui::Separator();
-    if (ImGui::MenuItem("Select all", "A")) {
+    if (ImGui::MenuItem("Select all", shortcutLabel("select_all"))) {
       state.selection.selectAll();
       ++state.poseGeneration;
     }
-    if (ImGui::MenuItem("Select none", "Alt+A")) {
+    if (ImGui::MenuItem("Select none", shortcutLabel("select_none"))) {
       state.selection.clear();
       ++state.poseGeneration;
     }
-    if (ImGui::MenuItem("Reset pose")) resetPose(state);
+    commandItem(state, "Reset pose", "reset_pose");
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    if (ImGui::MenuItem("Frame all", "F")) frameAll(state);
+    commandItem(state, "Frame all", "frame");
     bool compare = state.compare;
     if (ImGui::MenuItem("Compare methods", nullptr, &compare)) setCompare(state, compare);
     ImGui::MenuItem("Show cage", nullptr, &state.showCage);
@@ -130,12 +91,11 @@ void drawMainMenu(AppState& state) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
+    ImGui::MenuItem("Shortcuts", shortcutLabel("shortcuts"), &state.showShortcuts);
+    ImGui::Separator();
     ImGui::TextUnformatted(
         "Camera: middle drag or Alt+left drag orbits, Shift+middle (Alt+Shift+left) pans, wheel zooms, F frames.\n"
         "Select: click a handle, Shift+click toggles, drag on the background for a box (Shift adds).\n"
-        "A selects all, Alt+A none. Drag a selected handle to move the selection in the view plane.\n"
-        "G / R / S grab, rotate, scale; then X / Y / Z constrain; Enter or left click confirms, Esc or\n"
-        "right click cancels. Ctrl+Z undo, Ctrl+Shift+Z redo. F12 screenshot.\n"
         "Drop files on the window: a mesh and its cage (2 .obj; names with \"cage\" are cages, \"pose\",\n"
         "\"posed\" or \"deformed\" posed cages, else the order), + a posed cage (3 .obj), one posed cage for\n"
         "the current cage (1 .obj), or a session .json. File > Open lists the recent files.");
@@ -149,44 +109,52 @@ void drawControlPanel(AppState& state) {
   const float top = static_cast<float>(menuBarHeight());
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + top));
   ImGui::SetNextWindowSize(
-      ImVec2(static_cast<float>(kPanelWidth), vp->Size.y - top - static_cast<float>(statusBarHeight())));
+      ImVec2(static_cast<float>(panelWidth(vp->Size.x)), vp->Size.y - top - static_cast<float>(statusBarHeight())));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar;
   ImGui::Begin("Controls", nullptr, flags);
 
   ImGui::TextUnformatted(state.scene ? state.scene->name.c_str() : "(no scene)");
-  if (ImGui::Button("3D demo")) requestDemo(state, 3);
+  if (ImGui::Button("3D demo")) openDemo(state, 3);
+  tooltip("Open the built-in 3D demo: a bar in a box cage (Ctrl+N). Asks first when there are unsaved changes.");
   ImGui::SameLine();
-  if (ImGui::Button("2D demo")) requestDemo(state, 2);
+  if (ImGui::Button("2D demo")) openDemo(state, 2);
+  tooltip("Open the built-in 2D demo: a polygon in a polygon cage.");
   ImGui::SameLine();
-  if (ImGui::Button("Open...")) openDialog(state, PathDialog::Kind::OpenFiles, "");
+  if (ImGui::Button("Open...")) openFileDialog(state, FileDialogPurpose::OpenScene);
+  tooltip("Open a mesh and its cage (.obj), with an optional posed cage (Ctrl+O)");
 
   sectionHeader("Method");
   const std::vector<Method>& all = allMethods();
   if (ImGui::BeginCombo("method", state.method->displayName)) {
-    for (Method m : all)
-      if (ImGui::Selectable(m->displayName, m == state.method)) setMethod(state, m);
+    for (Method m : all) {
+      if (ImGui::Selectable(m->displayName, m == state.method)) {
+        setMethod(state, m);
+        commitEdit(state, "Method");
+      }
+    }
     ImGui::EndCombo();
   }
+  tooltip(
+      "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
+      "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates.");
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
+  tooltip(
+      "Show two or three methods side by side with the same pose (View > Compare methods). A view setting:\n"
+      "not an edit, not undone.");
   if (state.compare) {
-    std::vector<bool> use(all.size(), false);
-    for (std::size_t i = 0; i < all.size(); ++i)
-      use[i] =
-          std::find(state.compareMethods.begin(), state.compareMethods.end(), all[i]) != state.compareMethods.end();
     bool changed = false;
+    std::vector<Method> list;
     for (std::size_t i = 0; i < all.size(); ++i) {
       if (i > 0) ImGui::SameLine();
-      bool on = use[i];
-      changed |= ImGui::Checkbox((std::string(all[i]->displayName) + "##c").c_str(), &on);
-      use[i] = on;
+      bool use =
+          std::find(state.compareMethods.begin(), state.compareMethods.end(), all[i]) != state.compareMethods.end();
+      changed |= ImGui::Checkbox((std::string(all[i]->displayName) + "##c").c_str(), &use);
+      tooltip("Show this method in the comparison (two at least)");
+      if (use) list.push_back(all[i]);
     }
     if (changed) {
-      std::vector<Method> list;
-      for (std::size_t i = 0; i < all.size(); ++i) {
-        if (use[i]) list.push_back(all[i]);
-      }
       if (list.size() >= 2 && list.size() <= kMaxCompareViews) {
         state.compareMethods = list;
         setCompare(state, true);
@@ -195,79 +163,122 @@ void drawControlPanel(AppState& state) {
   }
 
   sectionHeader("Somigliana parameters");
+  // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
+  bool somiglianaShown = false;
+  for (Method m : state.viewMethods()) somiglianaShown |= m->takesDeformParams;
+  if (!somiglianaShown) ImGui::BeginDisabled();
   DeformParams p = state.params;
+  std::string changed;  // the committed step's name, for edits that are complete at once
   int variant = p.blend <= 0.0 ? 0 : (p.blend >= 1.0 ? 1 : 2);
   if (ImGui::RadioButton("global", variant == 0)) {
-    recordEdit(state, "variant");
     p.blend = 0.0;
+    changed = "Global variant";
   }
+  tooltip("Global variant: one similarity (R, s) fitted to the whole cage (Umeyama); R_j = R, lambda_j = s.");
   ImGui::SameLine();
   if (ImGui::RadioButton("local", variant == 1)) {
-    recordEdit(state, "variant");
     p.blend = 1.0;
+    changed = "Local variant";
   }
+  tooltip("Local variant: each face's own polar rotation R_j and stretch lambda_j (Eqs. 12-14).");
   float blend = static_cast<float>(p.blend);
   if (ImGui::SliderFloat("blend", &blend, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.blend = blend;
-  undoOnActivate(state, "blend");
+  const bool blendDone = ImGui::IsItemDeactivatedAfterEdit();
+  tooltip(
+      "t in [0, 1] between the global (0) and the local (1) variant (Fig. 4):\n"
+      "R_j(t) = R exp(t log(R^T R_j)), lambda_j(t) = t lambda_j + (1 - t) s. Ctrl+click to type a value.");
 
   bool infinite = std::isinf(p.nu);
   if (ImGui::Checkbox("nu = infinity", &infinite)) {
-    recordEdit(state, "nu");
     p.nu = infinite ? std::numeric_limits<double>::infinity() : 0.0;
+    changed = "nu";
   }
+  tooltip(
+      "The limit nu -> infinity: the Laplace layers of Green coordinates plus an antisymmetric part\n"
+      "(in 2D with gamma = 0 exactly Green coordinates, paper section 5).");
+  bool nuDone = false;
   if (!infinite) {
     float nu = static_cast<float>(p.nu);
     // Typed values (Ctrl+click) are clamped too: nu in (-1, 0.5); +-infinity only through the checkbox.
     if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) p.nu = nu;
-    undoOnActivate(state, "nu");
+    nuDone = ImGui::IsItemDeactivatedAfterEdit();
+    tooltip(
+        "Poisson ratio nu in (-1, 0.5): how much the volume is kept. It sets the traction scale\n"
+        "s_j = 2[eta_j + nu/(1-2nu) (eta_j + (d-1) lambda_j)] (Eqs. 12-14). Ctrl+click to type a value.");
   } else {
     ImGui::TextDisabled("nu = inf (Green-like limit)");
   }
   float gamma = static_cast<float>(p.gamma);
   if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.gamma = gamma;
-  undoOnActivate(state, "gamma");
-  if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) {
-    DeformParams before = state.params;
-    state.params = p;
-    state.params.tractionCorrection = !p.tractionCorrection;
-    recordEdit(state, "traction fix");
-    state.params = before;
-  }
+  const bool gammaDone = ImGui::IsItemDeactivatedAfterEdit();
+  tooltip(
+      "Bulging scale gamma >= 0 (section 4.4): eta_j = lambda_j exp(gamma beta_j / (2^(d-1) pi)), with\n"
+      "beta_j the change of the face's solid angle of vertex normals. 0: no bulging.");
+  if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) changed = "Traction fix";
+  tooltip(
+      "Traction correction (Eq. 15): s'_j = s_j - lambda . w_j, so that a similarity pose moves the mesh\n"
+      "exactly as a similarity.");
+  if (!somiglianaShown) ImGui::EndDisabled();
   if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
       p.tractionCorrection != state.params.tractionCorrection) {
     setParams(state, p);
   }
-  if (!state.method->takesDeformParams && !state.compare) {
-    ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
-  }
+  if (!changed.empty()) commitEdit(state, changed);
+  if (blendDone) commitEdit(state, "blend");
+  if (nuDone) commitEdit(state, "nu");
+  if (gammaDone) commitEdit(state, "gamma");
+  if (!somiglianaShown) ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
 
   sectionHeader("Pose");
   if (ImGui::Button("Reset pose")) resetPose(state);
+  tooltip("Every handle back to its rest position (Alt+Shift+R). One undo step.");
   ImGui::SameLine();
+  if (!state.history.canUndo()) ImGui::BeginDisabled();
   if (ImGui::Button("Undo")) undo(state);
+  if (!state.history.canUndo()) ImGui::EndDisabled();
+  tooltip("Undo the last change (Ctrl+Z). Edit > Undo History lists every step.");
   ImGui::SameLine();
+  if (!state.history.canRedo()) ImGui::BeginDisabled();
   if (ImGui::Button("Redo")) redo(state);
+  if (!state.history.canRedo()) ImGui::EndDisabled();
+  tooltip("Redo (Ctrl+Shift+Z or Ctrl+Y)");
   ImGui::SameLine();
   if (ImGui::Button("Frame (F)")) frameAll(state);
+  tooltip("Frame the mesh and the posed cage in the views (F)");
   ImGui::Text("%d of %d cage vertices selected", state.selection.count(), state.selection.size());
+  int pickMode = static_cast<int>(state.elementMode);
+  const char* pickNames[] = {"vertex", "edge", "face"};
+  const char* pickTips[] = {"A click selects one cage vertex (1)", "A click selects an edge: its two vertices (2)",
+                            "A click selects a face: its vertices (3)"};
+  for (int m = 0; m < 3; ++m) {
+    if (m > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(pickNames[m], pickMode == m)) state.elementMode = static_cast<ElementMode>(m);
+    tooltip(pickTips[m]);
+  }
   ImGui::Checkbox("show cage", &state.showCage);
+  tooltip("Draw the cage and its handles");
   ImGui::SameLine();
   ImGui::Checkbox("show mesh", &state.showMesh);
+  tooltip("Draw the deformed mesh");
   ImGui::SameLine();
   bool wire = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
   if (ImGui::Checkbox("wireframe", &wire)) state.wireframe = wire ? 1 : 0;
+  tooltip("Draw the mesh's edges");
   ImGui::Checkbox("flat shading", &state.flatShading);
+  tooltip("Faceted shading (one normal per triangle) instead of smooth");
 
   sectionHeader("Deformation backend");
   {
     int backend = static_cast<int>(state.backend.requested);
     if (ImGui::RadioButton("CPU", backend == static_cast<int>(DeformBackend::Cpu)))
       setBackend(state, DeformBackend::Cpu);
+    tooltip("Deform every frame on the CPU (OpenMP)");
     ImGui::SameLine();
     if (!state.backend.gpuAvailable) ImGui::BeginDisabled();
     if (ImGui::RadioButton("GPU (compute shader)", backend == static_cast<int>(DeformBackend::Gpu)))
       setBackend(state, DeformBackend::Gpu);
     if (!state.backend.gpuAvailable) ImGui::EndDisabled();
+    tooltip("Deform every frame in an OpenGL 4.3 compute shader (needs a GPU driver with compute shaders)");
     if (!state.backend.gpuNote.empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
       ImGui::TextWrapped("%s%s", state.backend.gpuAvailable ? "" : "GPU unavailable: ", state.backend.gpuNote.c_str());
@@ -281,6 +292,7 @@ void drawControlPanel(AppState& state) {
     ImGui::TextUnformatted(stage.empty() ? "starting..." : stage.c_str());
     ImGui::ProgressBar(static_cast<float>(state.worker.progress()), ImVec2(-1.0f, 0.0f));
     if (ImGui::Button("Cancel")) state.worker.cancel();
+    tooltip("Stop the precomputation; the previous scene stays");
   } else {
     ImGui::Text("ready (%.2f s)", state.stats.precomputeSeconds);
   }
@@ -289,10 +301,8 @@ void drawControlPanel(AppState& state) {
   ImGui::TextWrapped(
       "Middle drag / Alt+drag: orbit. Shift+middle: pan. Wheel: zoom. F: frame.\n"
       "Click / Shift+click / box-drag: select handles. A / Alt+A: all / none.\n"
-      "Drag a handle, or G R S (+ X Y Z), Enter confirms, Esc cancels.\n"
-      "Ctrl+Z / Ctrl+Shift+Z: undo / redo. F12: screenshot.\n"
-      "Drop on the window: mesh + cage .obj (+ posed cage), one posed cage, or a session .json. "
-      "Open... lists the recent files.");
+      "Drag a handle or the gizmo, or G R S (+ X Y Z, a typed value), Enter confirms, Esc cancels.\n"
+      "F1: every shortcut.");
   ImGui::End();
 }
 
@@ -318,11 +328,12 @@ void drawStatusBar(AppState& state) {
     char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
     if (std::isfinite(state.stats.lastDeformMs))
       std::snprintf(deform, sizeof deform, "deform %.2f ms", state.stats.lastDeformMs);
-    ImGui::Text("mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s   %s",
-                static_cast<long long>(state.scene->meshVertices.rows()),
+    // The last action first: in a narrow window the statistics are what gets cut off.
+    ImGui::Text("%s%s%s   mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s",
+                state.statusMessage.c_str(), state.statusMessage.empty() ? "" : "   |",
+                hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.scene->meshVertices.rows()),
                 static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
-                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, backend,
-                state.statusMessage.c_str());
+                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, backend);
   } else {
     ImGui::Text("loading...   %s", state.statusMessage.c_str());
   }
@@ -348,88 +359,84 @@ void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views) {
   }
 }
 
-void drawPathDialog(AppState& state) {
-  PathDialog& d = state.dialog;
-  if (d.kind == PathDialog::Kind::None) return;
-  const char* title = "File";
-  switch (d.kind) {
-    case PathDialog::Kind::OpenFiles:
-      title = "Open mesh + cage";
-      break;
-    case PathDialog::Kind::LoadPose:
-      title = "Load posed cage";
-      break;
-    case PathDialog::Kind::SavePose:
-      title = "Save posed cage";
-      break;
-    case PathDialog::Kind::ExportMesh:
-      title = "Export deformed mesh";
-      break;
-    case PathDialog::Kind::SaveSession:
-      title = "Save session";
-      break;
-    case PathDialog::Kind::LoadSession:
-      title = "Open session";
-      break;
-    case PathDialog::Kind::Screenshot:
-      title = "Save screenshot";
-      break;
-    case PathDialog::Kind::None:
-      break;
-  }
-  if (d.justOpened) {
-    ImGui::OpenPopup(title);
-    d.justOpened = false;
-  }
-  ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_Appearing);
-  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
-    d.kind = PathDialog::Kind::None;
+void drawHistoryPanel(AppState& state) {
+  if (!state.showHistoryPanel) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x - 270.0f, vp->Pos.y + 40.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(250.0f, 300.0f), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Undo History", &state.showHistoryPanel, ImGuiWindowFlags_NoSavedSettings)) {
+    ImGui::End();
     return;
   }
-  if (d.kind == PathDialog::Kind::OpenFiles) {
-    inputText("mesh (.obj)", d.mesh);
-    inputText("cage (.obj)", d.cage);
-    inputText("posed cage (optional)", d.posed);
-    ImGui::TextDisabled("or drop the files on the window");
-  } else {
-    inputText("path", d.path);
+  const History& h = state.history;
+  std::size_t jump = h.cursor();
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    std::string label = h.step(i).name;
+    if (i > h.cursor()) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    if (ImGui::Selectable(label.c_str(), i == h.cursor())) jump = i;
+    if (i > h.cursor()) ImGui::PopStyleColor();
+    if (i == h.cursor() && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+    ImGui::PopID();
   }
-  const bool ok = ImGui::Button("OK") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+  ImGui::End();
+  if (jump != h.cursor()) jumpToStep(state, jump);
+}
+
+void drawUnsavedModal(AppState& state) {
+  if (!state.unsaved.asking) return;
+  const char* title = "Unsaved changes";
+  if (!ImGui::IsPopupOpen(title)) {
+    ImGui::OpenPopup(title);
+    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
+  }
+  ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
+  ImGui::TextWrapped("\"%s\" has unsaved changes. Save them before you %s?", documentName(state).c_str(),
+                     state.unsaved.asking->what.c_str());
+  // Keys as in most desktop dialogs: S or Enter saves, D does not, Esc cancels.
+  std::optional<UnsavedChoice> choice;
+  const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
+  if (ImGui::Button("Save (S)") || ImGui::IsKeyPressed(GLFW_KEY_S, false) || enter) choice = UnsavedChoice::Save;
+  tooltip(state.documentPath.empty() ? "Choose a session file, save, then go on (S or Enter)"
+                                     : "Save the session, then go on (S or Enter)");
   ImGui::SameLine();
-  bool cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
-  if (!ok && d.kind == PathDialog::Kind::OpenFiles && drawRecentFiles(state)) cancel = true;  // opened: just close
-  if (ok) {
-    switch (d.kind) {
-      case PathDialog::Kind::OpenFiles:
-        requestSceneFiles(state, d.mesh, d.cage, d.posed);
-        break;
-      case PathDialog::Kind::LoadPose:
-        loadPosedCage(state, d.path);
-        break;
-      case PathDialog::Kind::SavePose:
-        savePosedCage(state, d.path);
-        break;
-      case PathDialog::Kind::ExportMesh:
-        exportDeformedMesh(state, d.path);
-        break;
-      case PathDialog::Kind::SaveSession:
-        saveSessionFile(state, d.path);
-        break;
-      case PathDialog::Kind::LoadSession:
-        loadSessionFile(state, d.path);
-        break;
-      case PathDialog::Kind::Screenshot:
-        state.screenshotRequest = d.path;
-        break;
-      case PathDialog::Kind::None:
-        break;
-    }
-  }
-  if (ok || cancel) {
-    d.kind = PathDialog::Kind::None;
+  if (ImGui::Button("Don't save (D)") || ImGui::IsKeyPressed(GLFW_KEY_D, false)) choice = UnsavedChoice::DontSave;
+  tooltip("Go on and lose the changes (D)");
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel (Esc)") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false))
+    choice = UnsavedChoice::Cancel;
+  tooltip("Keep working (Esc)");
+  if (choice) {
     ImGui::CloseCurrentPopup();
+    answerUnsaved(state, *choice);
   }
   ImGui::EndPopup();
+}
+
+void drawShortcutSheet(AppState& state) {
+  if (!state.showShortcuts) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(200, 100), ImVec2(vp->Size.x - 20, vp->Size.y - 40));
+  if (!ImGui::Begin("Shortcuts (F1)", &state.showShortcuts,
+                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::End();
+    return;
+  }
+  if (ImGui::BeginTable("##keys", 2, ImGuiTableFlags_RowBg)) {
+    for (const Shortcut& s : shortcuts()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(s.keys);
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(s.what);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("While transforming: X / Y / Z axis, digits type a value, Shift fine, Ctrl snaps.");
+  ImGui::End();
 }
 
 void drawRestoreModal(AppState& state) {

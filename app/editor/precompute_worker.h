@@ -40,9 +40,9 @@ struct PrecomputeOutcome {
   std::uint64_t id = 0;                // as returned by start()
   std::shared_ptr<const Scene> scene;  // the scene the deformers belong to (null if loading failed)
   DeformerSet deformers;
-  double seconds = 0.0;                // wall time of the whole request
+  double seconds = 0.0;  // wall time of the whole request
   bool cancelled = false;
-  std::string error;                   // non-empty on failure (InputError text, bad_alloc, ...)
+  std::string error;  // non-empty on failure (InputError text, bad_alloc, ...)
 };
 
 class PrecomputeWorker {
@@ -54,10 +54,10 @@ class PrecomputeWorker {
 
   // Cancels (and joins) any running request, then starts this one. Returns its id.
   std::uint64_t start(PrecomputeRequest request);
-  void cancel();                 // asks the running request to stop; it finishes with cancelled = true
+  void cancel();  // asks the running request to stop; it finishes with cancelled = true
   bool busy() const { return busy_.load(); }
   double progress() const { return progress_.load(); }  // 0..1 over all methods of the request
-  std::string stage() const;     // e.g. "Loading files", "Somigliana 2/3"
+  std::string stage() const;                            // e.g. "Loading files", "Somigliana 2/3"
   // The outcome of the last finished request, once; empty while running or when already taken.
   std::optional<PrecomputeOutcome> poll();
   // Blocks until the running request finishes and returns its outcome (empty when nothing ran).

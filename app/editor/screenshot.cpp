@@ -16,7 +16,8 @@ void appendBytes(void* context, void* data, int size) {
 }  // namespace
 
 void writePng(const std::string& path, int width, int height, const std::vector<unsigned char>& rgba) {
-  if (width <= 0 || height <= 0 || rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
+  if (width <= 0 || height <= 0 ||
+      rgba.size() != static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
     throw InputError(path, -1, "no image to write (empty framebuffer)", "make the window larger");
   }
   std::string png;

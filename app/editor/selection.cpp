@@ -42,6 +42,13 @@ int pickPoint(const std::vector<ScreenPoint>& points, const Eigen::Vector2d& mou
   return best;
 }
 
+double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const Eigen::Vector2d ab = b - a;
+  const double len2 = ab.squaredNorm();
+  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
+  return (p - (a + t * ab)).norm();
+}
+
 std::vector<int> pointsInRect(const std::vector<ScreenPoint>& points, const Eigen::Vector2d& cornerA,
                               const Eigen::Vector2d& cornerB) {
   const Eigen::Vector2d lo = cornerA.cwiseMin(cornerB), hi = cornerA.cwiseMax(cornerB);

@@ -22,6 +22,9 @@ std::vector<ScreenPoint> projectPoints(const OrbitCamera& camera, const Eigen::M
 // -1 when none.
 int pickPoint(const std::vector<ScreenPoint>& points, const Eigen::Vector2d& mouse, double radius);
 
+// Distance in pixels from p to the segment a-b.
+double segmentDistance(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b);
+
 // Indices of the visible points inside the rectangle spanned by two corners (any order), inclusive.
 std::vector<int> pointsInRect(const std::vector<ScreenPoint>& points, const Eigen::Vector2d& cornerA,
                               const Eigen::Vector2d& cornerB);

@@ -3,6 +3,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 namespace somicage::editor {
 
@@ -10,10 +11,14 @@ namespace {
 
 Eigen::Vector3d axisVector(Axis axis) {
   switch (axis) {
-    case Axis::X: return Eigen::Vector3d::UnitX();
-    case Axis::Y: return Eigen::Vector3d::UnitY();
-    case Axis::Z: return Eigen::Vector3d::UnitZ();
-    case Axis::None: break;
+    case Axis::X:
+      return Eigen::Vector3d::UnitX();
+    case Axis::Y:
+      return Eigen::Vector3d::UnitY();
+    case Axis::Z:
+      return Eigen::Vector3d::UnitZ();
+    case Axis::None:
+      break;
   }
   return Eigen::Vector3d::Zero();
 }
@@ -34,8 +39,22 @@ Eigen::Vector2d pivotOnScreen(const TransformSession& s, const OrbitCamera& came
   return p;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
+double snapTo(double x, double step) { return step > 0 ? std::round(x / step) * step : x; }
+
+// Shift: a tenth of the motion from the start.
+Eigen::Vector2d effectiveMouse(const TransformSession& s, const Eigen::Vector2d& mouse) {
+  return s.fine ? Eigen::Vector2d(s.startMouse + 0.1 * (mouse - s.startMouse)) : mouse;
+}
+
 // World translation for a grab.
-Eigen::Vector3d grabTranslation(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+Eigen::Vector3d grabTranslation(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& rawMouse) {
+  if (const std::optional<double> v = typedValue(s)) {
+    const Axis axis = effectiveAxis(s);
+    return *v * axisVector(axis == Axis::None ? Axis::X : axis);
+  }
+  const Eigen::Vector2d mouse = effectiveMouse(s, rawMouse);
   const Eigen::Vector2d delta = mouse - s.startMouse;
   const double wpp = camera.worldPerPixel(s.pivot, s.viewportSize.y());
   const Eigen::Vector3d free = (delta.x() * camera.right() - delta.y() * camera.up()) * wpp;
@@ -46,37 +65,57 @@ Eigen::Vector3d grabTranslation(const TransformSession& s, const OrbitCamera& ca
   const Eigen::Vector2d screenAxis(a.dot(camera.right()), -a.dot(camera.up()));  // pixels per (world / wpp)
   const double len2 = screenAxis.squaredNorm();
   if (len2 < 1e-4) return a * a.dot(free);  // axis points at the eye: fall back to the view-plane component
-  return a * (delta.dot(screenAxis) / len2 * wpp);
+  const double along = delta.dot(screenAxis) / len2 * wpp;
+  return a * (s.snap ? snapTo(along, s.gridStep) : along);
 }
 
-double rotationAngle(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+Eigen::Vector3d snappedFree(const TransformSession& s, Eigen::Vector3d t) {
+  if (s.snap && effectiveAxis(s) == Axis::None)
+    for (int c = 0; c < 3; ++c) t[c] = snapTo(t[c], s.gridStep);
+  return t;
+}
+
+double rotationAngle(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& rawMouse) {
+  if (const std::optional<double> v = typedValue(s)) return *v * kPi / 180.0;
+  const Eigen::Vector2d mouse = effectiveMouse(s, rawMouse);
   const Eigen::Vector2d c = pivotOnScreen(s, camera);
-  return screenAngle(s.startMouse - c, mouse - c);
+  const double angle = screenAngle(s.startMouse - c, mouse - c);
+  return s.snap ? snapTo(angle, 15.0 * kPi / 180.0) : angle;
 }
 
-double scaleFactor(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& mouse) {
+double scaleFactor(const TransformSession& s, const OrbitCamera& camera, const Eigen::Vector2d& rawMouse) {
+  if (const std::optional<double> v = typedValue(s)) return *v;
+  const Eigen::Vector2d mouse = effectiveMouse(s, rawMouse);
   const Eigen::Vector2d c = pivotOnScreen(s, camera);
   const double r0 = (s.startMouse - c).norm();
-  return r0 < 1e-9 ? 1.0 : (mouse - c).norm() / r0;
+  const double f = r0 < 1e-9 ? 1.0 : (mouse - c).norm() / r0;
+  return s.snap ? snapTo(f, 0.1) : f;
 }
 
 }  // namespace
 
 const char* transformName(TransformKind kind) {
   switch (kind) {
-    case TransformKind::Grab: return "Grab";
-    case TransformKind::Rotate: return "Rotate";
-    case TransformKind::Scale: return "Scale";
+    case TransformKind::Grab:
+      return "Grab";
+    case TransformKind::Rotate:
+      return "Rotate";
+    case TransformKind::Scale:
+      return "Scale";
   }
   return "?";
 }
 
 const char* axisName(Axis axis) {
   switch (axis) {
-    case Axis::X: return "X";
-    case Axis::Y: return "Y";
-    case Axis::Z: return "Z";
-    case Axis::None: break;
+    case Axis::X:
+      return "X";
+    case Axis::Y:
+      return "Y";
+    case Axis::Z:
+      return "Z";
+    case Axis::None:
+      break;
   }
   return "";
 }
@@ -110,14 +149,16 @@ Eigen::MatrixXd applyTransform(const TransformSession& s, const OrbitCamera& cam
   Eigen::Vector3d translation = Eigen::Vector3d::Zero();
   switch (s.kind) {
     case TransformKind::Grab:
-      translation = grabTranslation(s, camera, mouse);
+      translation =
+          typedValue(s) ? grabTranslation(s, camera, mouse) : snappedFree(s, grabTranslation(s, camera, mouse));
       break;
     case TransformKind::Rotate: {
       const double angle = rotationAngle(s, camera, mouse);
       const Eigen::Vector3d toViewer = -camera.forward();
       Eigen::Vector3d a = (dim == 2) ? Eigen::Vector3d::UnitZ() : (axis == Axis::None ? toViewer : axisVector(axis));
       // Counter-clockwise on screen is a positive rotation about the axis pointing at the viewer.
-      if (a.dot(toViewer) < 0) a = -a;
+      // A typed angle turns right-handedly about the named axis (+z in 2D), as in Blender.
+      if (a.dot(toViewer) < 0 && !(typedValue(s) && (axis != Axis::None || dim == 2))) a = -a;
       linear = Eigen::AngleAxisd(angle, a).toRotationMatrix();
       break;
     }
@@ -147,19 +188,55 @@ std::string describeTransform(const TransformSession& s, const OrbitCamera& came
   const char* sep = axis == Axis::None ? "" : " ";
   switch (s.kind) {
     case TransformKind::Grab: {
-      const Eigen::Vector3d t = grabTranslation(s, camera, mouse);
+      const Eigen::Vector3d t =
+          typedValue(s) ? grabTranslation(s, camera, mouse) : snappedFree(s, grabTranslation(s, camera, mouse));
       std::snprintf(buf, sizeof buf, "Grab%s%s: (%.4g, %.4g, %.4g)", sep, axisName(axis), t.x(), t.y(), t.z());
       break;
     }
     case TransformKind::Rotate:
       std::snprintf(buf, sizeof buf, "Rotate%s%s: %.1f deg", sep, axisName(axis),
-                    rotationAngle(s, camera, mouse) * 180.0 / 3.14159265358979323846);
+                    rotationAngle(s, camera, mouse) * 180.0 / kPi);
       break;
     case TransformKind::Scale:
       std::snprintf(buf, sizeof buf, "Scale%s%s: %.3f", sep, axisName(axis), scaleFactor(s, camera, mouse));
       break;
   }
-  return std::string(buf) + "   [X/Y/Z constrain, Enter/left-click confirm, Esc/right-click cancel]";
+  std::string text = buf;
+  if (!s.typed.empty()) text += "   typed: " + s.typed;
+  return text + "   [X/Y/Z axis, type a value, Shift fine, Ctrl snap, Enter/click confirm, Esc/right-click cancel]";
+}
+
+std::optional<double> typedValue(const TransformSession& s) {
+  if (s.typed.empty()) return std::nullopt;
+  char* end = nullptr;
+  const double v = std::strtod(s.typed.c_str(), &end);
+  if (end != s.typed.c_str() + s.typed.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+bool typeIntoTransform(TransformSession& s, char c) {
+  if (c == '\b') {
+    if (!s.typed.empty()) s.typed.pop_back();
+    return true;
+  }
+  if (c == '-') {  // as in Blender: minus toggles the sign, wherever it is typed
+    s.typed = !s.typed.empty() && s.typed[0] == '-' ? s.typed.substr(1) : "-" + s.typed;
+    return true;
+  }
+  if (c == '.' && s.typed.find('.') != std::string::npos) return false;
+  if (!(c == '.' || (c >= '0' && c <= '9'))) return false;
+  s.typed += c;
+  return true;
+}
+
+double gridStepFor(double size) {
+  if (!(size > 0) || !std::isfinite(size)) return 0.1;
+  const double target = size / 20.0;
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (double m : {1.0, 2.0, 5.0}) {
+    if (m * decade >= target * 0.75) return m * decade;
+  }
+  return 10.0 * decade;
 }
 
 }  // namespace somicage::editor

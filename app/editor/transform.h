@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,20 +22,33 @@ const char* axisName(Axis axis);                // "", "X", "Y", "Z"
 struct TransformSession {
   TransformKind kind = TransformKind::Grab;
   Axis axis = Axis::None;
-  std::vector<int> indices;        // the vertices that move
-  Eigen::MatrixXd original;        // #V by d (2 or 3) positions at the start
-  Eigen::Vector3d pivot;           // centroid of the moving vertices (z = 0 in 2D)
-  Eigen::Vector2d startMouse;      // pixels in the viewport
-  Eigen::Vector2d viewportSize;    // width, height in pixels
+  std::vector<int> indices;      // the vertices that move
+  Eigen::MatrixXd original;      // #V by d (2 or 3) positions at the start
+  Eigen::Vector3d pivot;         // centroid of the moving vertices (z = 0 in 2D)
+  Eigen::Vector2d startMouse;    // pixels in the viewport
+  Eigen::Vector2d viewportSize;  // width, height in pixels
+  std::string typed;             // a value typed during the transform ("2", "-90", "0.5"); "" = follow the mouse
+  bool fine = false;             // Shift: a tenth of the mouse motion
+  bool snap = false;             // Ctrl: grid steps, 15 degrees, scale steps of 0.1
+  double gridStep = 0.1;         // world units of a grab snap (from the cage's size)
 };
+
+// The typed value, when `typed` parses as a number (a lone "-" or "." does not).
+std::optional<double> typedValue(const TransformSession& session);
+// Adds a typed character (digit, '.', '-', or '\b' to erase one); false when it is not part of a number.
+bool typeIntoTransform(TransformSession& session, char c);
+// A round grid step (1, 2 or 5 times a power of ten) about a twentieth of `size`.
+double gridStepFor(double size);
 
 // Starts a transform of `indices` from the mouse position in a viewport of the given size.
 TransformSession beginTransform(TransformKind kind, const std::vector<int>& indices, const Eigen::MatrixXd& positions,
                                 const Eigen::Vector2d& mouse, const Eigen::Vector2d& viewportSize);
 
-// The positions (#V by d) for the mouse at `mouse`. In 2D (d = 2) rotations are about z and Z constraints are
-// ignored.
-Eigen::MatrixXd applyTransform(const TransformSession& session, const OrbitCamera& camera, const Eigen::Vector2d& mouse);
+// The positions (#V by d) for the mouse at `mouse`, or for the typed value (Blender's numeric input: G X 2 moves
+// by 2 along x, G 2 along x too; R Z 90 rotates by 90 degrees about z, R 90 about the view axis; S 0.5 scales by
+// 0.5, along the axis when one is set). In 2D (d = 2) rotations are about z and Z constraints are ignored.
+Eigen::MatrixXd applyTransform(const TransformSession& session, const OrbitCamera& camera,
+                               const Eigen::Vector2d& mouse);
 
 // The header text shown while transforming, e.g. "Rotate Z: 32.0 deg".
 std::string describeTransform(const TransformSession& session, const OrbitCamera& camera, const Eigen::Vector2d& mouse);

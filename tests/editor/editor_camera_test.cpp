@@ -35,7 +35,8 @@ TEST(EditorCamera, ProjectMatchesMatricesIn3DAnd2D) {
     OrbitCamera c;
     c.setMode2D(twoD);
     c.setState({Eigen::Vector3d(0.3, -0.2, 0.1), 6.0, 0.5, 0.3});
-    for (const Eigen::Vector3d& p : {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0.5, -0.7), Eigen::Vector3d(-1, 1, 1)}) {
+    for (const Eigen::Vector3d& p :
+         {Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(1, 0.5, -0.7), Eigen::Vector3d(-1, 1, 1)}) {
       Eigen::Vector2d s;
       ASSERT_TRUE(c.project(p, 800, 600, s));
       EXPECT_LT((s - viaMatrices(c, p, 800, 600)).norm(), 1e-6) << "2D=" << twoD;

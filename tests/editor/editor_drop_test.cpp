@@ -115,6 +115,7 @@ TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   state.scene = scene;
   state.pose = scene->restCage.vertices;
   state.selection.resize(scene->restCage.numVertices());
+  state.history.reset(currentDocument(state), "Open demo", true);
 
   // A posed cage with the cage's vertex count poses the current scene (an undoable edit).
   const std::string posedPath = ::testing::TempDir() + "somicage_drop_posed.obj";

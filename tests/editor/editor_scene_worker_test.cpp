@@ -108,8 +108,8 @@ TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   for (Eigen::Index i = 0; i < pose.rows(); ++i) {
     if (pose(i, 0) > 2.0) pose(i, 1) += 0.5;  // lift the right end of the cage
   }
-  recordEdit(state, "Grab");
   setPose(state, pose);
+  commitEdit(state, "Grab");
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_FALSE(updateDeformation(state));  // nothing changed since
   const Eigen::MatrixXd& moved = displayedPoints(state, methods::somigliana());

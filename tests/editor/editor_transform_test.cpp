@@ -4,6 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "gizmo.h"
 #include "transform.h"
 
 using namespace somicage;
@@ -68,7 +69,8 @@ TEST(EditorTransform, RotateQuarterTurnCounterClockwiseOnScreen) {
   const OrbitCamera c = frontCamera();
   const Eigen::MatrixXd v = square3();
   const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
-  const TransformSession t = beginTransform(TransformKind::Rotate, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(100, 0), kViewport);
+  const TransformSession t =
+      beginTransform(TransformKind::Rotate, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(100, 0), kViewport);
   // Mouse moves from the right of the pivot to above it: a quarter turn counter-clockwise.
   const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(0, -100));
   const Eigen::Matrix3d r = Eigen::AngleAxisd(kPi / 2, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -92,7 +94,8 @@ TEST(EditorTransform, ScaleByTheDistanceRatio) {
   const OrbitCamera c = frontCamera();
   const Eigen::MatrixXd v = square3();
   const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
-  TransformSession t = beginTransform(TransformKind::Scale, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(50, 0), kViewport);
+  TransformSession t =
+      beginTransform(TransformKind::Scale, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(50, 0), kViewport);
   const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(0, 100));  // twice as far
   EXPECT_LT((out - 2.0 * v).norm(), 1e-9);
   t.axis = Axis::Y;
@@ -138,4 +141,94 @@ TEST(EditorTransform, DescriptionNamesKindAndAxis) {
   TransformSession t = beginTransform(TransformKind::Rotate, {0}, square3(), Eigen::Vector2d(500, 300), kViewport);
   t.axis = Axis::Z;
   EXPECT_EQ(describeTransform(t, c, Eigen::Vector2d(500, 300)).rfind("Rotate Z:", 0), 0u);
+}
+
+TEST(EditorTransform, TypedValuesActAsInBlender) {
+  Eigen::MatrixXd pts(2, 3);
+  pts << 1, 0, 0, 0, 1, 0;
+  const OrbitCamera camera = frontCamera();
+  TransformSession s = beginTransform(TransformKind::Grab, {0, 1}, pts, Eigen::Vector2d(400, 300), kViewport);
+  s.axis = Axis::X;
+  for (char c : std::string("2")) ASSERT_TRUE(typeIntoTransform(s, c));
+  // G X 2: +2 along x whatever the mouse does.
+  Eigen::MatrixXd out = applyTransform(s, camera, Eigen::Vector2d(10, 590));
+  EXPECT_NEAR((out - pts).col(0).minCoeff(), 2.0, 1e-12);
+  EXPECT_NEAR((out - pts).rightCols(2).cwiseAbs().maxCoeff(), 0.0, 1e-12);
+
+  // R Z 90: a quarter turn about +z (right-handed) about the centroid (0.5, 0.5, 0).
+  s.kind = TransformKind::Rotate;
+  s.axis = Axis::Z;
+  s.typed = "9";
+  ASSERT_TRUE(typeIntoTransform(s, '0'));
+  out = applyTransform(s, camera, Eigen::Vector2d(10, 590));
+  EXPECT_NEAR(out(0, 0), 0.5 - (0 - 0.5), 1e-12);  // (1,0) -> c + Rz(90) (0.5, -0.5) = (1, 1)
+  EXPECT_NEAR(out(0, 1), 1.0, 1e-12);
+
+  // S 0.5: half the distance to the centroid; '-' toggles the sign, Backspace erases; "." alone is no value.
+  s.kind = TransformKind::Scale;
+  s.axis = Axis::None;
+  s.typed.clear();
+  for (char c : std::string("0.5")) ASSERT_TRUE(typeIntoTransform(s, c));
+  EXPECT_FALSE(typeIntoTransform(s, '.'));  // one decimal point
+  out = applyTransform(s, camera, Eigen::Vector2d(10, 590));
+  EXPECT_NEAR(out(0, 0), 0.75, 1e-12);
+  EXPECT_NEAR(out(1, 1), 0.75, 1e-12);
+  typeIntoTransform(s, '-');
+  EXPECT_EQ(s.typed, "-0.5");
+  s.typed = ".";
+  EXPECT_FALSE(typedValue(s).has_value());
+  typeIntoTransform(s, '\b');
+  EXPECT_TRUE(s.typed.empty());
+}
+
+TEST(EditorTransform, CtrlSnapsAndShiftIsFine) {
+  Eigen::MatrixXd pts(1, 3);
+  pts << 0, 0, 0;
+  const OrbitCamera camera = frontCamera();
+  TransformSession s = beginTransform(TransformKind::Grab, {0}, pts, Eigen::Vector2d(400, 300), kViewport);
+  const Eigen::Vector2d mouse(437, 283);
+  const Eigen::MatrixXd free = applyTransform(s, camera, mouse);
+  s.fine = true;
+  const Eigen::MatrixXd fine = applyTransform(s, camera, mouse);
+  EXPECT_NEAR(fine(0, 0), 0.1 * free(0, 0), 1e-12);
+  EXPECT_NEAR(fine(0, 1), 0.1 * free(0, 1), 1e-12);
+  s.fine = false;
+  s.snap = true;
+  s.gridStep = 0.25;
+  const Eigen::MatrixXd snapped = applyTransform(s, camera, mouse);
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_NEAR(std::remainder(snapped(0, c), 0.25), 0.0, 1e-12);
+    EXPECT_LE(std::abs(snapped(0, c) - free(0, c)), 0.125 + 1e-12);
+  }
+  s.kind = TransformKind::Rotate;
+  pts.resize(2, 3);
+  pts << 1, 0, 0, -1, 0, 0;
+  s = beginTransform(TransformKind::Rotate, {0, 1}, pts, Eigen::Vector2d(500, 300), kViewport);
+  s.snap = true;
+  const Eigen::MatrixXd turned = applyTransform(s, camera, Eigen::Vector2d(480, 250));
+  const double angle = std::atan2(turned(0, 1), turned(0, 0)) * 180.0 / kPi;
+  EXPECT_NEAR(std::remainder(angle, 15.0), 0.0, 1e-9);
+  EXPECT_DOUBLE_EQ(gridStepFor(4.0), 0.2);
+  EXPECT_DOUBLE_EQ(gridStepFor(100.0), 5.0);
+}
+
+TEST(EditorGizmo, PartsArePickedWhereTheyAreDrawn) {
+  const OrbitCamera camera = frontCamera();  // screen +x = world +x, screen up = world +y, z points at the eye
+  GizmoLayout g;
+  ASSERT_TRUE(layoutGizmo(camera, Eigen::Vector3d::Zero(), 3, kViewport.x(), kViewport.y(), g));
+  EXPECT_NEAR((g.centre - Eigen::Vector2d(400, 300)).norm(), 0.0, 1e-9);
+  EXPECT_TRUE(g.shown[0] && g.shown[1]);
+  EXPECT_FALSE(g.shown[2]);  // z points at the eye: no arrow
+  EXPECT_NEAR(g.tips[0].x() - 400, GizmoLayout::kArrowPixels, 1e-9);
+  EXPECT_NEAR(300 - g.tips[1].y(), GizmoLayout::kArrowPixels, 1e-9);
+  const auto pick = [&](double x, double y) { return pickGizmo(g, Eigen::Vector2d(x, y)); };
+  EXPECT_EQ(pick(400 + 0.6 * 80, 300), (GizmoPart{GizmoPart::Kind::Scale, Axis::X}));
+  EXPECT_EQ(pick(400 + 75, 302), (GizmoPart{GizmoPart::Kind::Move, Axis::X}));
+  EXPECT_EQ(pick(400, 300 - 75), (GizmoPart{GizmoPart::Kind::Move, Axis::Y}));
+  EXPECT_EQ(pick(403, 302), (GizmoPart{GizmoPart::Kind::Move, Axis::None}));
+  EXPECT_EQ(pick(400 - 100, 300), (GizmoPart{GizmoPart::Kind::Rotate, Axis::None}));
+  EXPECT_EQ(pick(400 - 50, 300 + 50), GizmoPart{});
+  GizmoLayout flat;
+  ASSERT_TRUE(layoutGizmo(frontCamera(true), Eigen::Vector3d::Zero(), 2, kViewport.x(), kViewport.y(), flat));
+  EXPECT_FALSE(flat.shown[2]);
 }

@@ -28,7 +28,8 @@ struct Image {
   int width = 0, height = 0;
   std::vector<unsigned char> rgba;
   bool isMesh(int x, int y) const {
-    const unsigned char* p = &rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4];
+    const unsigned char* p =
+        &rgba[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) * 4];
     return static_cast<int>(p[0]) > static_cast<int>(p[2]) + 12;
   }
   // Fraction of mesh pixels in the columns [x0, x1).
@@ -58,10 +59,10 @@ fs::path outputDir() {
 std::string quote(const std::string& s) { return "'" + s + "'"; }
 
 // Skips the test when no display can be had.
-#define REQUIRE_DISPLAY()                                                                              \
-  do {                                                                                                 \
-    if (kXvfbRun.empty() && std::getenv("DISPLAY") == nullptr)                                         \
-      GTEST_SKIP() << "neither xvfb-run nor a DISPLAY is available (apt-get install xvfb xauth)";      \
+#define REQUIRE_DISPLAY()                                                                         \
+  do {                                                                                            \
+    if (kXvfbRun.empty() && std::getenv("DISPLAY") == nullptr)                                    \
+      GTEST_SKIP() << "neither xvfb-run nor a DISPLAY is available (apt-get install xvfb xauth)"; \
   } while (0)
 
 // Runs somicage with the arguments; returns its exit code, the output goes to log.
@@ -129,7 +130,8 @@ TestFiles writeTestFiles() {
         out << "f " << idx(i, j) << " " << idx(i + 1, j + 1) << " " << idx(i + 1, j) << "\n";
       }
     }
-    for (int j = 0; j < segments; ++j) out << "f " << bottom << " " << idx(rings - 1, j) << " " << idx(rings - 1, j + 1) << "\n";
+    for (int j = 0; j < segments; ++j)
+      out << "f " << bottom << " " << idx(rings - 1, j) << " " << idx(rings - 1, j + 1) << "\n";
   }
   const double v[8][3] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                           {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -194,8 +196,8 @@ TEST(GuiScreenshot, PosedDiffersFromRest) {
   ASSERT_GT(rest.width, 0);
   ASSERT_GT(posed.width, 0);
   EXPECT_GT(rest.coverage(), 0.03);
-  EXPECT_GT(posed.coverage(), 0.03);
-  // The same camera (framed on the rest scene) sees the silhouette move with the cage.
+  EXPECT_GT(posed.coverage(), 0.015);  // the framing includes the posed cage: the mesh fills less (measured 0.024)
+  // The silhouette moves with the cage.
   EXPECT_GT(maskDifference(rest, 0, posed, 0, rest.width), 0.01);
   // Rendering is deterministic: the same rest pose twice gives the same mask.
   const Image again = screenshot(files + " --hide-ui --size 640x480", "sphere_rest_again");
@@ -222,10 +224,11 @@ TEST(GuiScreenshot, FireHydrantCompareWithPanels) {
   REQUIRE_DISPLAY();
   const std::string dir = kModels + "/firehydrant/";
   if (!fs::exists(dir + "fireHydrant.obj")) GTEST_SKIP() << "shared models not found at " << kModels;
-  const Image img = screenshot(quote(dir + "fireHydrant.obj") + " " + quote(dir + "fireHydrant_cages_triangulated.obj") +
-                                   " " + quote(dir + "fireHydrant_cages_triangulated_deformed.obj") +
-                                   " --compare somigliana,green,mvc --nu 0.3 --gamma 1",
-                               "firehydrant_compare");
+  const Image img =
+      screenshot(quote(dir + "fireHydrant.obj") + " " + quote(dir + "fireHydrant_cages_triangulated.obj") + " " +
+                     quote(dir + "fireHydrant_cages_triangulated_deformed.obj") +
+                     " --compare somigliana,green,mvc --nu 0.3 --gamma 1",
+                 "firehydrant_compare");
   ASSERT_GT(img.width, 0);
   EXPECT_GT(img.coverage(), 0.05);
 }
@@ -256,8 +259,9 @@ TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
   ASSERT_GT(gpu.width, 0);
   ASSERT_EQ(gpu.width, cpu.width);
   ASSERT_EQ(gpu.height, cpu.height);
-  EXPECT_GT(gpu.coverage(0, gpu.width / 2), 0.03);
-  EXPECT_GT(gpu.coverage(gpu.width / 2, gpu.width), 0.03);
+  // Framed with the posed cage included, the mesh fills less of each view (measured 0.027).
+  EXPECT_GT(gpu.coverage(0, gpu.width / 2), 0.015);
+  EXPECT_GT(gpu.coverage(gpu.width / 2, gpu.width), 0.015);
   EXPECT_LT(maskDifference(gpu, 0, cpu, 0, gpu.width), 1e-3);
   EXPECT_LT(colourDifference(gpu, cpu, 6), 2e-3);
   // And it moved with the cage (not the rest mesh).
@@ -269,9 +273,9 @@ TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
 
 TEST(GuiScreenshot, BadFilesFailCleanly) {
   REQUIRE_DISPLAY();
-  const int rc = runSomicage("/nonexistent/mesh.obj /nonexistent/cage.obj --screenshot " +
-                                 quote((outputDir() / "never.png").string()),
-                             "bad_files");
+  const int rc = runSomicage(
+      "/nonexistent/mesh.obj /nonexistent/cage.obj --screenshot " + quote((outputDir() / "never.png").string()),
+      "bad_files");
   EXPECT_EQ(rc, 2) << readLog("bad_files");
   EXPECT_NE(readLog("bad_files").find("nonexistent"), std::string::npos);
   EXPECT_FALSE(fs::exists(outputDir() / "never.png"));

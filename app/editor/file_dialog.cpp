@@ -1,0 +1,356 @@
+#include "file_dialog.h"
+
+#include <imgui.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+#include "app_state.h"
+#include "panels.h"
+#include "screenshot.h"
+
+namespace somicage::editor {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct PurposeInfo {
+  FileKind kind;
+  bool writes;
+  const char* title;
+};
+
+constexpr PurposeInfo kPurposes[] = {
+    {FileKind::Mesh, false, "File"},  // None
+    {FileKind::Mesh, false, "Open mesh + cage"},
+    {FileKind::PosedCage, false, "Load posed cage"},
+    {FileKind::PosedCage, true, "Save posed cage"},
+    {FileKind::DeformedMesh, true, "Export deformed mesh"},
+    {FileKind::Session, false, "Open session"},
+    {FileKind::Session, true, "Save session"},
+    {FileKind::Screenshot, true, "Save screenshot"},
+};
+
+const PurposeInfo& info(FileDialogPurpose purpose) { return kPurposes[static_cast<int>(purpose)]; }
+
+std::string currentFolder() {
+  std::error_code ec;
+  const fs::path cwd = fs::current_path(ec);
+  return ec ? std::string("/") : cwd.string();
+}
+
+FilePlace& place(FileDialogState& d, FileKind kind) { return d.places[static_cast<std::size_t>(kind)]; }
+
+// Remembers where a file of this kind was read or written: the next dialog of the kind starts there.
+void remember(FileDialogState& d, FileKind kind, const std::string& path) {
+  std::error_code ec;
+  const fs::path absolute = fs::absolute(path, ec).lexically_normal();
+  if (ec) return;
+  place(d, kind) = {absolute.parent_path().string(), absolute.filename().string()};
+  noteFolder(d.recentFolders, absolute.parent_path().string());
+}
+
+// Carries out the checked action; true on success.
+bool act(AppState& state, FileDialogPurpose purpose, const std::string& path) {
+  switch (purpose) {
+    case FileDialogPurpose::LoadPose:
+      return loadPosedCage(state, path);
+    case FileDialogPurpose::SavePose:
+      return savePosedCage(state, path);
+    case FileDialogPurpose::ExportMesh:
+      return exportDeformedMesh(state, path);
+    case FileDialogPurpose::SaveSession:
+      return saveSessionFile(state, path);
+    case FileDialogPurpose::OpenSession:
+      guardUnsaved(state, "open " + path, [path](AppState& s) { loadSessionFile(s, path); });
+      return true;
+    case FileDialogPurpose::Screenshot:
+      state.screenshotRequest = path;
+      return true;
+    case FileDialogPurpose::OpenScene:
+    case FileDialogPurpose::None:
+      break;
+  }
+  return false;
+}
+
+void close(AppState& state, bool saved) {
+  const bool sessionDialog = state.dialog.purpose == FileDialogPurpose::SaveSession;
+  state.dialog.purpose = FileDialogPurpose::None;
+  state.dialog.message.clear();
+  state.dialog.confirmPath.clear();
+  if (sessionDialog) sessionDialogFinished(state, saved);
+}
+
+bool submitScene(AppState& state) {
+  FileDialogState& d = state.dialog;
+  for (auto [kind, path] : {std::pair{FileKind::Mesh, d.mesh}, std::pair{FileKind::Cage, d.cage}}) {
+    const PathCheck check = checkOpenPath(kind, path);
+    if (check.verdict != PathCheck::Verdict::Ok) {
+      d.message = std::string(fileKindInfo(kind).title) + ": " + check.message;
+      return false;
+    }
+  }
+  if (!d.posed.empty()) {
+    const PathCheck check = checkOpenPath(FileKind::PosedCage, d.posed);
+    if (check.verdict != PathCheck::Verdict::Ok) {
+      d.message = "posed cage: " + check.message;
+      return false;
+    }
+  }
+  remember(d, FileKind::Mesh, d.mesh);
+  remember(d, FileKind::Cage, d.cage);
+  if (!d.posed.empty()) remember(d, FileKind::PosedCage, d.posed);
+  const std::string mesh = d.mesh, cage = d.cage, posed = d.posed;
+  close(state, false);
+  guardUnsaved(state, "open " + mesh, [=](AppState& s) { requestSceneFiles(s, mesh, cage, posed); });
+  return true;
+}
+
+}  // namespace
+
+FileKind purposeKind(FileDialogPurpose purpose) { return info(purpose).kind; }
+bool purposeWrites(FileDialogPurpose purpose) { return info(purpose).writes; }
+const char* purposeTitle(FileDialogPurpose purpose) { return info(purpose).title; }
+
+void openFileDialog(AppState& state, FileDialogPurpose purpose) {
+  FileDialogState& d = state.dialog;
+  d.purpose = purpose;
+  d.justOpened = true;
+  d.message.clear();
+  d.confirmPath.clear();
+  const FileKind kind = purpose == FileDialogPurpose::OpenScene ? d.sceneField : purposeKind(purpose);
+  const FilePlace& p = place(d, kind);
+  // The kind's own last folder; a kind not used yet starts where the last file went.
+  d.folder = !p.folder.empty() ? p.folder : !d.recentFolders.empty() ? d.recentFolders.front() : currentFolder();
+  if (purpose == FileDialogPurpose::Screenshot) {
+    d.name = defaultScreenshotName();
+  } else if (purposeWrites(purpose)) {
+    d.name = p.name.empty() ? fileKindInfo(kind).defaultName : p.name;
+  } else {
+    d.name = p.name;
+  }
+  if (purpose == FileDialogPurpose::OpenScene && state.scene && !state.scene->isDemo() && d.mesh.empty()) {
+    d.mesh = state.scene->meshPath;
+    d.cage = state.scene->cagePath;
+  }
+}
+
+std::string dialogPath(const FileDialogState& dialog, const std::string& name) {
+  if (name.empty()) return "";
+  const fs::path typed(name);
+  if (typed.is_absolute()) return typed.lexically_normal().string();
+  return (fs::path(dialog.folder) / typed).lexically_normal().string();
+}
+
+bool submitFileDialog(AppState& state, bool overwriteConfirmed) {
+  FileDialogState& d = state.dialog;
+  if (d.purpose == FileDialogPurpose::None) return true;
+  if (d.purpose == FileDialogPurpose::OpenScene) return submitScene(state);
+  const FileKind kind = purposeKind(d.purpose);
+  const std::string typed = dialogPath(d, d.name);
+  const PathCheck check = purposeWrites(d.purpose) ? checkSavePath(kind, typed) : checkOpenPath(kind, typed);
+  d.confirmPath.clear();
+  if (check.verdict == PathCheck::Verdict::Refuse) {
+    d.message = check.message;
+    return false;
+  }
+  if (check.verdict == PathCheck::Verdict::AskOverwrite && !overwriteConfirmed) {
+    d.message = check.message;
+    d.confirmPath = check.path;
+    return false;
+  }
+  if (!act(state, d.purpose, check.path)) {
+    d.message = state.errors.empty() ? "failed" : state.errors.back();
+    if (!state.errors.empty()) state.errors.pop_back();  // shown in the dialog instead of a second modal
+    return false;
+  }
+  remember(d, kind, check.path);
+  close(state, true);
+  return true;
+}
+
+void cancelFileDialog(AppState& state) { close(state, false); }
+
+// ---- drawing ----
+
+namespace {
+
+// std::string-backed text field (ImGui 1.86 has no std::string overload without imgui_stdlib).
+bool inputText(const char* label, std::string& text, ImGuiInputTextFlags flags = 0) {
+  char buf[1024];
+  std::snprintf(buf, sizeof buf, "%s", text.c_str());
+  const bool changed = ImGui::InputText(label, buf, sizeof buf, flags);
+  if (changed) text = buf;
+  return changed;
+}
+
+// The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
+// names it). Returns true when an entry was opened.
+bool drawRecentFiles(AppState& state) {
+  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
+  if (entries.empty()) return false;
+  ImGui::Spacing();
+  ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "Recent");
+  ImGui::Separator();
+  bool opened = false;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const RecentEntry& e = entries[i];
+    std::string missing;
+    for (const std::string& path : e.paths()) {
+      std::error_code ec;
+      if (!std::filesystem::exists(path, ec)) {
+        missing = path;
+        break;
+      }
+    }
+    ImGui::PushID(static_cast<int>(i));
+    if (!missing.empty()) ImGui::BeginDisabled();
+    const bool clicked = ImGui::Selectable(e.label().c_str(), false, ImGuiSelectableFlags_DontClosePopups);
+    if (!missing.empty()) ImGui::EndDisabled();
+    if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
+      std::string tip;
+      for (const std::string& path : e.paths()) tip += path + "\n";
+      if (!missing.empty()) tip += "missing: " + missing;
+      ImGui::SetTooltip("%s", tip.c_str());
+    }
+    ImGui::PopID();
+    if (clicked && !opened) {
+      openRecent(state, e);
+      opened = true;
+    }
+  }
+  return opened;
+}
+
+// Parent / Home / recent folders, the typed folder, and the listing. A click on a file puts its name in `name`;
+// a double click also returns true (OK).
+bool drawBrowser(FileDialogState& d, const std::string& extension, std::string& name) {
+  if (ImGui::Button("Parent")) d.folder = fs::path(d.folder).parent_path().string();
+  tooltip("Go to the folder above (Backspace in the list does the same)");
+  ImGui::SameLine();
+  const char* home = std::getenv("HOME");
+  if (ImGui::Button("Home") && home) d.folder = home;
+  tooltip("Go to your home folder");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::BeginCombo("##recent", "Recent folders")) {
+    for (const std::string& f : d.recentFolders) {
+      if (ImGui::Selectable(f.c_str())) d.folder = f;
+    }
+    if (d.recentFolders.empty()) ImGui::TextDisabled("(none yet)");
+    ImGui::EndCombo();
+  }
+  tooltip("Folders used in this session, most recent first");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  inputText("##folder", d.folder);
+  tooltip("The folder shown below; type one to go there");
+
+  std::string error;
+  const std::vector<FolderEntry> entries = listFolder(d.folder, extension, error);
+  bool accepted = false;
+  ImGui::BeginChild("##list", ImVec2(0, 220), true);
+  if (!error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.5f, 0.4f, 1.0f), "%s", error.c_str());
+  std::string enter;
+  for (const FolderEntry& e : entries) {
+    const std::string label = e.folder ? "[" + e.name + "]" : e.name;
+    const bool selected = !e.folder && e.name == name;
+    if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (e.folder) {
+        enter = e.name;
+      } else {
+        name = e.name;
+        if (ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) accepted = true;
+      }
+    }
+  }
+  if (entries.empty() && error.empty()) ImGui::TextDisabled("(no folders or %s files here)", extension.c_str());
+  ImGui::EndChild();
+  if (!enter.empty()) d.folder = (fs::path(d.folder) / enter).string();
+  return accepted;
+}
+
+}  // namespace
+
+void drawFileDialog(AppState& state) {
+  FileDialogState& d = state.dialog;
+  if (d.purpose == FileDialogPurpose::None) return;
+  const char* title = purposeTitle(d.purpose);
+  if (d.justOpened) {
+    ImGui::OpenPopup(title);
+    d.justOpened = false;
+    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
+  }
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  // Height 0, always: the dialog grows with its message and never clips its buttons.
+  ImGui::SetNextWindowSize(ImVec2(std::min(640.0f, vp->Size.x - 20.0f), 0), ImGuiCond_Always);
+  if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
+    if (d.purpose != FileDialogPurpose::None) cancelFileDialog(state);
+    return;
+  }
+  bool ok = false;
+  if (d.purpose == FileDialogPurpose::OpenScene) {
+    const std::pair<FileKind, std::string*> fields[] = {
+        {FileKind::Mesh, &d.mesh}, {FileKind::Cage, &d.cage}, {FileKind::PosedCage, &d.posed}};
+    for (const auto& [kind, text] : fields) {
+      ImGui::PushID(static_cast<int>(kind));
+      if (ImGui::RadioButton("##field", d.sceneField == kind)) d.sceneField = kind;
+      tooltip("The file list below fills this field");
+      ImGui::SameLine();
+      if (inputText(kind == FileKind::PosedCage ? "posed cage (optional)" : fileKindInfo(kind).title, *text))
+        d.sceneField = kind;
+      ImGui::PopID();
+    }
+    std::string* target = d.sceneField == FileKind::Mesh   ? &d.mesh
+                          : d.sceneField == FileKind::Cage ? &d.cage
+                                                           : &d.posed;
+    std::string name = fs::path(*target).filename().string();
+    const std::string before = name;
+    ok = drawBrowser(d, ".obj", name);
+    if (name != before) *target = dialogPath(d, name);
+    ImGui::TextDisabled("or drop the files on the window");
+    if (drawRecentFiles(state)) {
+      cancelFileDialog(state);
+      ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+      return;
+    }
+  } else {
+    const FileKindInfo& kind = fileKindInfo(purposeKind(d.purpose));
+    ok = drawBrowser(d, kind.extension, d.name);
+    ImGui::SetNextItemWidth(-80);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    if (inputText("file name", d.name, ImGuiInputTextFlags_EnterReturnsTrue)) ok = true;
+    if (ImGui::IsItemDeactivated() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) ok = true;
+    tooltip("A name in the folder above, or a whole path. The extension is added when missing.");
+    ImGui::TextDisabled("%s files (%s)", kind.title, kind.extension);
+  }
+  if (!d.message.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.4f, 1.0f));
+    ImGui::TextWrapped("%s", d.message.c_str());
+    ImGui::PopStyleColor();
+  }
+  bool cancel = false;
+  if (!d.confirmPath.empty()) {
+    if (ImGui::Button("Replace")) submitFileDialog(state, true);
+    ImGui::SameLine();
+    if (ImGui::Button("Keep it")) {
+      d.confirmPath.clear();
+      d.message.clear();
+    }
+  } else {
+    ok |= ImGui::Button("OK");
+    ImGui::SameLine();
+    cancel = ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape));
+    if (ok) submitFileDialog(state);
+  }
+  if (cancel) cancelFileDialog(state);
+  if (d.purpose == FileDialogPurpose::None) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,207 @@
+// The file dialogs' rules without a window (file_rules.h, file_dialog.h): per-kind folders and names, the
+// overwrite question, refusal of foreign extensions and of foreign content (the case: Export deformed
+// mesh over a session JSON), the folder listing of the browser; and the unsaved-changes state machine
+// (unsaved_changes.h) for quit, open and demo, with the autosave surviving Cancel.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "app_state.h"
+#include "autosave.h"
+#include "file_util.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+namespace fs = std::filesystem;
+
+namespace {
+
+class Folder : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = fs::path(::testing::TempDir()) /
+           ("somicage_files_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(root);
+    fs::create_directories(root / "sub");
+  }
+  void TearDown() override { fs::remove_all(root); }
+  std::string path(const std::string& name) const { return (root / name).string(); }
+  void write(const std::string& name, const std::string& text) const { std::ofstream(root / name) << text; }
+  fs::path root;
+};
+
+// The 3D demo, installed.
+void openDemo(AppState& state) {
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  installOutcome(state, std::move(*out));
+  ASSERT_TRUE(state.scene);
+}
+
+void makeAChange(AppState& state) {
+  Eigen::MatrixXd p = state.pose;
+  p(0, 0) += 0.3;
+  setPose(state, p);
+  commitEdit(state, "Grab");
+}
+
+}  // namespace
+
+TEST_F(Folder, ContentIsJudgedByTheBytesNotTheName) {
+  write("s.obj", "{\n  \"format\": \"somicage-session\",\n  \"version\": 1\n}\n");
+  write("m.json", "# mesh\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  write("other.json", "{\"hello\": 1}");
+  write("text.obj", "hello world\n");
+  EXPECT_EQ(sniffFileContent(path("s.obj")), FileContent::Session);
+  EXPECT_EQ(sniffFileContent(path("m.json")), FileContent::Obj);
+  EXPECT_EQ(sniffFileContent(path("other.json")), FileContent::Other);
+  EXPECT_EQ(sniffFileContent(path("text.obj")), FileContent::Other);
+  EXPECT_EQ(sniffFileContent(path("sub")), FileContent::Folder);
+  EXPECT_EQ(sniffFileContent(path("none")), FileContent::Missing);
+}
+
+TEST_F(Folder, SaveChecksAskRefuseAndAddTheExtension) {
+  write("my_session.json", "{\"format\": \"somicage-session\", \"version\": 1}");
+  write("old.obj", "v 0 0 0\n");
+  PathCheck c = checkSavePath(FileKind::DeformedMesh, path("new"));
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::Ok);
+  EXPECT_EQ(c.path, path("new.obj"));
+  c = checkSavePath(FileKind::DeformedMesh, path("old.obj"));
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::AskOverwrite);
+  c = checkSavePath(FileKind::DeformedMesh, path("my_session.json"));  // foreign extension
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::Refuse);
+  EXPECT_NE(c.message.find(".obj"), std::string::npos) << c.message;
+  c = checkSavePath(FileKind::Session, path("my_session.json"));
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::AskOverwrite);
+  c = checkSavePath(FileKind::Session, path("old.json"));
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::Ok);
+  // Foreign content under the right extension: a session renamed .obj is never written over by a mesh.
+  fs::copy_file(root / "my_session.json", root / "renamed.obj");
+  c = checkSavePath(FileKind::PosedCage, path("renamed.obj"));
+  EXPECT_EQ(c.verdict, PathCheck::Verdict::Refuse);
+  EXPECT_NE(c.message.find("session"), std::string::npos) << c.message;
+  EXPECT_EQ(checkSavePath(FileKind::Session, path("sub")).verdict, PathCheck::Verdict::Refuse);
+  EXPECT_EQ(checkSavePath(FileKind::Session, path("missing/x.json")).verdict, PathCheck::Verdict::Refuse);
+  EXPECT_EQ(checkSavePath(FileKind::Session, "").verdict, PathCheck::Verdict::Refuse);
+  EXPECT_EQ(checkOpenPath(FileKind::Session, path("old.obj")).verdict, PathCheck::Verdict::Refuse);
+  EXPECT_EQ(checkOpenPath(FileKind::Session, path("my_session.json")).verdict, PathCheck::Verdict::Ok);
+}
+
+TEST_F(Folder, TheBrowserListsFoldersThenFilesOfTheKind) {
+  write("b.obj", "v 0 0 0\n");
+  write("a.OBJ", "v 0 0 0\n");
+  write("c.json", "{}");
+  write(".hidden.obj", "v 0 0 0\n");
+  std::string error;
+  const std::vector<FolderEntry> list = listFolder(root.string(), ".obj", error);
+  EXPECT_TRUE(error.empty());
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_TRUE(list[0].folder);
+  EXPECT_EQ(list[0].name, "sub");
+  EXPECT_EQ(list[1].name, "a.OBJ");
+  EXPECT_EQ(list[2].name, "b.obj");
+  EXPECT_TRUE(listFolder(path("nope"), ".obj", error).empty());
+  EXPECT_FALSE(error.empty());
+  std::vector<std::string> recent;
+  for (const char* f : {"/a", "/b", "/a", "/c"}) noteFolder(recent, f, 2);
+  EXPECT_EQ(recent, (std::vector<std::string>{"/c", "/a"}));
+}
+
+TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
+  AppState state;
+  openDemo(state);
+  makeAChange(state);
+  // Save session to my_session.json through the dialog.
+  openFileDialog(state, FileDialogPurpose::SaveSession);
+  state.dialog.name = path("my_session.json");
+  ASSERT_TRUE(submitFileDialog(state));
+  const std::string session = readTextFile(path("my_session.json"));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  // The export dialog starts with its own name, in the folder the session went to...
+  openFileDialog(state, FileDialogPurpose::ExportMesh);
+  EXPECT_EQ(state.dialog.name, "deformed.obj");
+  EXPECT_EQ(state.dialog.folder, root.string());
+  // ... and typing the session's name is refused: the session stays as it was.
+  state.dialog.name = "my_session.json";
+  EXPECT_FALSE(submitFileDialog(state));
+  EXPECT_FALSE(state.dialog.message.empty());
+  EXPECT_EQ(readTextFile(path("my_session.json")), session);
+  // The export's own name works; a second export to it asks first, and only "Replace" writes.
+  state.dialog.name = "deformed.obj";
+  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
+  ASSERT_TRUE(fs::exists(path("deformed.obj")));
+  openFileDialog(state, FileDialogPurpose::ExportMesh);
+  EXPECT_EQ(state.dialog.name, "deformed.obj");
+  fs::remove(path("deformed.obj"));
+  write("deformed.obj", "# placeholder\n");
+  EXPECT_FALSE(submitFileDialog(state));
+  EXPECT_EQ(state.dialog.confirmPath, path("deformed.obj"));
+  EXPECT_EQ(readTextFile(path("deformed.obj")), "# placeholder\n");
+  EXPECT_TRUE(submitFileDialog(state, true));
+  EXPECT_NE(readTextFile(path("deformed.obj")), "# placeholder\n");
+  // The session dialog kept its own name.
+  openFileDialog(state, FileDialogPurpose::SaveSession);
+  EXPECT_EQ(state.dialog.name, "my_session.json");
+  cancelFileDialog(state);
+}
+
+TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
+  AppState state;
+  openDemo(state);
+  requestQuit(state);  // nothing changed: quits at once
+  EXPECT_TRUE(state.quitRequested);
+  state.quitRequested = false;
+
+  makeAChange(state);
+  Autosave autosave(autosavePaths(root.c_str(), nullptr), 0.0);
+  autosave.begin();
+  ASSERT_TRUE(autosave.tick(makeSession(state), 1.0));
+  ASSERT_TRUE(fs::exists(autosave.paths().session));
+
+  requestQuit(state);
+  ASSERT_TRUE(state.unsaved.asking.has_value());
+  EXPECT_FALSE(state.quitRequested);
+  answerUnsaved(state, UnsavedChoice::Cancel);
+  EXPECT_FALSE(state.quitRequested);
+  EXPECT_FALSE(state.unsaved.asking.has_value());
+  EXPECT_TRUE(fs::exists(autosave.paths().session));  // Cancel keeps the autosave: the work is not lost
+
+  // Opening the 2D demo: Don't save goes on and drops the changes.
+  guardUnsaved(state, "open the 2D demo", [](AppState& s) { requestDemo(s, 2); });
+  EXPECT_FALSE(state.loadingScene);
+  answerUnsaved(state, UnsavedChoice::DontSave);
+  EXPECT_TRUE(state.loadingScene);
+  state.worker.cancel();
+  state.worker.wait();
+  state.loadingScene = false;
+
+  // Save with no session file yet: the Save session dialog first, then the action once it saved.
+  requestQuit(state);
+  answerUnsaved(state, UnsavedChoice::Save);
+  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::SaveSession);
+  EXPECT_FALSE(state.quitRequested);
+  state.dialog.name = path("saved.json");
+  ASSERT_TRUE(submitFileDialog(state));
+  EXPECT_TRUE(state.quitRequested);
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  EXPECT_TRUE(fs::exists(path("saved.json")));
+
+  // Save with a session file: saved there, then the action. Cancelling the Save dialog cancels the action.
+  state.quitRequested = false;
+  makeAChange(state);
+  requestQuit(state);
+  answerUnsaved(state, UnsavedChoice::Save);
+  EXPECT_TRUE(state.quitRequested);
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  state.quitRequested = false;
+  state.documentPath.clear();
+  makeAChange(state);
+  requestQuit(state);
+  answerUnsaved(state, UnsavedChoice::Save);
+  cancelFileDialog(state);
+  EXPECT_FALSE(state.quitRequested);
+  EXPECT_TRUE(fs::exists(autosave.paths().session));
+  autosave.finish();
+}

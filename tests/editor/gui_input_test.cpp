@@ -1,0 +1,235 @@
+// The editor driven by real X events (xdotool, XTEST) under xvfb-run, as a user would: a handle drag, Reset pose
+// and Ctrl+Z give the dragged picture back; eight instant taps at a low frame rate all act; Export after
+// Save session cannot overwrite the session; Ctrl+Q with unsaved changes asks, Esc keeps the editor open, D quits.
+// Each scenario runs one editor (a few seconds). Progress is read from --log-actions (the keyboard commands and
+// the new undo steps, one line each), polled with bounded timeouts, never fixed sleeps alone. Skips visibly
+// without xvfb-run, xdotool or ImageMagick's import.
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "app_state.h"
+#include "layout.h"
+#include "panels.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace somicage;
+using namespace somicage::editor;
+
+const std::string kExe = SOMICAGE_EXE;
+const std::string kXvfbRun = SOMICAGE_XVFB_RUN;
+constexpr int kWidth = 1000, kHeight = 700;
+
+bool onPath(const char* tool) {
+  return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0;
+}
+
+#define SKIP_WITHOUT_X_TOOLS()                                                                             \
+  do {                                                                                                     \
+    if (kXvfbRun.empty()) GTEST_SKIP() << "xvfb-run not found (apt-get install xvfb xauth)";               \
+    if (!onPath("xdotool")) GTEST_SKIP() << "xdotool not found (apt-get install xdotool)";                 \
+    if (!onPath("import")) GTEST_SKIP() << "ImageMagick's import not found (apt-get install imagemagick)"; \
+  } while (0)
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// Shell helpers every scenario gets: start the editor, wait for log lines, screenshot, wait for the exit.
+const char* kPrelude = R"SH(set -u
+log=app.log
+start() { "$EXE" --size 1000x700 --log-actions "$@" > "$log" 2>&1 & pid=$!
+  timeout 30 xdotool search --sync --onlyvisible --name 'SomiCage' > /dev/null || { echo "no window"; exit 3; }
+  xdotool mousemove 700 400; waitfor 'action ' 0 1; sleep 1; }
+# waitfor PATTERN COUNT SECONDS: until the log has COUNT lines starting with PATTERN
+waitfor() { local n=0; for i in $(seq 1 $(( $3 * 20 ))); do n=$(grep -c "^$1" "$log"); [ "$n" -ge "$2" ] && return 0; sleep 0.05; done
+  echo "timeout waiting for $2 x '$1' (have $n)"; return 1; }
+settle() { sleep 1.2; }  # a few frames at the slowest frame rate used here
+shot() { import -window root "$1"; }
+alive() { kill -0 $pid 2>/dev/null; }
+finish() { for i in $(seq 1 100); do alive || { wait $pid; echo "exit $?"; return 0; }; sleep 0.1; done; kill $pid; echo "killed"; }
+)SH";
+
+// Runs `script` (with the prelude) in `dir` under xvfb-run; returns its output.
+std::string runScenario(const fs::path& dir, const std::string& script) {
+  fs::remove_all(dir);
+  fs::create_directories(dir / "config");
+  std::ofstream(dir / "scenario.sh") << kPrelude << script;
+  const std::string cmd = "cd '" + dir.string() + "' && EXE='" + kExe + "' XDG_CONFIG_HOME='" +
+                          (dir / "config").string() + "' timeout 120 '" + kXvfbRun +
+                          "' -a -s '-screen 0 1000x700x24' bash scenario.sh > out.txt 2>&1";
+  std::system(cmd.c_str());
+  return readText(dir / "out.txt") + "\n--- editor log:\n" + readText(dir / "app.log");
+}
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;
+};
+
+Image load(const fs::path& png) {
+  Image im;
+  int channels = 0;
+  unsigned char* data = stbi_load(png.c_str(), &im.width, &im.height, &channels, 3);
+  if (data) im.rgb.assign(data, data + 3 * im.width * im.height);
+  stbi_image_free(data);
+  return im;
+}
+
+// The share of pixels inside `r` (shrunk by `margin`) whose colour differs by more than 40 in some channel.
+double changedShare(const Image& a, const Image& b, const ViewRect& r, int margin) {
+  long changed = 0, total = 0;
+  for (int y = static_cast<int>(r.y) + margin; y < static_cast<int>(r.y + r.height) - margin; ++y) {
+    for (int x = static_cast<int>(r.x) + margin; x < static_cast<int>(r.x + r.width) - margin; ++x) {
+      const std::size_t i = 3 * (static_cast<std::size_t>(y) * a.width + x);
+      bool differs = false;
+      for (int c = 0; c < 3; ++c) differs |= std::abs(int(a.rgb[i + c]) - int(b.rgb[i + c])) > 40;
+      changed += differs;
+      ++total;
+    }
+  }
+  return total ? static_cast<double>(changed) / static_cast<double>(total) : 1.0;
+}
+
+// The 3D demo's viewport and a handle's pixel, computed the way the editor frames the demo at this size (the
+// ImGui 1.86 default font: 19-pixel menu bar, 25-pixel status bar).
+struct DemoView {
+  ViewRect view;
+  Eigen::Vector2d handle;
+};
+
+DemoView demoView() {
+  AppState state;
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  installOutcome(state, std::move(*out));
+  const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
+  state.viewAspect = view.width / view.height;
+  frameAll(state);
+  // A handle well apart from the others on screen: the drag picks it and nothing else.
+  const Eigen::MatrixXd& pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i) {
+    Eigen::Vector2d p;
+    state.camera.project(pose.row(i).transpose(), view.width, view.height, p);
+    double nearest = 1e9;
+    for (Eigen::Index j = 0; j < pose.rows(); ++j) {
+      Eigen::Vector2d q;
+      state.camera.project(pose.row(j).transpose(), view.width, view.height, q);
+      if (j != i) nearest = std::min(nearest, (p - q).norm());
+    }
+    if (nearest > 40 && p.x() > 60 && p.y() > 60 && p.x() < view.width - 60 && p.y() < view.height - 60)
+      return {view, p + view.origin()};
+  }
+  return {view, Eigen::Vector2d(-1, -1)};
+}
+
+const fs::path kOut = fs::path(SOMICAGE_TEST_TMP) / "gui_input";
+
+}  // namespace
+
+TEST(GuiInput, DragResetPoseAndUndoRestoreTheDraggedPicture) {
+  SKIP_WITHOUT_X_TOOLS();
+  const DemoView demo = demoView();
+  ASSERT_GE(demo.handle.x(), 0) << "no isolated handle in the demo view";
+  const int hx = static_cast<int>(demo.handle.x()), hy = static_cast<int>(demo.handle.y());
+  std::ostringstream script;
+  script << "start\nshot rest.png\n"
+         << "xdotool mousemove " << hx << " " << hy << "; sleep 0.5; xdotool mousedown 1; sleep 0.4\n"
+         << "for d in 10 20 30 40 50 60; do xdotool mousemove " << hx << " $((" << hy << " - d)); sleep 0.15; done\n"
+         << "sleep 0.4; xdotool mouseup 1\nwaitfor 'step Grab' 1 15 || exit 4\n"
+         // Nothing selected for the pictures: no gizmo or highlight, only the cage and the mesh.
+         << "xdotool mousemove 150 690; xdotool key alt+a; waitfor 'action select_none' 1 15 || exit 4\n"
+         << "settle; shot dragged.png\n"
+         << "xdotool key alt+shift+r; waitfor 'step Reset pose' 1 15 || exit 4\nsettle; shot reset.png\n"
+         << "xdotool key ctrl+z; waitfor 'action undo' 1 15 || exit 4\nsettle; shot undone.png\n"
+         << "xdotool key ctrl+q; sleep 1; alive && xdotool key d; finish\n";
+  const fs::path dir = kOut / "drag";
+  const std::string out = runScenario(dir, script.str());
+  const Image rest = load(dir / "rest.png"), dragged = load(dir / "dragged.png"), reset = load(dir / "reset.png"),
+              undone = load(dir / "undone.png");
+  ASSERT_FALSE(undone.rgb.empty()) << out;
+  // The view without its top 40 pixels (method label) and a margin.
+  ViewRect r = demo.view;
+  r.y += 40;
+  r.height -= 40;
+  const double moved = changedShare(rest, dragged, r, 4);
+  const double backToRest = changedShare(rest, reset, r, 4);
+  const double backToDragged = changedShare(dragged, undone, r, 4);
+  // Lifting a handle by 60 pixels moves its cage edges and bends the bar: measured 0.4 % of the view. Reset and
+  // undo give the earlier pictures back: no pixel may differ beyond rasterisation noise (0.01 %).
+  EXPECT_GT(moved, 0.002) << out;
+  EXPECT_LT(backToRest, 0.0001) << out;
+  EXPECT_LT(backToDragged, 0.0001) << out;
+  std::printf("changed pixels: drag %.4f %%, reset vs rest %.4f %%, undo vs dragged %.4f %%\n", 100 * moved,
+              100 * backToRest, 100 * backToDragged);
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
+
+TEST(GuiInput, EightInstantTapsAtALowFrameRateAllAct) {
+  SKIP_WITHOUT_X_TOOLS();
+  // --frame-delay 150: at most ~6 frames per second; eight taps of F (Frame all) sent 1 ms apart, then Ctrl+Z.
+  const std::string out = runScenario(kOut / "taps",
+                                      "start --frame-delay 150\n"
+                                      "xdotool key --delay 1 f f f f f f f f\n"
+                                      "waitfor 'action frame' 8 20\n"
+                                      "xdotool key ctrl+z; waitfor 'action undo' 1 10\n"
+                                      "xdotool key ctrl+q; finish\n");
+  std::size_t taps = 0;
+  for (std::size_t at = out.find("action frame"); at != std::string::npos; at = out.find("action frame", at + 1))
+    ++taps;
+  EXPECT_EQ(taps, 8u) << out;
+  EXPECT_NE(out.find("action undo"), std::string::npos) << out;
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
+
+TEST(GuiInput, ExportAfterSavingASessionLeavesTheSessionIntact) {
+  SKIP_WITHOUT_X_TOOLS();
+  const fs::path dir = kOut / "export";
+  const std::string session = "my_session.json";  // typed into the dialogs: a name in their folder, the current one
+  // A change (select all, scale by 0.5), Ctrl+S (Save session: a name is asked the first time), then Ctrl+E
+  // (Export deformed mesh) with the session's name typed: refused; Esc closes the dialog.
+  const std::string out =
+      runScenario(dir,
+                  "start\nxdotool key a s 0 period 5 Return; waitfor 'step Scale' 1 15 || exit 4\n"
+                  "xdotool key ctrl+s; waitfor 'dialog Save session' 1 15 || exit 4\n"
+                  "settle; xdotool key ctrl+a; xdotool type --delay 20 '" +
+                      session +
+                      "'\n"
+                      "xdotool key Return; for i in $(seq 1 300); do [ -f my_session.json ] && break; sleep 0.1; done\n"
+                      "settle; cp my_session.json saved_copy.json\n"
+                      "xdotool key ctrl+e; waitfor 'dialog Export deformed mesh' 1 15 || exit 4\n"
+                      "settle; xdotool key ctrl+a; xdotool type --delay 20 '" +
+                      session +
+                      "'\n"
+                      "xdotool key Return; settle; shot refused.png; xdotool key Escape; settle\n"
+                      "xdotool key ctrl+q; finish\n");
+  ASSERT_TRUE(fs::exists(dir / "saved_copy.json")) << out;
+  EXPECT_EQ(readText(dir / "my_session.json"), readText(dir / "saved_copy.json")) << out;
+  EXPECT_NE(readText(dir / "my_session.json").find("somicage-session"), std::string::npos);
+  // Ctrl+Q asked nothing: the save made the document clean.
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
+
+TEST(GuiInput, QuitWithUnsavedChangesAsks) {
+  SKIP_WITHOUT_X_TOOLS();
+  const std::string out = runScenario(kOut / "quit",
+                                      "start\nxdotool key a s 2 Return; waitfor 'step Scale' 1 15 || exit 4\n"
+                                      "xdotool key ctrl+q; settle; alive && echo 'asked: still running'\n"
+                                      "shot asking.png; xdotool key Escape; settle\n"
+                                      "alive && echo 'cancelled: still running'\n"
+                                      "xdotool key ctrl+q; settle; xdotool key d; finish\n");
+  EXPECT_NE(out.find("asked: still running"), std::string::npos) << out;
+  EXPECT_NE(out.find("cancelled: still running"), std::string::npos) << out;
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;  // D (Don't save) quits cleanly
+}
