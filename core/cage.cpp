@@ -48,17 +48,23 @@ void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points) {
   SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
 }
 
+double signedTetrahedronVolume(const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c) {
+  return (a - o).dot((b - o).cross(c - o)) / 6.0;
+}
+
+double signedTriangleArea(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, w = c - a;
+  return 0.5 * (u.x() * w.y() - u.y() * w.x());
+}
+
 double signedFaceMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces, int j,
                          const Eigen::RowVectorXd& origin) {
-  if (vertices.cols() == 3) {
-    const Eigen::Vector3d a = (vertices.row(faces(j, 0)) - origin).transpose();
-    const Eigen::Vector3d b = (vertices.row(faces(j, 1)) - origin).transpose();
-    const Eigen::Vector3d c = (vertices.row(faces(j, 2)) - origin).transpose();
-    return a.dot(b.cross(c)) / 6.0;
-  }
-  const Eigen::Vector2d a = (vertices.row(faces(j, 0)) - origin).transpose();
-  const Eigen::Vector2d b = (vertices.row(faces(j, 1)) - origin).transpose();
-  return 0.5 * (a.x() * b.y() - a.y() * b.x());
+  if (vertices.cols() == 3)
+    return signedTetrahedronVolume(origin.transpose(), vertices.row(faces(j, 0)).transpose(),
+                                   vertices.row(faces(j, 1)).transpose(), vertices.row(faces(j, 2)).transpose());
+  return signedTriangleArea(origin.transpose(), vertices.row(faces(j, 0)).transpose(),
+                            vertices.row(faces(j, 1)).transpose());
 }
 
 double signedMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces) {

@@ -25,6 +25,13 @@ Cage makePolygonCage(const Eigen::MatrixXd& loop);
 Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices);
 Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices);
 
+// The signed volume of the tetrahedron (o, a, b, c) and the signed area of the triangle (a, b, c): positive when
+// counter-clockwise seen from outside (3D: from the side b - a x c - a points to), the one term of every signed
+// volume and area below and in deformation_quantities.h / offset_surface.cpp.
+double signedTetrahedronVolume(const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c);
+double signedTriangleArea(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
 // Face j's share of the signed volume (3D: triangles) or area (2D: edges) of faces over vertices, measured from
 // origin (1 by d): the tetrahedron (origin, face) or triangle (origin, edge). Summed over a closed surface it is
 // the enclosed measure, positive when the normals point out; an origin near the faces keeps the sum's

@@ -23,6 +23,7 @@ struct DeformParams {
   double nu = 0.0;                 // Poisson ratio in (-1, 0.5), or +-infinity
   double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
+  bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_method.cpp)
 };
 
 // Throws InputError naming the parameter when a value is out of range or NaN.
@@ -61,6 +62,13 @@ class CageDeformer {
 
   // The per-frame weight matrix W for a posed cage (#V by d, rest cage order). Validates params.
   virtual FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const = 0;
+
+  // The exact gradients dC_p/dx_a (a < d) of the point rows of C (#P rows, C's columns and storage each) for the
+  // deformation gradient (jacobian.h), from dual numbers through the method's closed forms; the rows of points
+  // that are not Inside (diagnostics().regions) are zero. Integrates again: build them only while a J-based
+  // quantity is in use. points: the points the deformer was made for.
+  virtual std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                            const ProgressCallback& progress) const = 0;
 
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include "dual_eigen.h"
+
 namespace somicage {
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -30,91 +32,110 @@ void clear(EdgeIntegrals& out) {
 }
 
 // t - atan(t), accurate for small t (the difference cancels as t^3/3).
-double tMinusAtan(double t) {
-  if (std::abs(t) >= 0.5) return t - std::atan(t);
-  const double q = t * t;
-  double power = t * q, sum = 0;
+template <typename Scalar>
+Scalar tMinusAtan(const Scalar& t) {
+  using std::abs, std::atan;
+  if (abs(t) >= 0.5) return t - atan(t);
+  const Scalar q = t * t;
+  Scalar power = t * q, sum = 0;
   for (int k = 1; k < 64; ++k) {
-    const double term = power / (2 * k + 1);
+    const Scalar term = power / (2 * k + 1);
     sum += (k % 2 == 1) ? term : -term;
-    if (std::abs(term) <= 1e-17 * std::abs(sum)) break;
+    if (abs(term) <= 1e-17 * abs(sum)) break;
     power *= q;
   }
   return sum;
 }
 
 // atan(t) - t/(1 + t^2) = sum_{k>=1} (-1)^{k+1} 2k/(2k+1) t^{2k+1}, accurate for small t (cancels as 2t^3/3).
-double atanMinusRational(double t) {
-  if (std::abs(t) >= 0.5) return std::atan(t) - t / (1 + t * t);
-  const double q = t * t;
-  double power = t * q, sum = 0;
+template <typename Scalar>
+Scalar atanMinusRational(const Scalar& t) {
+  using std::abs, std::atan;
+  if (abs(t) >= 0.5) return atan(t) - t / (1 + t * t);
+  const Scalar q = t * t;
+  Scalar power = t * q, sum = 0;
   for (int k = 1; k < 64; ++k) {
-    const double term = power * (2.0 * k) / (2 * k + 1);
+    const Scalar term = power * (2.0 * k) / (2 * k + 1);
     sum += (k % 2 == 1) ? term : -term;
-    if (std::abs(term) <= 1e-17 * std::abs(sum)) break;
+    if (abs(term) <= 1e-17 * abs(sum)) break;
     power *= q;
   }
   return sum;
 }
 
-}  // namespace
+// s = a tt + b tn + c nn for symmetric 2x2 double matrices and Scalar weights.
+template <typename Scalar>
+void combine(const Scalar& a, const Eigen::Matrix2d& tt, const Scalar& b, const Eigen::Matrix2d& tn, const Scalar& c,
+             const Eigen::Matrix2d& nn, Scalar (&s)[2][2]) {
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j) s[i][j] = a * tt(i, j) + b * tn(i, j) + c * nn(i, j);
+}
 
-void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
+// integrateEdgeOf for the point at xi along the edge and h along its normal from p0 (h = -0 on the edge: the limit
+// from inside, see integrateEdgeInteriorLimit).
+template <typename Scalar>
+void integrateEdgeLocalOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar& xi, const Scalar& h,
+                          EdgeIntegralsOf<Scalar>& out) {
+  using std::atan2, std::log, std::log1p;
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
-  clear(out);
+  out.S = out.angle = 0;
+  for (int k = 0; k < 2; ++k) {
+    out.D[k] = out.A[k] = 0;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j) out.M[i][j] = out.B[k][i][j] = 0;
+  }
   if (l == 0) return;  // a zero-length edge carries no boundary
 
-  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x()), d = x - p0;
-  const double xi = d.dot(tau), h = d.dot(n);
-  const double u0 = -xi, u1 = l - xi;
-  const double hh = h * h, u01 = u0 * u1;
-  const double R0sq = u0 * u0 + hh, R1sq = u1 * u1 + hh;
+  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
+  const Scalar u0 = -xi, u1 = l - xi;
+  const Scalar hh = h * h, u01 = u0 * u1;
+  const Scalar R0sq = u0 * u0 + hh, R1sq = u1 * u1 + hh;
 
   // theta = h int du/R^2, the signed angle subtended (one atan2: exact for both signs of h and for h = 0).
   // With c = h^2 + u0 u1 and y = h l: theta = atan2(y, c), and R0^2 R1^2 = c^2 + y^2 exactly.
-  const double c = hh + u01, y = h * l;
-  const double theta = std::atan2(y, c);
-  const double P = R0sq * R1sq;
+  const Scalar c = hh + u01, y = h * l;
+  const Scalar theta = atan2(y, c);
+  const Scalar P = R0sq * R1sq;
 
   // L = int u/R^2 = ln(R1/R0), from the larger of the two radii so that log1p's argument is >= 0
   // (R1^2 - R0^2 = l (u0 + u1) has no cancellation).
-  const double sumU = u0 + u1;
+  const Scalar sumU = u0 + u1;
   const bool farEnd1 = R1sq >= R0sq;
-  const double L = farEnd1 ? 0.5 * std::log1p(l * sumU / R0sq) : -0.5 * std::log1p(-l * sumU / R1sq);
+  const Scalar L = farEnd1 ? 0.5 * log1p(l * sumU / R0sq) : -0.5 * log1p(-l * sumU / R1sq);
 
   // I2 = int u^2/R^2 = l - h theta;   W0 = h^3 int du/R^4 = (theta + h [u/R^2])/2;
   // V2 = h int u^2/R^4 = (theta - h [u/R^2])/2, with h [u/R^2]_{u0}^{u1} = y (h^2 - u0 u1)/P.
   // Away from the edge (c > 0, |y| <= c, so t = y/c = tan(theta)) each of them is a difference of O(1) terms
   // that cancel to O(t^2): rewritten with t - atan t and atan t - t/(1+t^2), the remaining terms share a sign
   // (W0, and I2 / V2 when u0 u1 >= 0) or cancel by at most a small constant factor (u0 u1 < 0 needs h^2 > |u0 u1|).
-  double I2, W0, V2;
-  if (c > 0 && std::abs(y) <= c) {
-    const double t = y / c;
-    const double g = atanMinusRational(t);
+  Scalar I2, W0, V2;
+  if (c > 0 && valueOf(y) <= valueOf(c) && -valueOf(y) <= valueOf(c)) {
+    const Scalar t = y / c;
+    const Scalar g = atanMinusRational(t);
     I2 = h * tMinusAtan(t) + u01 * l / c;
     W0 = 0.5 * (g + 2 * hh * y / P);
     V2 = 0.5 * (g + 2 * u01 * y / P);
   } else {
     // Near the edge: theta is O(1) and the terms do not cancel.
-    const double hBracket = y * (hh - u01) / P;
+    const Scalar hBracket = y * (hh - u01) / P;
     I2 = l - h * theta;
     W0 = 0.5 * (theta + hBracket);
     V2 = 0.5 * (theta - hBracket);
   }
   // E1 = int u/R^4 = (1/R0^2 - 1/R1^2)/2, written without the difference.
-  const double E1 = 0.5 * l * sumU / P;
+  const Scalar E1 = 0.5 * l * sumU / P;
   // V3 = h int u^3/R^4 = h (L - h^2 E1).
-  const double V3 = h * (L - hh * E1);
+  const Scalar V3 = h * (L - hh * E1);
 
   // S = int ln(1/R) = -1/2 int ln(u^2 + h^2) = l - h theta - [u ln R]_{u0}^{u1} = I2 - Lambda. Lambda is split
   // around the farther endpoint: the remaining u_near * L tends to 0 (0 log 0 := 0) as x approaches the near end,
   // and is O(l) far away, where u1 ln R1 - u0 ln R0 would cancel.
-  double Lambda;
+  Scalar Lambda;
   if (farEnd1) {
-    Lambda = 0.5 * l * std::log(R1sq) + (u0 == 0 ? 0.0 : u0 * L);
+    Lambda = 0.5 * l * log(R1sq) + (u0 == 0 ? Scalar(0.0) : u0 * L);
   } else {
-    Lambda = 0.5 * l * std::log(R0sq) + (u1 == 0 ? 0.0 : u1 * L);
+    Lambda = 0.5 * l * log(R0sq) + (u1 == 0 ? Scalar(0.0) : u1 * L);
   }
   out.S = I2 - Lambda;
 
@@ -124,7 +145,7 @@ void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const E
   const Eigen::Matrix2d nn = n * n.transpose();
 
   // M = int r r^T/R^2 = tt int u^2/R^2 - tn h int u/R^2 + nn h^2 int 1/R^2.
-  out.M = I2 * tt - (h * L) * tn + (h * theta) * nn;
+  combine<Scalar>(I2, tt, -(h * L), tn, h * theta, nn, out.M);
   out.angle = theta;
 
   // Hat-weighted moments: int phi_0 f = (u1 int f - int u f)/l, int phi_1 f = (int u f - u0 int f)/l.
@@ -137,12 +158,59 @@ void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const E
   out.A[1] = (I2 - u0 * L) * invL;
   // B_k = int phi_k (-h)(u^2 tt - u h tn + h^2 nn)/R^4
   //     = -(h int phi_k u^2/R^4) tt + (h^2 int phi_k u/R^4) tn - (h^3 int phi_k/R^4) nn.
-  const double hhE1 = hh * E1, hV2 = h * V2, h3E1 = h * hhE1;
-  const double btt0 = -(u1 * V2 - V3) * invL, btt1 = -(V3 - u0 * V2) * invL;
-  const double btn0 = (u1 * hhE1 - hV2) * invL, btn1 = (hV2 - u0 * hhE1) * invL;
-  const double bnn0 = -(u1 * W0 - h3E1) * invL, bnn1 = -(h3E1 - u0 * W0) * invL;
-  out.B[0] = btt0 * tt + btn0 * tn + bnn0 * nn;
-  out.B[1] = btt1 * tt + btn1 * tn + bnn1 * nn;
+  const Scalar hhE1 = hh * E1, hV2 = h * V2, h3E1 = h * hhE1;
+  const Scalar btt0 = -(u1 * V2 - V3) * invL, btt1 = -(V3 - u0 * V2) * invL;
+  const Scalar btn0 = (u1 * hhE1 - hV2) * invL, btn1 = (hV2 - u0 * hhE1) * invL;
+  const Scalar bnn0 = -(u1 * W0 - h3E1) * invL, bnn1 = -(h3E1 - u0 * W0) * invL;
+  combine<Scalar>(btt0, tt, btn0, tn, bnn0, nn, out.B[0]);
+  combine<Scalar>(btt1, tt, btn1, tn, bnn1, nn, out.B[1]);
+}
+
+void toEigen(const EdgeIntegralsOf<double>& I, EdgeIntegrals& out) {
+  out.S = I.S;
+  out.angle = I.angle;
+  out.M = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.M[0][0]);
+  for (int k = 0; k < 2; ++k) {
+    out.D[k] = I.D[k];
+    out.A[k] = I.A[k];
+    out.B[k] = Eigen::Map<const Eigen::Matrix<double, 2, 2, Eigen::RowMajor>>(&I.B[k][0][0]);
+  }
+}
+
+}  // namespace
+
+template <typename Scalar>
+void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
+                     EdgeIntegralsOf<Scalar>& out) {
+  const Eigen::Vector2d e = p1 - p0;
+  const double l = e.norm();
+  if (l == 0) return integrateEdgeLocalOf<Scalar>(p0, p1, Scalar(0), Scalar(0), out);
+  const Eigen::Vector2d tau = e / l, n(tau.y(), -tau.x());
+  // Eigen's dot, as before the scalar became a template: a contracted a*b + c*d would give points on the
+  // supporting line a rounding-sized h instead of 0.
+  const Eigen::Matrix<Scalar, 2, 1> d(x[0] - p0.x(), x[1] - p0.y());
+  integrateEdgeLocalOf<Scalar>(p0, p1, d.dot(tau), d.dot(n), out);
+}
+
+template void integrateEdgeOf<double>(const Eigen::Vector2d&, const Eigen::Vector2d&, const double[2],
+                                      EdgeIntegralsOf<double>&);
+template void integrateEdgeOf<dual::Dual<2>>(const Eigen::Vector2d&, const Eigen::Vector2d&, const dual::Dual<2>[2],
+                                             EdgeIntegralsOf<dual::Dual<2>>&);
+
+void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
+  EdgeIntegralsOf<double> I;
+  const double point[2] = {x.x(), x.y()};
+  integrateEdgeOf(p0, p1, point, I);
+  toEigen(I, out);
+}
+
+void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& onEdge,
+                                EdgeIntegrals& out) {
+  const Eigen::Vector2d e = p1 - p0;
+  const double l = e.norm();
+  EdgeIntegralsOf<double> I;
+  integrateEdgeLocalOf<double>(p0, p1, l == 0 ? 0 : (onEdge - p0).dot(e) / l, -0.0, I);
+  toEigen(I, out);
 }
 
 // ---------------------------------------------------------------------------------------------------------------

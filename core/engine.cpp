@@ -9,6 +9,11 @@
 
 namespace somicage {
 
+std::string describeNotice(const Notice& notice) {
+  return std::string(notice.kind == Notice::Kind::Repair ? "note: " : "warning: ") +
+         (notice.source.empty() ? "" : notice.source + ": ") + notice.text;
+}
+
 Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices) {
   CageRepair repair = repairCage(cage);
   for (const std::string& fix : repair.fixes) notices({Notice::Kind::Repair, source, fix});
@@ -18,8 +23,8 @@ Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices
   return std::move(repair.cage);
 }
 
-Cage loadUsableCage(const std::string& path, const NoticeSink& notices) {
-  return prepareCage(loadCage(path), path, notices);
+Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read) {
+  return prepareCage(cageFromMesh(loadAnyMesh(path, read), path), path, notices);
 }
 
 Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,
@@ -33,9 +38,12 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
 
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& source,
-                                       const std::string& hint) {
-  const MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(),
-                                                           points, options.floatStorage, options.threads);
+                                       const std::string& hint, bool withGradients) {
+  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(), points,
+                                                     options.floatStorage, options.threads);
+  if (withGradients)
+    estimate.gradients =
+        estimateGradientBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(), points, options.floatStorage);
   requireMemory(estimate, availableMemoryBytes(), source, hint);
   return estimate;
 }
@@ -65,7 +73,7 @@ Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage,
                              const DeformParams& params, const std::string& posedSource,
                              const std::string& meshSource) {
   requirePosedVertices(restCage, posed, posedSource);
-  validateDeformParams(params);
+  deformer.method()->validateParams(params);
   Eigen::MatrixXd deformed = deformer.deform(posed, params);
   Eigen::Index bad = 0, firstBad = -1;
   for (Eigen::Index p = 0; p < deformed.rows(); ++p)

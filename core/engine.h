@@ -15,6 +15,7 @@
 #include "cage.h"
 #include "deformer.h"
 #include "memory_estimate.h"
+#include "mesh_formats.h"
 #include "obj_io.h"
 #include "progress.h"
 
@@ -28,6 +29,9 @@ struct Notice {
   std::string text;    // one sentence: what was done or what is wrong, and what to do about it
 };
 using NoticeSink = std::function<void(const Notice&)>;
+// "note: SOURCE: TEXT" for a repair, "warning: SOURCE: TEXT" for a warning (no "SOURCE: " when it has none): the
+// command line prints it after "somicage: ", the Python module emits it as a SomiCageWarning.
+std::string describeNotice(const Notice& notice);
 inline void ignoreNotices(const Notice&) {}
 
 // Repairs the orientation (cage_repair.h), then validates the repaired cage (cage_validation.h): each repair is a
@@ -35,8 +39,8 @@ inline void ignoreNotices(const Notice&) {}
 // Throws InputError naming `source` when the repaired cage is still not valid.
 Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices);
 
-// loadCage (obj_io.h) then prepareCage.
-Cage loadUsableCage(const std::string& path, const NoticeSink& notices);
+// The cage in a file of any readable format (mesh_formats.h: loadAnyMesh, cageFromMesh), then prepareCage.
+Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read = {});
 
 // The points a cage of dimension d deforms (#V by d: the mesh's x, y, z, or x, y for a 2D cage), with a Warning
 // notice (naming both sources in its text) when the mesh is far larger or smaller than the cage, or beside it
@@ -44,11 +48,12 @@ Cage loadUsableCage(const std::string& path, const NoticeSink& notices);
 Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,
                               const std::string& cageSource, const NoticeSink& notices);
 
-// The memory a precompute of `points` points will take (memory_estimate.h); throws InputError naming `source`,
-// with `hint`, when it would not fit in the free memory.
+// The memory a precompute of `points` points will take (memory_estimate.h), with the deformation gradient's
+// (jacobian.h) when withGradients; throws InputError naming `source`, with `hint`, when it would not fit in the
+// free memory.
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& source,
-                                       const std::string& hint);
+                                       const std::string& hint, bool withGradients = false);
 
 // requirePrecomputeMemory (with the usual hint), then the method's precompute of points (#P by d) in the rest
 // cage. Throws Cancelled when progress returns false.
@@ -60,8 +65,9 @@ std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, co
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source);
 
 // The deformed points (#P by d) for a posed cage of restCage (#V by d): checks the pose (requirePosedVertices,
-// naming posedSource) and the parameters (InputError naming them), and the output: InputError naming meshSource
-// if a point could not be deformed (a bug, never silent: every point gets a finite position).
+// naming posedSource) and the parameters (the method's validateParams: InputError naming them), and the output:
+// InputError naming meshSource if a point could not be deformed (a bug, never silent: every point gets a finite
+// position).
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
                              const DeformParams& params, const std::string& posedSource, const std::string& meshSource);
 

@@ -137,7 +137,8 @@ void dotBlock(const Scalar* const* c, const Scalar* const* w, int begin, int end
   }
 }
 
-// The outputs y (kMaxOutputs per row) of Rows consecutive points from `first` on: y = C_main . W_main + C_tail . W_tail.
+// The outputs y (kMaxOutputs per row) of Rows consecutive points from `first` on: y = C_main . W_main + C_tail .
+// W_tail.
 template <typename Scalar, int Rows>
 void outputsOfRows(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int first,
                    double (*y)[kMaxOutputs]) {
@@ -200,7 +201,35 @@ void evaluateScalar(const CoordinateMatrix<Scalar>& C, int mainColumns, const Fr
   }
 }
 
+template <typename Scalar>
+void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const FrameWeights& W, int threads,
+                     CoordinateMatrix<double>& rows) {
+  const PreparedWeights<Scalar> prepared(W, mainColumns);
+  const int numPoints = static_cast<int>(C.rows()), numBlocks = numPoints / kBlockRows;
+  rows.resize(numPoints, W.outputs);
+#pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int b = 0; b < numBlocks; ++b) {
+    double y[kBlockRows][kMaxOutputs] = {};
+    outputsOfRows<Scalar, kBlockRows>(C, prepared, b * kBlockRows, y);
+    for (int r = 0; r < kBlockRows; ++r) std::copy(y[r], y[r] + W.outputs, rows.row(b * kBlockRows + r).data());
+  }
+  for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
+    double y[1][kMaxOutputs] = {};
+    outputsOfRows<Scalar, 1>(C, prepared, p, y);
+    std::copy(y[0], y[0] + W.outputs, rows.row(p).data());
+  }
+}
+
 }  // namespace
+
+void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, CoordinateMatrix<double>& y) {
+  SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
+  SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
+  if (C.isFloat())
+    evaluateOutputs(C.floats, C.mainColumns, W, threads, y);
+  else
+    evaluateOutputs(C.doubles, C.mainColumns, W, threads, y);
+}
 
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out) {
   SOMICAGE_ASSERT(W.outputs == dim || W.outputs == dim * dim + dim, "a frame has d or d^2 + d outputs");

@@ -56,10 +56,10 @@ struct FrameCoordinates {
 FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage);
 
 struct FrameWeights {
-  int outputs = 0;       // d, or d * d + d for a per-point solve
-  int mainOffset = 0;    // the first output column that `main` contributes to
-  Eigen::MatrixXd main;  // K_main by (outputs - mainOffset)
-  Eigen::MatrixXd tail;  // K_tail by outputs
+  int outputs = 0;         // d, or d * d + d for a per-point solve
+  int mainOffset = 0;      // the first output column that `main` contributes to
+  Eigen::MatrixXd main;    // K_main by (outputs - mainOffset)
+  Eigen::MatrixXd tail;    // K_tail by outputs
   Eigen::VectorXd origin;  // o (d) for a per-point solve; empty means 0
 };
 
@@ -69,6 +69,11 @@ Eigen::VectorXd tOutputsFromMatrix(const Eigen::MatrixXd& M);
 // out (#P by d, resized) from C and W as described above, with OpenMP over fixed blocks of points, so the result
 // does not depend on the thread count (threads = 0: the OpenMP default). Exterior points included.
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out);
+
+// The raw outputs y = C_p W (before the per-point solve and the exterior blend) of every row of C (#P + 2 #E by
+// W.outputs, resized), with the kernel and the thread partition of evaluateFrame; the deformation gradient
+// (jacobian.h) applies the same W to the gradients of C's rows.
+void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, CoordinateMatrix<double>& y);
 
 // The exterior blend on out = every row of C evaluated (#P + 2 #E by d): adds w (proxy - anchor) to each exterior
 // point's row and keeps the first #P rows.

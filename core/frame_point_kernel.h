@@ -49,22 +49,22 @@ SOMICAGE_HD inline void addFramePartialSums(const Scalar* c, const PortableFrame
 namespace portable_detail {
 
 // x = M^-1 v by the adjugate (M d by d, d = 2 or 3); returns det M (x is not finite when it is 0).
-template <int Dim>
-SOMICAGE_HD inline double solveByAdjugate(const double (&M)[Dim][Dim], const double* v, double* x) {
+template <int Dim, typename Scalar>
+SOMICAGE_HD inline Scalar solveByAdjugate(const Scalar (&M)[Dim][Dim], const Scalar* v, Scalar* x) {
   if constexpr (Dim == 3) {
-    double adj[3][3];
+    Scalar adj[3][3];
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) {
         const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
         adj[i][j] = M[i1][j1] * M[i2][j2] - M[i1][j2] * M[i2][j1];
       }
-    const double det = M[0][0] * adj[0][0] + M[0][1] * adj[1][0] + M[0][2] * adj[2][0];
-    const double invDet = 1 / det;
+    const Scalar det = M[0][0] * adj[0][0] + M[0][1] * adj[1][0] + M[0][2] * adj[2][0];
+    const Scalar invDet = 1 / det;
     for (int i = 0; i < 3; ++i) x[i] = (adj[i][0] * v[0] + adj[i][1] * v[1] + adj[i][2] * v[2]) * invDet;
     return det;
   } else {
-    const double det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
-    const double invDet = 1 / det;
+    const Scalar det = M[0][0] * M[1][1] - M[0][1] * M[1][0];
+    const Scalar invDet = 1 / det;
     x[0] = (M[1][1] * v[0] - M[0][1] * v[1]) * invDet;
     x[1] = (M[0][0] * v[1] - M[1][0] * v[0]) * invDet;
     return det;
@@ -81,35 +81,36 @@ constexpr double kSingularT = 1e-12;
 // fixed 2x2 and 3x3 matrices. Where T is singular to rounding -- local rotations can cancel in
 // T = sum_i R_i T_i R_i^T, e.g. on a cage collapsed to a point -- the regularised least-squares
 // x = (T^T T + mu I)^-1 T^T b, mu = kSingularT |T|_F^2, keeps the point finite: at o when b = 0.
-template <int Dim>
-SOMICAGE_HD inline void finishFramePoint(const double* y, int outputs, const double* origin, double* result) {
+// Scalar: double, or dual numbers (dual_number.h) whose gradients are those of y: the result's gradient is then the
+// derivative of Eq. 11's solve, T^-1 (b' - T' T^-1 b) (the deformation gradient of jacobian.h).
+template <int Dim, typename Scalar>
+SOMICAGE_HD inline void finishFramePoint(const Scalar* y, int outputs, const double* origin, Scalar* result) {
   if (outputs == Dim) {
     for (int a = 0; a < Dim; ++a) result[a] = y[a];
     return;
   }
-  double T[Dim][Dim];
+  Scalar T[Dim][Dim];
   if constexpr (Dim == 3) {
-    const double rows[3][3] = {{y[0], y[3] - y[8], y[4] + y[7]},
-                               {y[3] + y[8], y[1], y[5] - y[6]},
-                               {y[4] - y[7], y[5] + y[6], y[2]}};
+    const Scalar rows[3][3] = {
+        {y[0], y[3] - y[8], y[4] + y[7]}, {y[3] + y[8], y[1], y[5] - y[6]}, {y[4] - y[7], y[5] + y[6], y[2]}};
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j) T[i][j] = rows[i][j];
   } else {
     T[0][0] = y[0], T[0][1] = y[2] + y[3], T[1][0] = y[2] - y[3], T[1][1] = y[1];
   }
-  const double* b = y + Dim * Dim;
-  double norm2 = 0;
+  const Scalar* b = y + Dim * Dim;
+  Scalar norm2 = 0;
   for (int i = 0; i < Dim; ++i)
     for (int j = 0; j < Dim; ++j) norm2 += T[i][j] * T[i][j];
-  const double det = portable_detail::solveByAdjugate<Dim>(T, b, result);
-  const double scale = Dim == 3 ? norm2 * sqrt(norm2) : norm2;  // |T|_F^d
+  const Scalar det = portable_detail::solveByAdjugate<Dim>(T, b, result);
+  const Scalar scale = Dim == 3 ? norm2 * sqrt(norm2) : norm2;  // |T|_F^d
   if (!(fabs(det) > kSingularT * scale)) {
-    double N[Dim][Dim], rhs[Dim];  // T^T T + mu I and T^T b
+    Scalar N[Dim][Dim], rhs[Dim];  // T^T T + mu I and T^T b
     for (int i = 0; i < Dim; ++i) {
       rhs[i] = 0;
       for (int k = 0; k < Dim; ++k) rhs[i] += T[k][i] * b[k];
       for (int j = 0; j < Dim; ++j) {
-        N[i][j] = i == j ? kSingularT * norm2 : 0;
+        N[i][j] = i == j ? kSingularT * norm2 : Scalar(0.0);
         for (int k = 0; k < Dim; ++k) N[i][j] += T[k][i] * T[k][j];
       }
     }

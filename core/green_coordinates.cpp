@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "errors.h"
 #include "exterior_points.h"
 #include "point_blocks.h"

@@ -27,6 +27,7 @@
 #include <Eigen/Core>
 
 #include "cage.h"
+#include "coordinate_gradients.h"
 #include "coordinate_layout.h"  // RowMatrixXd
 #include "progress.h"
 
@@ -36,5 +37,10 @@ namespace somicage {
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.
 RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd& points, int threads = 0,
                                         const ProgressCallback& progress = noProgress);
+
+// The exact gradients of those coordinates with respect to the point (dual numbers through the same formulas):
+// rows of #V numbers (coordinate_gradients.h).
+void integrateMeanValueGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                 const ProgressCallback& progress, const GradientRowSink& sink);
 
 }  // namespace somicage

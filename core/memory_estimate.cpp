@@ -61,6 +61,7 @@ MemoryEstimate& MemoryEstimate::operator+=(const MemoryEstimate& other) {
   coordinates += other.coordinates;
   working = std::max(working, other.working);  // deformers are built one after the other
   output += other.output;
+  gradients += other.gradients;
   return *this;
 }
 
@@ -73,6 +74,13 @@ MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices
   e.working = method->workingBytes(layout, dim, points, floatStorage, threads > 0 ? threads : omp_get_max_threads());
   e.output = 2 * points * static_cast<std::size_t>(dim) * sizeof(double);
   return e;
+}
+
+std::size_t estimateGradientBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+                                  bool floatStorage) {
+  const std::size_t d = static_cast<std::size_t>(dim), outputs = d * d + d;
+  const std::size_t perFrame = points * (d * d + (d + 1) * outputs) * sizeof(double) + points;  // + defined flags
+  return d * estimateCoordinateBytes(method, dim, cageVertices, cageFaces, points, floatStorage) + perFrame;
 }
 
 std::optional<std::size_t> availableMemoryBytes() {

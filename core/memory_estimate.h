@@ -23,14 +23,22 @@ struct MemoryEstimate {
   std::size_t working = 0;      // freed or small: double-precision copies made before C (Green, mean value),
                                 // per-thread row buffers, the diagnostics vectors
   std::size_t output = 0;       // one deformed frame (#P by d doubles) and the kernel's row-major buffer
+  std::size_t gradients = 0;    // while a J-based quantity is in use (jacobian.h): d gradient matrices of C's point
+                                // rows and one frame's J and raw outputs; 0 otherwise
 
-  std::size_t total() const { return coordinates + working + output; }
+  std::size_t total() const { return coordinates + working + output + gradients; }
   MemoryEstimate& operator+=(const MemoryEstimate& other);  // several deformers over the same points
 };
 
 // threads: the precompute's OpenMP threads (0 = the OpenMP default), each with its own row buffer.
 MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
                                         bool floatStorage, int threads = 0);
+
+// What DeformationGradients (jacobian.h) adds for `points` points on top of the precompute: d times the point rows
+// of C (at most d = 3 times the coordinates' bytes) plus one frame's J (#P by d^2) and raw outputs (d + 1 times
+// #P by d^2 + d), in double.
+std::size_t estimateGradientBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+                                  bool floatStorage);
 
 // The environment variable that replaces the free memory (a number of bytes), so tests can trigger a refusal.
 constexpr const char* kMemoryLimitVariable = "SOMICAGE_MEMORY_LIMIT_BYTES";

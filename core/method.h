@@ -18,14 +18,27 @@
 namespace somicage {
 
 class CageDeformer;
+struct DeformParams;
 struct PrecomputeOptions;
+
+// The fields of DeformParams a method reads (MethodDescriptor::parameters, a bit set); it ignores the others.
+enum DeformParameter : unsigned {
+  kParamBlend = 1u << 0,         // blend (--variant, --blend)
+  kParamNu = 1u << 1,            // nu
+  kParamGamma = 1u << 2,         // gamma
+  kParamTractionFix = 1u << 3,   // tractionCorrection
+  kParamCorotational = 1u << 4,  // corotational
+};
 
 struct MethodDescriptor {
   const char* name;         // the command line's --method, session files, Python: "somigliana"
   const char* displayName;  // the editor's menus and labels: "Somigliana"
   int listOrder;            // position in lists (help text, menus): ascending
-  bool takesDeformParams;   // reads DeformParams (nu, gamma, blend, traction fix); the others ignore them
+  unsigned parameters;      // the DeformParameter bits it reads
   bool reproducesOutside;   // reproduces a still cage outside it too (no exterior rule needed)
+  // Throws InputError naming the parameter ("nu") when params are out of range for this method (at least
+  // validateDeformParams, deformer.h; a method may refuse more, e.g. nu = 0.5 for BEM).
+  void (*validateParams)(const DeformParams& params);
 
   // The columns of C for a cage of dimension dim (coordinate_layout.h).
   CoordinateLayout (*layout)(int dim, int numVertices, int numFaces);
@@ -64,6 +77,11 @@ std::optional<Method> findMethod(const std::string& name);
 Method parseMethod(const std::string& name);
 // "somigliana, green or mvc": for help texts and hints.
 std::string methodNameList();
+
+// Whether the method reads that parameter (MethodDescriptor::parameters).
+bool readsParameter(Method method, DeformParameter parameter);
+// The names of the methods that read it, for help texts: "somigliana only", "somigliana and bem".
+std::string methodsReading(DeformParameter parameter);
 
 // The layout of C that `method` stores for a cage.
 CoordinateLayout coordinateLayout(Method method, const Cage& cage);

@@ -1,5 +1,7 @@
 #include <algorithm>
 #include <cstring>
+#include <string>
+#include <vector>
 
 #include "errors.h"
 #include "method.h"
@@ -46,6 +48,19 @@ std::string methodNameList() {
 Method parseMethod(const std::string& name) {
   if (const std::optional<Method> method = findMethod(name)) return *method;
   throw InputError("--method", -1, "unknown method '" + name + "'", "use " + methodNameList());
+}
+
+bool readsParameter(Method method, DeformParameter parameter) { return (method->parameters & parameter) != 0; }
+
+std::string methodsReading(DeformParameter parameter) {
+  std::vector<std::string> names;
+  for (Method m : allMethods())
+    if (readsParameter(m, parameter)) names.emplace_back(m->name);
+  if (names.size() == 1) return names.front() + " only";
+  std::string list;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    list += (k == 0 ? "" : k + 1 == names.size() ? " and " : ", ") + names[k];
+  return list.empty() ? "no method" : list;
 }
 
 CoordinateLayout coordinateLayout(Method method, const Cage& cage) {

@@ -22,6 +22,25 @@
 
 namespace somicage {
 
+bool isBlank(char c) { return c == ' ' || c == '\t'; }
+
+std::vector<std::string_view> splitTokens(std::string_view s) {
+  std::vector<std::string_view> tokens;
+  size_t i = 0;
+  while (i < s.size()) {
+    while (i < s.size() && isBlank(s[i])) ++i;
+    const size_t start = i;
+    while (i < s.size() && !isBlank(s[i])) ++i;
+    if (i > start) tokens.push_back(s.substr(start, i - start));
+  }
+  return tokens;
+}
+
+std::string_view objKeyword(std::string_view line) {
+  const size_t end = line.find_first_of(" \t");
+  return end == std::string_view::npos ? std::string_view() : line.substr(0, end);
+}
+
 namespace {
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -91,20 +110,6 @@ long lineAt(std::string_view text, size_t offset) {
   std::string_view line;
   while (cursor.next(line)) continue;
   return cursor.lineNumber();
-}
-
-bool isBlank(char c) { return c == ' ' || c == '\t'; }
-
-std::vector<std::string_view> splitTokens(std::string_view s) {
-  std::vector<std::string_view> tokens;
-  size_t i = 0;
-  while (i < s.size()) {
-    while (i < s.size() && isBlank(s[i])) ++i;
-    const size_t start = i;
-    while (i < s.size() && !isBlank(s[i])) ++i;
-    if (i > start) tokens.push_back(s.substr(start, i - start));
-  }
-  return tokens;
 }
 
 enum class NumberStatus { Ok, NotANumber, OutOfRange, NotFinite };
@@ -235,19 +240,21 @@ void scanLine(const std::string& source, long lineNumber, std::string_view rest,
   scan.lineLines.push_back(lineNumber);
 }
 
-ObjScan scanObj(std::string_view text, const std::string& source) {
+ObjScan scanObj(std::string_view text, const std::string& source, const ObjLineVisitor& visitor) {
   ObjScan scan;
   LineCursor cursor(text);
-  std::string_view line;
-  while (cursor.next(line)) {
-    size_t start = 0;
-    while (start < line.size() && isBlank(line[start])) ++start;
-    line.remove_prefix(start);
-    if (line.size() < 2 || !isBlank(line[1])) continue;  // blank, comment, or another record
-    const std::string_view rest = line.substr(2);
-    if (line[0] == 'v') scanVertex(source, cursor.lineNumber(), rest, scan);
-    if (line[0] == 'f') scanFace(source, cursor.lineNumber(), rest, scan);
-    if (line[0] == 'l') scanLine(source, cursor.lineNumber(), rest, scan);
+  std::string_view raw;
+  while (cursor.next(raw)) {
+    std::string_view line = raw;
+    while (!line.empty() && isBlank(line.front())) line.remove_prefix(1);
+    const std::string_view keyword = objKeyword(line);
+    if (keyword.size() == 1) {  // else blank, a comment, or another record
+      const std::string_view rest = line.substr(2);
+      if (keyword[0] == 'v') scanVertex(source, cursor.lineNumber(), rest, scan);
+      if (keyword[0] == 'f') scanFace(source, cursor.lineNumber(), rest, scan);
+      if (keyword[0] == 'l') scanLine(source, cursor.lineNumber(), rest, scan);
+    }
+    if (visitor) visitor(cursor.lineNumber(), raw, line, keyword);
   }
   return scan;
 }
@@ -512,7 +519,7 @@ void appendIndexList(std::string& out, char record, const std::vector<int>& indi
 // Public functions
 // ---------------------------------------------------------------------------------------------------------------
 
-PolygonMesh parseObj(const std::string& rawText, const std::string& source) {
+PolygonMesh parseObj(const std::string& rawText, const std::string& source, const ObjLineVisitor& visitor) {
   std::string_view text(rawText);
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
   if (text.empty()) {
@@ -523,7 +530,7 @@ PolygonMesh parseObj(const std::string& rawText, const std::string& source) {
     throw InputError(source, lineAt(text, nul), "the file contains a NUL byte: it is not a text OBJ file",
                      "export the model again as a text .obj file");
   }
-  const ObjScan scan = scanObj(text, source);
+  const ObjScan scan = scanObj(text, source, visitor);
   const int vertexCount = static_cast<int>(scan.coordinates.size() / 3);
   if (vertexCount == 0) {
     throw InputError(source, -1, "the file has no vertices", "an OBJ file lists vertices as `v x y z` lines");
@@ -711,6 +718,12 @@ void saveObj(const std::string& path, const Eigen::MatrixXd& vertices, const Pol
     appendIndexList(out, 'l', line);
     file.flushIfFull();
   }
+  file.commit();
+}
+
+void saveTextFile(const std::string& path, const std::string& text) {
+  AtomicFile file(path);
+  file.buffer() = text;
   file.commit();
 }
 

@@ -9,7 +9,9 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cage.h"
@@ -33,8 +35,21 @@ struct PolygonMesh {
   int numFaces() const { return static_cast<int>(faces.size()); }
 };
 
+// OBJ separates tokens by spaces and tabs; every reader of OBJ lines splits them with these.
+bool isBlank(char c);
+std::vector<std::string_view> splitTokens(std::string_view line);
+// The record keyword of a line without leading blanks, as the parser reads it: its first token when a blank follows
+// ("v", "vn", "usemtl"), else empty.
+std::string_view objKeyword(std::string_view line);
+
+// Sees every line of an OBJ text in the parser's one pass, in order, after the parser has read the line's own `v`,
+// `f` or `l` record: its 1-based number, the line as written (no end of line), the line without leading blanks and
+// its keyword (the first token when a blank follows it, else empty). How mesh_document.h keeps the other records.
+using ObjLineVisitor =
+    std::function<void(long lineNumber, std::string_view rawLine, std::string_view line, std::string_view keyword)>;
+
 // Parses OBJ text. source names the text in error messages (normally the file path).
-PolygonMesh parseObj(const std::string& text, const std::string& source);
+PolygonMesh parseObj(const std::string& text, const std::string& source, const ObjLineVisitor& visitor = {});
 
 // Reads any OBJ file (mesh, polygon soup or point set).
 PolygonMesh loadMesh(const std::string& path);
@@ -76,5 +91,8 @@ PolygonMesh cageTopology(const Cage& cage);
 // renamed over PATH. On any failure the temporary file is removed, an existing PATH is left as it was, and an
 // InputError carries the system's reason (strerror).
 void saveObj(const std::string& path, const Eigen::MatrixXd& vertices, const PolygonMesh& topology);
+
+// Writes text to path with saveObj's atomic replace (same guarantees and errors).
+void saveTextFile(const std::string& path, const std::string& text);
 
 }  // namespace somicage

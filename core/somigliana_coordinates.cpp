@@ -84,12 +84,8 @@ Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
 // Integration
 // ---------------------------------------------------------------------------------------------------------------
 
-namespace {
-
-// Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; layout of C: term k of
-// vertex i at t[k * stride], stride = #V).
-void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
-                        const CoordinateLayout& layout, int face, double* row, double& solidAngleSum) {
+void addVertexTerms(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
+                    const CoordinateLayout& layout, double* row) {
   const int stride = layout.numVertices;
   for (int k = 0; k < 3; ++k) {
     double* t = row + layout.vertexColumn(corners[k], 0);
@@ -100,6 +96,24 @@ void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, co
     t[4 * stride] += B(0, 0), t[5 * stride] += B(1, 1), t[6 * stride] += B(2, 2);
     t[7 * stride] += B(0, 1), t[8 * stride] += B(0, 2), t[9 * stride] += B(1, 2);
   }
+}
+
+void addVertexTerms(const EdgeIntegrals& I, const int ends[2], const CoordinateLayout& layout, double* row) {
+  const int stride = layout.numVertices;
+  for (int k = 0; k < 2; ++k) {
+    double* t = row + layout.vertexColumn(ends[k], 0);
+    t[0] += I.D[k];
+    t[stride] += I.A[k];
+    t[2 * stride] += I.B[k](0, 0), t[3 * stride] += I.B[k](1, 1), t[4 * stride] += I.B[k](0, 1);
+  }
+}
+
+namespace {
+
+// Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; in the layout of C).
+void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
+                        const CoordinateLayout& layout, int face, double* row, double& solidAngleSum) {
+  addVertexTerms(I, n, corners, layout, row);
   double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector3d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y(), f[3] += q.z();
@@ -108,13 +122,7 @@ void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, co
 
 void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int ends[2], const CoordinateLayout& layout,
                     int face, double* row, double& angleSum) {
-  const int stride = layout.numVertices;
-  for (int k = 0; k < 2; ++k) {
-    double* t = row + layout.vertexColumn(ends[k], 0);
-    t[0] += I.D[k];
-    t[stride] += I.A[k];
-    t[2 * stride] += I.B[k](0, 0), t[3 * stride] += I.B[k](1, 1), t[4 * stride] += I.B[k](0, 1);
-  }
+  addVertexTerms(I, ends, layout, row);
   double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector2d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y();

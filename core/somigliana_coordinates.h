@@ -15,8 +15,10 @@
 
 #include "cage.h"
 #include "coordinate_layout.h"
+#include "edge_integrals.h"
 #include "integration_options.h"
 #include "progress.h"
+#include "triangle_integrals.h"
 
 namespace somicage {
 
@@ -63,6 +65,13 @@ struct SomiglianaCoordinates {
   // sum_i T_i(x_p) at nu; the identity for points strictly inside (Eq. 9).
   Eigen::MatrixXd vertexCoordinateSum(int p, double nu) const;
 };
+
+// Adds one triangle's (3D) or edge's (2D) integrals to the vertex terms of a point's row laid out as `layout`
+// (vertexTermCount(dim) terms per vertex, as above): the corners' hat-function integrals, with the antisymmetric
+// part as omega = V x n. Face terms are the caller's (Somigliana's and BEM's differ).
+void addVertexTerms(const TriangleIntegrals& integrals, const Eigen::Vector3d& n, const int corners[3],
+                    const CoordinateLayout& layout, double* row);
+void addVertexTerms(const EdgeIntegrals& integrals, const int ends[2], const CoordinateLayout& layout, double* row);
 
 // Integrates the coordinates of every point (#P by d) against the cage. Points on the cage are singular.
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.

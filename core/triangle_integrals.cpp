@@ -84,10 +84,9 @@ TriangleFrame makeTriangleFrame(const Eigen::Vector3d& p0, const Eigen::Vector3d
   return f;
 }
 
-void integrateTriangle(const TriangleFrame& f, const Eigen::Vector3d& x, TriangleIntegrals& out) {
-  PortableTriangleIntegrals I;
-  const double point[3] = {x.x(), x.y(), x.z()};
-  integrateTrianglePortable(f.kernel, point, I);
+namespace {
+
+void toEigen(const PortableTriangleIntegrals& I, TriangleIntegrals& out) {
   out.S = I.S;
   out.solidAngle = I.solidAngle;
   out.M = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&I.M[0][0]);
@@ -96,6 +95,22 @@ void integrateTriangle(const TriangleFrame& f, const Eigen::Vector3d& x, Triangl
     out.V[k] = Eigen::Map<const Eigen::Vector3d>(I.V[k]);
     out.B[k] = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(&I.B[k][0][0]);
   }
+}
+
+}  // namespace
+
+void integrateTriangle(const TriangleFrame& f, const Eigen::Vector3d& x, TriangleIntegrals& out) {
+  PortableTriangleIntegrals I;
+  const double point[3] = {x.x(), x.y(), x.z()};
+  integrateTrianglePortable(f.kernel, point, I);
+  toEigen(I, out);
+}
+
+void integrateTriangleInteriorLimit(const TriangleFrame& f, const Eigen::Vector3d& onFace, TriangleIntegrals& out) {
+  PortableTriangleIntegrals I;
+  const Eigen::Vector3d rel = onFace - f.origin;
+  integrateTriangleLocalPortable(f.kernel, rel.dot(f.u), rel.dot(f.v), -0.0, I);
+  toEigen(I, out);
 }
 
 }  // namespace somicage

@@ -54,4 +54,10 @@ TriangleFrame makeTriangleFrame(const Eigen::Vector3d& p0, const Eigen::Vector3d
 // error that is small in absolute terms but grows like eps (D / h_min)^3 relative to the face's own integrals.
 void integrateTriangle(const TriangleFrame& frame, const Eigen::Vector3d& x, TriangleIntegrals& out);
 
+// The limit of integrateTriangle as x tends to the point `onFace` of the face (strictly inside it; it is projected
+// onto the face's plane) from the inside of the cage, h -> 0-: the closed form with h = -0 (exact, no quadrature).
+// The integrals are finite there (D, B weakly singular, V in-plane a Cauchy principal value) and carry the jump of
+// the double layer: solidAngle = -2pi, D_k = 2pi phi_k(onFace), B_k = (2pi/3) phi_k(onFace) I, S and M continuous.
+void integrateTriangleInteriorLimit(const TriangleFrame& frame, const Eigen::Vector3d& onFace, TriangleIntegrals& out);
+
 }  // namespace somicage

@@ -14,7 +14,15 @@ struct MeshStyle {
   bool wireframe = false;  // triangle edges over the shading
   bool flat = false;       // faceted shading (one normal per triangle) instead of smooth
   Eigen::Vector4f wireColor{0.15f, 0.12f, 0.10f, 0.22f};
+  // The colour map of the scalars (setScalars) instead of `color`: -1 none, else a row of colorMapTable().
+  int colorMap = -1;
 };
+
+// The colour maps, 256 RGB entries each (sampled from the control points of color_maps.cpp): row 0 a diverging
+// blue - grey - red map (Moreland's cool-warm), row 1 viridis. Fold-overs get kFoldoverColor in every map.
+enum ColorMapRow { kDivergingMap = 0, kViridisMap = 1 };
+Eigen::Vector3f colorMapColor(int row, float t);  // t in [0, 1]
+inline const Eigen::Vector3f kFoldoverColor{0.90f, 0.0f, 0.90f};
 
 class MeshRenderer {
  public:
@@ -29,6 +37,9 @@ class MeshRenderer {
   void setTopology(const Eigen::MatrixXi& triangles);
   // positions: #V by 2 or 3. Uploads positions and smooth normals recomputed from them (topology untouched).
   void setPositions(const Eigen::MatrixXd& positions);
+  // coordinates: #V colour-map coordinates in [0, 1], -1 for a fold-over, -2 for undefined (drawn grey); empty
+  // removes them. Drawn when MeshStyle::colorMap >= 0.
+  void setScalars(const Eigen::VectorXf& coordinates);
   void draw(const ViewMatrices& view, const MeshStyle& style) const;
 
   // For render/gpu_deformer.h, which writes positions and normals with compute shaders: sizes the position and

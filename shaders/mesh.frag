@@ -3,9 +3,14 @@
 // (or open surfaces seen from behind) shade the same as outward-facing ones.
 in vec3 vPositionView;
 in vec3 vNormalView;
+in float vScalar;
 
 uniform vec3 uColor;
 uniform bool uOrthographic;
+uniform bool uMapped;          // colour from the scalar through the colour map instead of uColor
+uniform float uMapRow;         // texture row of the map (0.25 diverging, 0.75 viridis)
+uniform vec3 uFoldoverColor;   // scalar -1
+uniform sampler2D uColorMaps;
 uniform bool uFlat;  // facet normals from screen-space derivatives instead of the smooth vertex normals
 
 out vec4 fragColor;
@@ -24,5 +29,9 @@ void main() {
   vec3 h = normalize(key + toEye);
   float specular = 0.25 * pow(max(dot(n, h), 0.0), 48.0);
   vec3 color = uColor * (0.22 + diffuse) + vec3(specular);
+  if (uMapped) {  // lighter shading and no highlight, so the map's colours read true
+    vec3 base = vScalar < -1.5 ? vec3(0.5) : vScalar < -0.5 ? uFoldoverColor : texture(uColorMaps, vec2(vScalar, uMapRow)).rgb;
+    color = base * (0.55 + 0.5 * diffuse);
+  }
   fragColor = vec4(pow(clamp(color, 0.0, 1.0), vec3(1.0 / 1.1)), 1.0);
 }

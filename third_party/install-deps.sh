@@ -7,10 +7,15 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libeigen3-dev libgtest-dev  # core and tests
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenvdb-dev libtbb-dev libimath-dev  # cage generation
+  libassimp-dev libtinygltf-dev  # mesh formats (PLY, STL, OFF, glTF, FBX in; GLB out)
   libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor
   xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
   xdotool imagemagick  # the GUI input tests: real X key and mouse events, screenshots of the screen
   clang libclang-rt-dev libomp-dev  # the libFuzzer targets: clang, its fuzzer/sanitizer runtimes, OpenMP for clang
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools  # the Python module and its tests
+  python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (README, "Python")
+  blender  # headless tests: the add-on (~55 MB download with blender-data; Debian's 3.4 runs /usr/bin/python3) and the GLB import
 )
 
 missing=()

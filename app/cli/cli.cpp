@@ -16,8 +16,13 @@ namespace somicage {
 const std::vector<CliCommand>& cliCommands() {
   static const std::vector<CliCommand> commands = {
       {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
-      {"deform", "deform a mesh (or point set) with a posed cage and write it as OBJ", runDeformCommand, deformUsage},
+      {"deform", "deform a mesh (or point set) with a posed cage and write it (OBJ, PLY, GLB)", runDeformCommand, deformUsage},
+      {"animate", "write a session's keyframed animation as a GLB or an OBJ sequence", runAnimateCommand, animateUsage},
+      {"analyze", "measure a pose: volume change, det J, distortion and fold-overs of a deformed mesh",
+       runAnalyzeCommand, analyzeUsage},
       {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
+      {"cage", "make a cage that strictly encloses a mesh, with at most N faces, and write it as OBJ", runCageCommand,
+       cageUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},
   };

@@ -10,6 +10,7 @@
 #include <numeric>
 #include <random>
 
+#include "bem_system.h"
 #include "cli/arg_parser.h"
 #include "cli/cli.h"
 #include "cli/command_support.h"
@@ -17,6 +18,8 @@
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
 #include "cuda/cuda_backend.h"
+#include "deformation_quantities.h"
+#include "jacobian.h"
 #include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
@@ -188,6 +191,30 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   const double nuUpdateMs = timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, true);
 
+  // The editor's det J view: the gradients integrated once, then per update positions, J and det J / distortion.
+  double gradientSeconds = 0;
+  std::size_t gradientBytes = 0;
+  std::vector<std::pair<std::string, double>> analyzeMs;
+  {
+    ProgressReporter progress("coordinate gradients");
+    const CliClock::time_point start = CliClock::now();
+    const DeformationGradients gradients(*deformer, points, progress.callback());
+    gradientSeconds = secondsSince(start);
+    gradientBytes = gradients.bytes();
+    progress.finish();
+    for (const auto& [name, blend] : {std::pair<const char*, double>{"cpu_global", 0.0}, {"cpu_local", 1.0}}) {
+      std::vector<double> times;
+      for (int f = 0; f < std::max(3, frames / 5); ++f) {
+        Eigen::MatrixXd positions, J;
+        const CliClock::time_point frameStart = CliClock::now();
+        gradients.evaluate(posed, {blend, 0.3, 1.0, true}, positions, J);
+        pointQuantities(J, cage.dim());
+        times.push_back(1e3 * secondsSince(frameStart));
+      }
+      analyzeMs.emplace_back(name, median(times));
+    }
+  }
+
   // Baseline: the same K random mesh vertices integrated in closed form and with the paper's rule.
   std::mt19937 rng(12345);
   std::vector<int> order(points.rows());
@@ -227,6 +254,32 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const double pouMedian = median(unity);
   const int usedThreads = threads > 0 ? threads : omp_get_max_threads();
 
+  // The boundary element reference: factoring its boundary matrix (once per cage and nu), then frames (a solve and
+  // the product C W). After the peak RSS above, which stays the Somigliana figure.
+  std::vector<double> factorTimes;
+  {
+    const BemSystem system(cage, threads);
+    for (int r = 0; r < std::max(3, repeat); ++r) {
+      const CliClock::time_point start = CliClock::now();
+      system.factor(0.3);
+      factorTimes.push_back(1e3 * secondsSince(start));
+    }
+  }
+  const double bemFactorMs = median(factorTimes);
+  // Every other registered method's frame (deform_ms.cpu_NAME), at the same nu where it reads one.
+  deformer.reset();
+  for (Method method : allMethods()) {
+    if (method == somigliana) continue;
+    requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), precompute,
+                            options.text("--mesh"));
+    ProgressReporter progress("precompute " + methodName(method));
+    const std::unique_ptr<CageDeformer> other = makeDeformer(method, cage, points, precompute, progress.callback());
+    progress.finish();
+    DeformParams params;
+    params.nu = 0.3;
+    deformMs.emplace_back("cpu_" + methodName(method), timeFrames(*other, posed, params, frames, false));
+  }
+
   if (json) {
     JsonObjectWriter out(std::cout);
     out.field("mesh_vertices", static_cast<int>(points.rows()));
@@ -242,6 +295,11 @@ int runBenchCommand(const std::vector<std::string>& args) {
     out.field("baseline_pou_max", baselineUnity);
     out.field("deform_ms", deformMs);
     out.field("nu_update_ms", nuUpdateMs);
+    out.field("bem_factor_ms", bemFactorMs);
+    out.field("analyze_ms", analyzeMs);
+    out.field("detj_updates_per_s", 1e3 / analyzeMs.back().second);
+    out.field("gradient_precompute_s", gradientSeconds);
+    out.field("gradient_bytes", static_cast<long long>(gradientBytes));
     out.field("coord_bytes", static_cast<long long>(coordBytes));
     out.field("peak_rss_bytes", peakRss);
     out.close();
@@ -256,7 +314,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
   std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",
               quadrature, 3 * quadrature * quadrature, K, speedup, baselineUnity);
   for (const auto& [name, ms] : deformMs) {
-    const bool cpu = name.rfind("cpu", 0) == 0;
+    const bool cpu = name == "cpu_global" || name == "cpu_local";  // the Somigliana coordinates' bandwidth
     std::printf("deform %-10s %.2f ms", name.c_str(), ms);
     if (cpu)
       std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,
@@ -265,6 +323,13 @@ int runBenchCommand(const std::vector<std::string>& args) {
   }
   if (!gpuNote.empty()) std::printf("gpu               %s\n", gpuNote.c_str());
   std::printf("nu update         %.2f ms (a frame at a new nu: only the weights change)\n", nuUpdateMs);
+  std::printf("bem factor        %.2f ms (the boundary matrix of %d unknowns, once per cage and nu)\n", bemFactorMs,
+              cage.dim() * (cage.numFaces() + 1));
+  for (const auto& [name, ms] : analyzeMs)
+    std::printf("det J %-11s %.2f ms (%.1f updates/s: positions, J, det J and distortion)\n", name.c_str(), ms,
+                1e3 / ms);
+  std::printf("coord. gradients  %.3f s, %.1f MB (float; while a J view is shown)\n", gradientSeconds,
+              gradientBytes / 1e6);
   std::printf("coordinates       %.1f MB (float), peak RSS %.1f MB\n", coordBytes / 1e6, peakRss / 1e6);
   return kExitOk;
 }

@@ -1,6 +1,6 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same engine facade
-// (engine.h: loadUsableCage, meshPointsFor, precompute, deformPoints), then saveObj.
-#include <cmath>
+// (engine.h: loadUsableCage, meshPointsFor, precompute, deformPoints), then writeMeshDocument: everything of the
+// mesh but its positions is written back as it came, with normals recomputed.
 #include <iostream>
 #include <sstream>
 
@@ -9,8 +9,9 @@
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
 #include "deformer.h"
+#include "engine.h"
 #include "errors.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage {
 
@@ -18,51 +19,32 @@ namespace {
 
 const char* const kCommand = "somicage deform";
 
-// "somigliana only": the methods that read --variant, --blend, --nu, --gamma and --no-traction-fix.
-std::string paramMethods() {
-  std::string names;
-  for (Method m : allMethods())
-    if (m->takesDeformParams) names += (names.empty() ? "" : ", ") + std::string(m->name);
-  return names + " only";
-}
-
 ArgParser deformOptions() {
   return ArgParser(
       kCommand,
-      {
-          {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
-          {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
-          {"--mesh", "IN.obj", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
-          {"--out", "OUT.obj", "where to write the result: IN's vertices moved, IN's faces", true},
-          {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
-          {"--variant", "NAME", "global (default, blend 0) or local (blend 1); " + paramMethods()},
-          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); " + paramMethods()},
-          {"--gamma", "G", "bulging scale >= 0 (default 0); " + paramMethods()},
-          {"--no-traction-fix", "", "skip the traction correction of Eq. 15; " + paramMethods()},
-          {"--threads", "N", "OpenMP threads (default: all cores)"},
-      });
+      withDeformParams(
+          {
+              {"--cage", "REST", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+              {"--posed", "POSED", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+              {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
+              {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
+              {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
+          },
+          {
+              {"--threads", "N", "OpenMP threads (default: all cores)"},
+          }));
 }
-
-// validateDeformParams names the parameter ("nu"); on the command line it is the option ("--nu").
-void validateOptions(const DeformParams& params) {
-  try {
-    validateDeformParams(params);
-  } catch (const InputError& e) {
-    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
-    throw InputError(source, -1, e.problem(), e.hint());
-  }
-}
-
-Method methodOption(const ArgParser& args) { return parseMethod(args.text("--method", methodName(Method()))); }
 
 }  // namespace
 
 std::string deformUsage() {
   std::ostringstream out;
-  out << "usage: " << kCommand << " --cage REST.obj --posed POSED.obj --mesh IN.obj --out OUT.obj [OPTIONS]\n\n"
+  out << "usage: " << kCommand << " --cage REST --posed POSED --mesh IN --out OUT [OPTIONS]\n\n"
       << "Deforms the vertices of IN with the cage moved from REST to POSED and writes OUT with IN's vertex order\n"
-      << "and faces (coordinates with 17 significant digits). The cage is 2D when every z is 0.\n\n"
+      << "(coordinates with 17 significant digits). An OBJ OUT of an OBJ IN keeps every line of IN but the\n"
+      << "positions (UVs, groups, materials, smoothing groups, faces as written) and recomputes its normals.\n"
+      << "The cage is 2D when every z is 0. Reads " << readableExtensions() << "; writes " << writableExtensions()
+      << ".\n\n"
       << "options:\n"
       << deformOptions().optionHelp();
   return out.str();
@@ -78,28 +60,21 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   // Options first, so that a typo fails before any file is read.
   const Method method = methodOption(args);
-  DeformParams params;
-  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
-  params.blend = args.number("--blend", params.blend);
-  params.nu = args.numberOrInfinity("--nu", params.nu);
-  params.gamma = args.number("--gamma", params.gamma);
-  params.tractionCorrection = !args.has("--no-traction-fix");
-  validateOptions(params);
+  const DeformParams params = deformParamsOptions(args, method);
   const int threads = args.integer("--threads", 0, 0, 4096);
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
 
   // Inputs.
-  const Cage cage = loadUsableCage(cagePath, printNotice);
-  const Eigen::MatrixXd posed = loadPosedVertices(posedPath, cage);
-  const PolygonMesh mesh = loadMesh(meshPath);
+  ReadOptions read;
+  read.weld = args.has("--weld");
+  const Cage cage = loadUsableCage(cagePath, printNotice, read);
+  const Eigen::MatrixXd posed = posedVerticesFromMesh(loadAnyMesh(posedPath, read), cage, posedPath);
+  const MeshDocument document = loadMeshDocument(meshPath, read);
+  const PolygonMesh& mesh = document.geometry;
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
-  if (!method->takesDeformParams && (args.has("--variant") || args.has("--blend") || args.has("--nu") ||
-                                     args.has("--gamma") || args.has("--no-traction-fix"))) {
-    std::cerr << kCommand << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to "
-              << paramMethods() << "; " << methodName(method) << " ignores them\n";
-  }
+  noteIgnoredParameters(kCommand, args, method);
 
   // Precompute once, deform once.
   PrecomputeOptions options;
@@ -125,14 +100,21 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
   result.leftCols(cage.dim()) = deformed;
-  saveObj(outPath, result, mesh);
+  for (const std::string& note : writeMeshDocument(outPath, document, result))
+    std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
 
   std::ostringstream summary;
   summary << kCommand << ": " << cage.dim() << "D " << methodName(method);
-  if (method->takesDeformParams) {
-    summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
-            << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
-  }
+  std::string used;  // the parameters the method reads
+  const auto add = [&](DeformParameter p, const std::string& text) {
+    if (readsParameter(method, p) && !text.empty()) used += (used.empty() ? "" : ", ") + text;
+  };
+  add(kParamBlend, "blend " + formatNumber(params.blend));
+  add(kParamNu, "nu " + formatNumber(params.nu));
+  add(kParamGamma, "gamma " + formatNumber(params.gamma));
+  add(kParamTractionFix, params.tractionCorrection ? "" : "no traction fix");
+  add(kParamCorotational, params.corotational ? "corotational" : "");
+  if (!used.empty()) summary << " (" << used << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
           << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath

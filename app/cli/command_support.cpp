@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "errors.h"
 #include "memory_estimate.h"
 
 namespace somicage {
@@ -31,16 +32,81 @@ void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
-void printNotice(const Notice& notice) {
-  std::cerr << "somicage: " << (notice.kind == Notice::Kind::Repair ? "note: " : "warning: ");
-  if (!notice.source.empty()) std::cerr << notice.source << ": ";
-  std::cerr << notice.text << "\n";
+void printNotice(const Notice& notice) { std::cerr << "somicage: " << describeNotice(notice) << "\n"; }
+
+Method methodOption(const ArgParser& args) {
+  try {
+    return parseMethod(args.text("--method", methodName(Method())));
+  } catch (const InputError& e) {
+    throw InputError("--method", -1, e.problem(), e.hint());
+  }
+}
+
+namespace {
+
+// The options that set a DeformParameter (method.h), for the notes on ignored options.
+struct ParameterOption {
+  const char* option;
+  DeformParameter parameter;
+};
+constexpr ParameterOption kParameterOptions[] = {
+    {"--variant", kParamBlend},
+    {"--blend", kParamBlend},
+    {"--nu", kParamNu},
+    {"--gamma", kParamGamma},
+    {"--no-traction-fix", kParamTractionFix},
+    {"--corotational", kParamCorotational},
+};
+
+}  // namespace
+
+std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
+  const auto forMethods = [](DeformParameter p) { return "; " + methodsReading(p); };
+  before.insert(before.end(),
+                {
+                    {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
+                    {"--variant", "NAME", "global (default, blend 0) or local (blend 1)" + forMethods(kParamBlend)},
+                    {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
+                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0)" + forMethods(kParamNu)},
+                    {"--gamma", "G", "bulging scale >= 0 (default 0)" + forMethods(kParamGamma)},
+                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
+                    {"--corotational", "",
+                     "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
+                });
+  before.insert(before.end(), after.begin(), after.end());
+  return before;
+}
+
+DeformParams deformParamsOptions(const ArgParser& args, Method method) {
+  DeformParams params;
+  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
+  params.blend = args.number("--blend", params.blend);
+  params.nu = args.numberOrInfinity("--nu", params.nu);
+  params.gamma = args.number("--gamma", params.gamma);
+  params.tractionCorrection = !args.has("--no-traction-fix");
+  params.corotational = args.has("--corotational");
+  try {
+    method->validateParams(params);
+  } catch (const InputError& e) {  // the method names the parameter ("nu"); here it is the option
+    const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
+    throw InputError(source, -1, e.problem(), e.hint());
+  }
+  return params;
+}
+
+void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method) {
+  std::string ignored;
+  for (const ParameterOption& o : kParameterOptions)
+    if (args.has(o.option) && !readsParameter(method, o.parameter))
+      ignored += (ignored.empty() ? "" : ", ") + std::string(o.option) + " (" + methodsReading(o.parameter) + ")";
+  if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
 }
 
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath) {
-  // Neither command offers another storage.
-  const MemoryEstimate estimate = requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false));
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients) {
+  // No command offers another storage.
+  const MemoryEstimate estimate =
+      requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), withGradients);
   const std::optional<std::size_t> available = availableMemoryBytes();
   // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
   const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);

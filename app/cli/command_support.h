@@ -5,8 +5,10 @@
 #include <chrono>
 #include <string>
 
+#include "cli/arg_parser.h"
 #include "deformer.h"
 #include "engine.h"
+#include "mesh_formats.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -21,6 +23,20 @@ std::string formatSeconds(double seconds);
 // %g with the given significant digits.
 std::string formatNumber(double value, int digits = 6);
 
+// --method (default somigliana); an unknown name throws InputError naming --method.
+Method methodOption(const ArgParser& args);
+
+// before, then the options of every command that deforms (--method, --variant, --blend, --nu, --gamma,
+// --no-traction-fix, --corotational: read them with methodOption and deformParamsOptions), then after.
+std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
+
+// --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
+// (MethodDescriptor::validateParams; InputError names the option).
+DeformParams deformParamsOptions(const ArgParser& args, Method method);
+
+// Prints a note on stderr when options are given to a method that ignores them (MethodDescriptor::parameters).
+void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
+
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
@@ -31,7 +47,8 @@ void printNotice(const Notice& notice);
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
 // "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
+// withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath);
+                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
 }  // namespace somicage

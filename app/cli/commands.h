@@ -27,9 +27,15 @@ int runHelpCommand(const std::vector<std::string>& args);
 std::string helpUsage();
 int runDeformCommand(const std::vector<std::string>& args);
 std::string deformUsage();
+int runAnimateCommand(const std::vector<std::string>& args);
+std::string animateUsage();
 int runCheckCommand(const std::vector<std::string>& args);
 std::string checkUsage();
+int runCageCommand(const std::vector<std::string>& args);
+std::string cageUsage();
 int runBenchCommand(const std::vector<std::string>& args);
 std::string benchUsage();
+int runAnalyzeCommand(const std::vector<std::string>& args);
+std::string analyzeUsage();
 
 }  // namespace somicage

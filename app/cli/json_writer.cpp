@@ -86,6 +86,20 @@ void JsonObjectWriter::field(const std::string& name, const std::vector<std::pai
   out_ << (values.empty() ? "}" : "\n  }");
 }
 
+void JsonObjectWriter::field(const std::string& name, const std::vector<NumberObject>& objects) {
+  key(name);
+  out_ << "[";
+  for (size_t i = 0; i < objects.size(); ++i) {
+    out_ << (i ? ",\n    {" : "\n    {");
+    for (size_t k = 0; k < objects[i].size(); ++k) {
+      out_ << (k ? ", " : "") << quote(objects[i][k].first) << ": ";
+      writeNumber(objects[i][k].second);
+    }
+    out_ << "}";
+  }
+  out_ << (objects.empty() ? "]" : "\n  ]");
+}
+
 void JsonObjectWriter::close() {
   if (closed_) return;
   closed_ = true;

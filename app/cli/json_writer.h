@@ -24,6 +24,9 @@ class JsonObjectWriter {
   void field(const std::string& key, const std::vector<std::string>& values);
   // A nested object of numbers, in the given order: "key": {"a": 1, "b": 2}.
   void field(const std::string& key, const std::vector<std::pair<std::string, double>>& values);
+  // A list of such objects: "key": [{"a": 1, "b": 2}, {"a": 3, "b": 4}].
+  using NumberObject = std::vector<std::pair<std::string, double>>;
+  void field(const std::string& key, const std::vector<NumberObject>& objects);
   void null(const std::string& key);
   void close();
 

@@ -11,6 +11,7 @@
 
 #include "drop.h"
 #include "errors.h"
+#include "mesh_formats.h"
 #include "obj_io.h"
 
 namespace somicage::editor {
@@ -23,23 +24,30 @@ std::vector<Method> AppState::viewMethods() const {
 std::string viewLabel(const AppState& state, Method method) {
   std::string label = method->displayName;
   char buf[160];
-  if (method->takesDeformParams) {
+  if (readsParameter(method, kParamNu)) {
     const double nu = state.params.nu;
-    char nuText[32];
     if (std::isinf(nu)) {
-      std::snprintf(nuText, sizeof nuText, "%sinf", nu < 0 ? "-" : "");
+      std::snprintf(buf, sizeof buf, "  nu=%sinf", nu < 0 ? "-" : "");
     } else {
-      std::snprintf(nuText, sizeof nuText, "%.2f", nu);
+      std::snprintf(buf, sizeof buf, "  nu=%.2f", nu);
     }
-    const char* variant = state.params.blend <= 0.0 ? "global" : state.params.blend >= 1.0 ? "local" : "blend";
-    std::snprintf(buf, sizeof buf, "  nu=%s  gamma=%.2f  %s", nuText, state.params.gamma, variant);
     label += buf;
-    if (variant[0] == 'b') {
-      std::snprintf(buf, sizeof buf, " %.2f", state.params.blend);
+  }
+  if (readsParameter(method, kParamGamma)) {
+    std::snprintf(buf, sizeof buf, "  gamma=%.2f", state.params.gamma);
+    label += buf;
+  }
+  if (readsParameter(method, kParamBlend)) {
+    const double blend = state.params.blend;
+    if (blend <= 0.0 || blend >= 1.0) {
+      label += blend <= 0.0 ? "  global" : "  local";
+    } else {
+      std::snprintf(buf, sizeof buf, "  blend %.2f", blend);
       label += buf;
     }
-    if (!state.params.tractionCorrection) label += "  no traction fix";
   }
+  if (readsParameter(method, kParamTractionFix) && !state.params.tractionCorrection) label += "  no traction fix";
+  if (readsParameter(method, kParamCorotational) && state.params.corotational) label += "  corotational";
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;
 }
@@ -127,7 +135,8 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
-        state.pose = loadPosedVertices(state.pendingPosedPath, state.scene->restCage);
+        state.pose =
+            posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
         posedLoaded = true;
       } catch (const std::exception& e) {
         state.errors.push_back(e.what());
@@ -233,13 +242,17 @@ const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
 
 // ---- edits ----
 
-Document currentDocument(const AppState& state) { return {state.pose, state.method, state.params}; }
+Document currentDocument(const AppState& state) {
+  return {state.pose, state.method, state.params, state.animation.poses, state.animation.timeline};
+}
 
 void applyDocument(AppState& state, const Document& document) {
   if (document.pose.rows() == state.pose.rows() && document.pose.cols() == state.pose.cols())
     setPose(state, document.pose);
   setParams(state, document.params);
   if (document.method != state.method) setMethod(state, document.method);
+  state.animation.poses = document.poses;
+  state.animation.timeline = document.timeline;
 }
 
 bool commitEdit(AppState& state, const std::string& name) {
@@ -353,10 +366,15 @@ Session makeSession(const AppState& state) {
   s.compare = state.compare;
   s.compareMethods = state.compareMethods;
   s.camera = state.camera.state();
+  s.poses = state.animation.poses;
+  s.timeline = state.animation.timeline;
   return s;
 }
 
 void applySession(AppState& state, const Session& s) {
+  state.animation.poses = s.poses;
+  state.animation.timeline = s.timeline;
+  if (!s.poses.poses().empty() || !s.timeline.keys.empty()) state.animation.showPanels = true;
   state.method = s.method;
   state.params = s.params;
   state.compare = s.compare;
@@ -410,7 +428,7 @@ bool savePosedCage(AppState& state, const std::string& path) {
 bool loadPosedCage(AppState& state, const std::string& path) {
   if (!state.scene) return false;
   try {
-    const Eigen::MatrixXd pose = loadPosedVertices(path, state.scene->restCage);
+    const Eigen::MatrixXd pose = posedVerticesFromMesh(loadAnyMesh(path), state.scene->restCage, path);
     setPose(state, pose);
     commitEdit(state, "Load posed cage");
     state.statusMessage = "loaded pose " + path;
@@ -428,13 +446,20 @@ bool exportDeformedMesh(AppState& state, const std::string& path) {
   if (!state.scene) return false;
   ensureCpuPoints(state, state.method);
   try {
-    PolygonMesh topology;
-    const Eigen::MatrixXi& f = state.scene->meshTriangles;
-    topology.faces.reserve(static_cast<std::size_t>(f.rows()));
-    for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
-    saveObj(path, displayedPoints(state, state.method), topology);
-    state.statusMessage =
-        "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
+    const Eigen::MatrixXd& points = displayedPoints(state, state.method);
+    if (state.scene->document) {  // a file: everything of it but the positions is kept (core/mesh_formats.h)
+      Eigen::MatrixXd positions = state.scene->document->geometry.vertices;  // a 2D scene keeps z
+      positions.leftCols(points.cols()) = points;
+      for (const std::string& note : writeMeshDocument(path, *state.scene->document, positions))
+        state.errors.push_back("export: " + note);
+    } else {
+      PolygonMesh topology;
+      const Eigen::MatrixXi& f = state.scene->meshTriangles;
+      topology.faces.reserve(static_cast<std::size_t>(f.rows()));
+      for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
+      saveObj(path, points, topology);
+    }
+    state.statusMessage = "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
     return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());

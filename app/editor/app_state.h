@@ -19,6 +19,7 @@
 #include "element_pick.h"
 #include "file_dialog.h"
 #include "history.h"
+#include "pose_keys.h"
 #include "precompute_worker.h"
 #include "recent_files.h"
 #include "scene.h"
@@ -26,6 +27,7 @@
 #include "session.h"
 #include "transform.h"
 #include "unsaved_changes.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -82,6 +84,9 @@ struct AppState {
   // GPU backend: methods whose `deformed` entry is stale (the Renderer deformed them on the GPU); ensureCpuPoints()
   // computes them on the CPU when something needs the numbers (framing, export).
   std::vector<Method> cpuStale;
+  // ---- quantities shown on the meshes (view_quantity.h) ----
+  int show = 0;  // index into quantityDescriptors(); 0 = shading only; every view shows it, in one shared range
+  ViewQuantities quantities;
 
   // ---- editing (document.h: what undo restores) ----
   History history;
@@ -89,6 +94,7 @@ struct AppState {
   std::optional<std::string> pendingDocumentPath;  // the session being opened (the scene loads on the worker)
   bool pendingRestored = false;  // the loading scene is a crashed run's autosave: unsaved from the start
   UnsavedPrompt unsaved;
+  AnimationState animation;  // pose library, timeline, playback (pose_keys.h)
   OrbitCamera camera;
   Interaction interaction;
 

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include "deformer.h"
+#include "pose_timeline.h"
 
 namespace somicage::editor {
 
@@ -17,6 +18,8 @@ struct Document {
   Eigen::MatrixXd pose;  // #V by d posed cage vertices
   Method method;  // the registry's first (method.h)
   DeformParams params;
+  PoseLibrary poses;  // the pose library and the timeline (pose_keys.h)
+  Timeline timeline;
 };
 
 // Exact comparison (bitwise for the numbers: undo must restore exactly, and "no change" must be no step).

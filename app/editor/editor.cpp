@@ -27,7 +27,9 @@
 #include "input.h"
 #include "layout.h"
 #include "panels.h"
+#include "quantity_overlay.h"
 #include "screenshot.h"
+#include "timeline_panel.h"
 
 namespace somicage {
 
@@ -52,6 +54,8 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   }
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
+  state.show = o.show;
+  state.showCage = !o.hideCage;
 }
 
 // Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
@@ -185,7 +189,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
   const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
-  const double bottom = state.hideUi ? 0.0 : statusBarHeight();
+  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
@@ -197,16 +201,25 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawHistoryPanel(state);
     drawShortcutSheet(state);
     drawFileDialog(state);
+    if (state.animation.showPanels) {
+      drawTimelinePanel(state, left, statusBarHeight());
+      drawPoseLibraryPanel(state, top);
+    }
+    drawAnimationExportDialogs(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
   drawUnsavedModal(state);
   handleInput(state, views);
+  tickPlayback(state, glfwGetTime());
+  showNextExportFrame(state);
   updateDeformation(state);
   if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
     frameAll(state);
     state.frameRequested = false;
   }
+  measureViews(state);
+  if (!state.hideUi || state.show > 0) drawQuantityOverlay(state, views);
   renderer.sync(state);
   ImGui::Render();
 
@@ -214,6 +227,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
   const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
   renderer.draw(state, views, fbWidth, fbHeight, scale);
+  captureExportFrame(state, fbWidth, fbHeight);  // the views without the panels
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
 
   if (!state.screenshotRequest.empty()) {
@@ -367,6 +381,7 @@ int runWindow(const EditorOptions& options) {
       } else {
         // A few frames let ImGui settle its layout before the capture.
         for (int i = 0; i < 4; ++i) {
+          if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
           if (i == 3) state.screenshotRequest = options.screenshotPath;
           frame(window, state, renderer, title, windowLink.queue);
         }
@@ -376,6 +391,11 @@ int runWindow(const EditorOptions& options) {
         } else {
           std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
                       backendDisplayName(state.activeBackend()));
+          if (state.show > 0) {  // the legend's numbers, for scripts and tests
+            const ColorRange range = shownRange(state);
+            std::printf("legend %s: %.17g %.17g\n", quantityDescriptors()[static_cast<std::size_t>(state.show)].id,
+                        range.lo, range.hi);
+          }
         }
       }
     } else {
@@ -384,7 +404,8 @@ int runWindow(const EditorOptions& options) {
       while (!state.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.loadingScene;
+        demand.busy = state.worker.busy() || state.loadingScene || state.animation.playing ||
+                      state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);
         wait > 0 ? glfwWaitEventsTimeout(wait) : glfwPollEvents();

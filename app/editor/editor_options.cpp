@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "session.h"  // kMaxCompareViews
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -98,6 +99,12 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--nu-plot") {
+      o.nuPlot = true;
+    } else if (a == "--hide-cage") {
+      o.hideCage = true;
+    } else if (a == "--show") {
+      o.show = quantityIndex(value(), a);
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -110,15 +117,14 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       positional.push_back(a);
     }
   }
-  if (positional.size() == 1 || positional.size() > 3) {
+  if (positional.size() > 3) {
     throw InputError("command line", -1,
-                     "expected MESH CAGE [POSED], got " + std::to_string(positional.size()) + " file(s)",
-                     "give no files for the demo, or a mesh and its cage (and optionally a posed cage)");
+                     "expected MESH [CAGE [POSED]], got " + std::to_string(positional.size()) + " files",
+                     "give no files for the demo, a mesh (a cage is made for it), or a mesh and its cage (and "
+                     "optionally a posed cage)");
   }
-  if (positional.size() >= 2) {
-    o.meshPath = positional[0];
-    o.cagePath = positional[1];
-  }
+  if (!positional.empty()) o.meshPath = positional[0];
+  if (positional.size() >= 2) o.cagePath = positional[1];
   if (positional.size() == 3) o.posedPath = positional[2];
   if (o.nu) {
     DeformParams p;
@@ -137,7 +143,7 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
 }
 
 std::string editorUsage() {
-  return "usage: somicage [MESH.obj CAGE.obj [POSED.obj]] [options]\n"
+  return "usage: somicage [MESH.obj [CAGE.obj [POSED.obj]]] [options]   (no cage: one is made, see 'somicage cage')\n"
          "       somicage deform|check|bench|help ...   (command line tools, see 'somicage help')\n"
          "\n"
          "With no files the built-in demo opens.\n"
@@ -150,11 +156,18 @@ std::string editorUsage() {
          "  --gamma X                 bulging scale >= 0\n"
          "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
          "  --traction-fix on|off     traction correction (Eq. 15)\n"
-         "  --compare a,b[,c]         side-by-side views, e.g. somigliana,green,mvc\n"
+         "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
          "  --flat                    faceted shading instead of smooth\n"
+         "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
+         "                            change against nu (in the window: the Sweep nu button)\n"
+         "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
+         "  --show detj|distortion|foldover|area\n"
+         "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
+         "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
+         "                            magenta) or the triangles' area ratio (per vertex: geometric mean, log scale)\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"

@@ -29,6 +29,9 @@ struct EditorOptions {
   bool restoreAutosave = false;               // --restore-autosave: restore a crashed session without asking
   int frameDelayMs = 0;                       // --frame-delay MS: testing, every frame MS slower (low frame rates)
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
+  bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
+  bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
+  int show = 0;                               // --show detj|distortion|foldover (view_quantity.h)
   bool help = false;                          // -h / --help
 };
 

@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "gl_context.h"
+#include "quantity_overlay.h"
 
 namespace somicage::editor {
 
@@ -93,6 +94,7 @@ void Renderer::sync(AppState& state) {
       slot.onGpu = false;
     }
   }
+  syncScalars(state);
   if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
   if (gpuBackend && state.activeBackend() == DeformBackend::Gpu)
     state.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
@@ -105,6 +107,26 @@ void Renderer::sync(AppState& state) {
     cage_.setPositions(state.pose);
     cage_.setSelection(state.selection.flags());
     cagePose_ = state.poseGeneration;
+  }
+}
+
+void Renderer::syncScalars(const AppState& state) {
+  const std::vector<Method> methods = state.viewMethods();
+  const QuantityDescriptor& d = quantityDescriptors()[static_cast<std::size_t>(state.show)];
+  const ColorRange range = shownRange(state);
+  for (std::size_t v = 0; v < methods.size() && v < meshes_.size(); ++v) {
+    MeshSlot& slot = meshes_[v];
+    if (slot.quantityGeneration == state.quantities.generation() && slot.method == methods[v]) continue;
+    slot.quantityGeneration = state.quantities.generation();
+    const ViewMeasurement* m = state.show > 0 ? state.quantities.measurement(methods[v]) : nullptr;
+    if (!m || m->values.size() != state.scene->meshVertices.rows()) {
+      slot.colorMap = -1;
+      continue;
+    }
+    Eigen::VectorXf t(m->values.size());
+    for (Eigen::Index i = 0; i < t.size(); ++i) t[i] = colorCoordinate(m->values[i], m->detJ[i], range, d.scale);
+    slot.mesh->setScalars(t);
+    slot.colorMap = d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
   }
 }
 
@@ -130,6 +152,7 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
         framebufferHeight - static_cast<int>(std::lround(r.y * framebufferScale)) - rect.height;  // GL: bottom-left
     render::beginViewport(rect, &kViewBackground);
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
+    meshStyle.colorMap = state.show > 0 ? meshes_[v].colorMap : -1;
     if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);
     if (state.showCage) cage_.draw(matrices, cageStyle);
   }

@@ -40,8 +40,12 @@ class Renderer {
     // GPU backend: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
     std::unique_ptr<render::GpuDeformer> gpu;
     std::shared_ptr<const CageDeformer> uploaded;
-    bool onGpu = false;  // the vertex buffers hold the GPU's result
+    bool onGpu = false;                        // the vertex buffers hold the GPU's result
+    std::uint64_t quantityGeneration = ~0ull;  // ViewQuantities::generation() of the uploaded scalars
+    int colorMap = -1;                         // MeshStyle::colorMap of the uploaded scalars
   };
+  // Uploads the shown quantity's colour-map coordinates of each view (shared range) when they changed.
+  void syncScalars(const AppState& state);
   // Deforms slot v on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.
   bool syncGpu(MeshSlot& slot, const AppState& state, Method method, bool newScene);
   std::vector<MeshSlot> meshes_;

@@ -11,6 +11,7 @@
 #include <limits>
 #include <system_error>
 
+#include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
 
@@ -55,6 +56,10 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
     if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
     commandItem(state, "Export deformed mesh...", "export");
+    if (ImGui::MenuItem("Export animation...")) {
+      state.animation.exportDialogRequested = true;
+      state.animation.showPanels = true;  // the dialog is drawn with the panels' code
+    }
     ImGui::Separator();
     commandItem(state, "Open session...", "open_session");
     commandItem(state, "Save session", "save");
@@ -88,6 +93,7 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Compare methods", nullptr, &compare)) setCompare(state, compare);
     ImGui::MenuItem("Show cage", nullptr, &state.showCage);
     ImGui::MenuItem("Show mesh", nullptr, &state.showMesh);
+    ImGui::MenuItem("Timeline and pose library", nullptr, &state.animation.showPanels);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
@@ -137,7 +143,8 @@ void drawControlPanel(AppState& state) {
   }
   tooltip(
       "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
-      "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates.");
+      "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates;\n"
+      "BEM: the linear-elastic solution of the pose (boundary elements, the same nu), a reference.");
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   tooltip(
@@ -164,9 +171,9 @@ void drawControlPanel(AppState& state) {
 
   sectionHeader("Somigliana parameters");
   // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
-  bool somiglianaShown = false;
-  for (Method m : state.viewMethods()) somiglianaShown |= m->takesDeformParams;
-  if (!somiglianaShown) ImGui::BeginDisabled();
+  bool parametersUsed = false;
+  for (Method m : state.viewMethods()) parametersUsed |= m->parameters != 0;
+  if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once
   int variant = p.blend <= 0.0 ? 0 : (p.blend >= 1.0 ? 1 : 2);
@@ -218,16 +225,21 @@ void drawControlPanel(AppState& state) {
   tooltip(
       "Traction correction (Eq. 15): s'_j = s_j - lambda . w_j, so that a similarity pose moves the mesh\n"
       "exactly as a similarity.");
-  if (!somiglianaShown) ImGui::EndDisabled();
+  if (ImGui::Checkbox("BEM: corotational", &p.corotational)) changed = "Corotational";
+  tooltip(
+      "BEM only: remove the cage's best-fit rotation (Umeyama) before the linear solve and apply it after,\n"
+      "so that large rotations of the cage do not shear the mesh.");
+  if (!parametersUsed) ImGui::EndDisabled();
   if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
-      p.tractionCorrection != state.params.tractionCorrection) {
+      p.tractionCorrection != state.params.tractionCorrection || p.corotational != state.params.corotational) {
     setParams(state, p);
   }
   if (!changed.empty()) commitEdit(state, changed);
   if (blendDone) commitEdit(state, "blend");
   if (nuDone) commitEdit(state, "nu");
   if (gammaDone) commitEdit(state, "gamma");
-  if (!somiglianaShown) ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
+  if (!parametersUsed) ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
+  drawNuPlot(state);
 
   sectionHeader("Pose");
   if (ImGui::Button("Reset pose")) resetPose(state);
@@ -266,6 +278,8 @@ void drawControlPanel(AppState& state) {
   tooltip("Draw the mesh's edges");
   ImGui::Checkbox("flat shading", &state.flatShading);
   tooltip("Faceted shading (one normal per triangle) instead of smooth");
+  drawShowChoice(state);
+  tooltip("Colour the meshes by a quantity of the pose (measured when the pose settles; one range for all views)");
 
   sectionHeader("Deformation backend");
   {

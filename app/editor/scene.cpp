@@ -4,8 +4,9 @@
 #include <cmath>
 #include <vector>
 
+#include "cage_generation.h"
 #include "engine.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage::editor {
 
@@ -114,18 +115,30 @@ Scene demo2D() {
 
 Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
 
+// A mesh opened without a cage gets a generated one (core/cage_generation.h, the defaults of 'somicage cage').
+Cage generatedCage(const PolygonMesh& mesh, const std::string& meshPath, std::vector<std::string>& notices) {
+  const GeneratedCage generated =
+      generateCage(mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces), CageGenerationOptions{}, meshPath);
+  notices.push_back("cage generated: " + std::to_string(generated.cage.numFaces()) +
+                    " faces around the mesh (write it to a file with 'somicage cage --mesh MESH --out CAGE.obj')");
+  return generated.cage;
+}
+
 Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
-  // The engine's one order (engine.h); its notices go to the status bar.
+  auto document = std::make_shared<const MeshDocument>(loadMeshDocument(meshPath));
+  const PolygonMesh& mesh = document->geometry;
+  // The engine's one order (engine.h), for a generated cage too; its notices go to the status bar. The placement
+  // warning names both files itself (no source); every other notice is about the cage.
   auto notice = [&](const Notice& n) {
-    const bool cage = n.source == cagePath;
-    s.notices.push_back(std::string(cage ? "cage " : "mesh ") +
+    s.notices.push_back(std::string(n.source.empty() ? "mesh " : "cage ") +
                         (n.kind == Notice::Kind::Repair ? "repaired: " : "warning: ") + n.text);
   };
-  s.restCage = loadUsableCage(cagePath, notice);
-  const PolygonMesh mesh = loadMesh(meshPath);
+  s.restCage = cagePath.empty() ? prepareCage(generatedCage(mesh, meshPath, s.notices), meshPath, notice)
+                                : loadUsableCage(cagePath, notice);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
   s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cagePath, notice);
+  s.document = std::move(document);
   s.meshPath = meshPath;
   s.cagePath = cagePath;
   const std::size_t slash = meshPath.find_last_of('/');

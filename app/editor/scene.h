@@ -2,10 +2,12 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "cage.h"
+#include "mesh_document.h"
 
 namespace somicage::editor {
 
@@ -14,7 +16,8 @@ struct Scene {
   Eigen::MatrixXd meshVertices;   // #V by d, d = restCage.dim()
   Eigen::MatrixXi meshTriangles;  // #F by 3 (polygons of the file triangulated; may be empty for point sets)
   Cage restCage;
-  std::string meshPath, cagePath;    // empty for the built-in demos
+  std::string meshPath, cagePath;                // empty for the built-in demos
+  std::shared_ptr<const MeshDocument> document;  // the mesh file as read, for lossless export (null for demos)
   std::vector<std::string> notices;  // what loadScene repaired in the cage, and warnings about it (one sentence each)
 
   int dim() const { return restCage.dim(); }
@@ -26,10 +29,11 @@ struct Scene {
 // polygon cage.
 Scene makeDemoScene(int dim);
 
-// Loads MESH.obj and CAGE.obj through the engine facade (core/engine.h), as the command line does: the cage is
-// repaired, validated and warned about in the engine's one order, and the notices say what it found. A 2D cage
-// makes a 2D scene (the mesh keeps x, y).
-// Throws InputError on any problem with the files, and when the repaired cage is still not valid.
+// Loads MESH and CAGE in any format of core/mesh_formats.h through the engine facade (core/engine.h), as the command
+// line does: the cage is repaired, validated and warned about in the engine's one order, which the notices say. A 2D
+// cage makes a 2D scene (the mesh keeps x, y). An empty cagePath makes a cage for the mesh (core/cage_generation.h,
+// 200 faces), which the notices say too. Throws InputError on any problem with the files, and when the repaired cage
+// is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
 
 // Axis-aligned bounds of #V by 2 or 3 points as 3D corners (z = 0 for 2D).

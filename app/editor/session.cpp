@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "file_util.h"
 #include "json.h"
+#include "pose_timeline_json.h"
 
 namespace somicage::editor {
 
@@ -83,7 +84,7 @@ struct Reader {
 std::string sessionToJson(const Session& s) {
   JsonValue root = JsonValue::object();
   root.set("format", JsonValue::string("somicage-session"));
-  root.set("version", JsonValue::number(1));
+  root.set("version", JsonValue::number(2));
   root.set("mesh", JsonValue::string(s.meshPath));
   root.set("cage", JsonValue::string(s.cagePath));
   root.set("demoDim", JsonValue::number(s.demoDim));
@@ -100,6 +101,7 @@ std::string sessionToJson(const Session& s) {
   params.set("nu", numberOrInfinity(s.params.nu));
   params.set("gamma", JsonValue::number(s.params.gamma));
   params.set("tractionCorrection", JsonValue::boolean(s.params.tractionCorrection));
+  params.set("corotational", JsonValue::boolean(s.params.corotational));
   root.set("params", std::move(params));
   root.set("compare", JsonValue::boolean(s.compare));
   JsonValue methods = JsonValue::array();
@@ -111,6 +113,8 @@ std::string sessionToJson(const Session& s) {
   camera.set("yaw", JsonValue::number(s.camera.yaw));
   camera.set("pitch", JsonValue::number(s.camera.pitch));
   root.set("camera", std::move(camera));
+  root.set("poses", poseLibraryToJson(s.poses));
+  root.set("timeline", timelineToJson(s.timeline));
   return root.dump(2);
 }
 
@@ -119,7 +123,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   const Reader r{source};
   if (!root.isObject()) r.fail("a session file must hold a JSON object");
   if (r.string(root, "format") != "somicage-session") r.fail("not a SomiCage session (\"format\" differs)");
-  if (r.number(root, "version") != 1) r.fail("unsupported session version (this build reads version 1)");
+  const double version = r.number(root, "version");
+  if (version != 1 && version != 2) r.fail("unsupported session version (this build reads versions 1 and 2)");
   Session s;
   s.meshPath = r.string(root, "mesh");
   s.cagePath = r.string(root, "cage");
@@ -148,6 +153,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.params.nu = r.number(params, "nu", true);
   s.params.gamma = r.number(params, "gamma");
   s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
+  // BEM's option; sessions saved before it existed do not have it (off).
+  s.params.corotational = params.find("corotational") != nullptr && r.boolean(params, "corotational");
   try {
     validateDeformParams(s.params);
   } catch (const InputError& e) {
@@ -167,6 +174,8 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.camera.yaw = r.number(camera, "yaw");
   s.camera.pitch = r.number(camera, "pitch");
   if (!(s.camera.distance > 0) || !std::isfinite(s.camera.distance)) r.fail("camera \"distance\" must be positive");
+  if (const JsonValue* poses = root.find("poses")) s.poses = poseLibraryFromJson(*poses, source);
+  if (const JsonValue* timeline = root.find("timeline")) s.timeline = timelineFromJson(*timeline, source);
   return s;
 }
 

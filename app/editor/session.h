@@ -8,6 +8,7 @@
 
 #include "camera.h"
 #include "deformer.h"
+#include "pose_timeline.h"
 
 namespace somicage::editor {
 
@@ -24,9 +25,13 @@ struct Session {
   bool compare = false;
   std::vector<Method> compareMethods = defaultCompareMethods();
   CameraState camera;
+  PoseLibrary poses;  // named poses and the keyframes that use them (core/pose_timeline.h)
+  Timeline timeline;
 };
 
-// JSON text with "format": "somicage-session", "version": 1. nu = +-infinity is written as "inf" / "-inf".
+// JSON text with "format": "somicage-session", "version": 2 (version 2 adds "poses" and "timeline",
+// core/pose_timeline_json.h; version 1 files load with an empty library and timeline). nu = +-infinity is written as
+// "inf" / "-inf".
 std::string sessionToJson(const Session& session);
 // Throws InputError naming `source` on a syntax error, a missing or mistyped field, or an unknown method.
 Session sessionFromJson(const std::string& text, const std::string& source);

@@ -1,9 +1,11 @@
 // Green coordinates as a deformation method (method.h): its layout, precompute, frame weights and descriptor.
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
 
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "deformer.h"
 #include "errors.h"
 #include "exterior_points.h"
@@ -78,6 +80,22 @@ class GreenDeformer : public CageDeformer {
   Method method() const override { return methods::green(); }
   int dim() const override { return rest_.dim(); }
 
+  // C's rows are [phi | psi | x | 1]: their gradients [dphi | dpsi | 0 | 0] (coordinate_gradients.h).
+  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                    const ProgressCallback& progress) const override {
+    const int columns = coordinates_.columns(), main = coordinates_.mainColumns;
+    std::vector<CoordinateMatrix<double>> gradients(static_cast<std::size_t>(dim()));
+    for (auto& g : gradients) g.setZero(points.rows(), columns);
+    integrateGreenGradients(rest_, points, threads_, progress, [&](int p, const double* const* rows) {
+      if (diagnostics_.regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
+      for (int a = 0; a < dim(); ++a)
+        std::copy(rows[a], rows[a] + main, gradients[static_cast<std::size_t>(a)].row(p).data());
+    });
+    std::vector<FrameCoordinates> frames;
+    for (auto& g : gradients) frames.push_back(makeFrameCoordinates(std::move(g), main, coordinates_.isFloat()));
+    return frames;
+  }
+
   FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams&) const override {
     SOMICAGE_ASSERT(posedVertices.rows() == rest_.numVertices() && posedVertices.cols() == rest_.dim(),
                     "the posed cage has the rest cage's vertex count and dimension");
@@ -121,8 +139,8 @@ std::size_t greenWorkingBytes(const CoordinateLayout& layout, int, std::size_t p
 namespace methods {
 
 const MethodDescriptor& green() {
-  static const MethodDescriptor descriptor{"green",           "Green",        1, false, false, greenLayout,
-                                           greenWorkingBytes, precomputeGreen};
+  static const MethodDescriptor descriptor{
+      "green", "Green", 1, 0, false, validateDeformParams, greenLayout, greenWorkingBytes, precomputeGreen};
   return descriptor;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "boundary_conditions.h"
+#include "coordinate_gradients.h"
 #include "deformer.h"
 #include "errors.h"
 #include "exterior_points.h"
@@ -46,6 +47,41 @@ void setTColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
   W.row(row).head(y.size()) = y.transpose();
 }
 
+// The per-vertex sums of a row's vertex terms (vertexTermCount numbers into sums, zeroed by the caller). In vertex
+// order: an Eigen reduction's order would depend on the buffer's alignment, and so on the thread.
+void sumVertexTerms(const CoordinateLayout& layout, const double* integrals, double* sums) {
+  for (int k = 0; k < layout.vertexTerms; ++k)
+    for (int i = 0; i < layout.numVertices; ++i) sums[k] += integrals[layout.vertexColumn(i, k)];
+}
+
+// A point's integrals (already in the layout of C, layout.mainColumns() numbers) and their per-vertex sums in the
+// tail, the tail's [x | 1] columns zero, in the storage type.
+template <typename Scalar>
+void writeIntegralColumns(const CoordinateLayout& layout, const double* integrals, const double* sums, Scalar* row) {
+  for (int k = 0; k < layout.mainColumns(); ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  for (int k = 0; k < layout.vertexTerms; ++k) row[layout.tailColumn(k)] = static_cast<Scalar>(sums[k]);
+  for (int k = layout.vertexTerms; k < layout.tailColumns; ++k) row[layout.tailColumn(k)] = Scalar(0);
+}
+
+// The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the dual-number integrals of
+// coordinate_gradients.h (in the layout of C) and their sums; zero rows for points that are not Inside.
+template <typename Scalar>
+void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<PointRegion>& regions,
+                             int threads, const ProgressCallback& progress, const CoordinateLayout& layout,
+                             std::vector<CoordinateMatrix<Scalar>>& gradients) {
+  const int d = cage.dim();
+  gradients.resize(static_cast<std::size_t>(d));  // one at a time: no temporary fourth copy
+  for (auto& g : gradients) g.setZero(points.rows(), layout.columns());
+  integrateSomiglianaGradients(cage, points, threads, progress, [&](int p, const double* const* rows) {
+    if (regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
+    for (int a = 0; a < d; ++a) {
+      double sums[vertexTermCount(3)] = {0};
+      sumVertexTerms(layout, rows[a], sums);
+      writeIntegralColumns(layout, rows[a], sums, gradients[static_cast<std::size_t>(a)].row(p).data());
+    }
+  });
+}
+
 // Writes a point's row of C in the storage type: its integrals (already in the layout of C) and their per-vertex
 // sums where they are reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region
 // and its partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
@@ -54,10 +90,8 @@ template <typename Scalar>
 PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::MatrixXd& points, int p,
                           const CoordinateLayout& layout, bool exactIntegrals, Scalar* row, double& residual) {
   const int dim = static_cast<int>(points.cols()), main = layout.mainColumns(), columns = layout.columns();
-  // In vertex order: an Eigen reduction's order would depend on the buffer's alignment, and so on the thread.
   double sums[vertexTermCount(3)] = {0};
-  for (int k = 0; k < layout.vertexTerms; ++k)
-    for (int i = 0; i < layout.numVertices; ++i) sums[k] += integrals[layout.vertexColumn(i, k)];
+  sumVertexTerms(layout, integrals, sums);
   residual = unityResidualOfSums(sums, dim);
   // NaN and infinity survive a sum: one vectorised reduction checks the whole row (7x cheaper than allFinite).
   const bool finite = std::isfinite(Eigen::Map<const Eigen::ArrayXd>(integrals, main).sum());
@@ -69,9 +103,7 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
     writeSimilarityRow(points, p, row, columns);
     return region;
   }
-  for (int k = 0; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
-  for (int k = 0; k < layout.vertexTerms; ++k) row[layout.tailColumn(k)] = static_cast<Scalar>(sums[k]);
-  for (int k = layout.vertexTerms; k < layout.tailColumns; ++k) row[layout.tailColumn(k)] = Scalar(0);
+  writeIntegralColumns(layout, integrals, sums, row);
   return region;
 }
 
@@ -122,6 +154,26 @@ class SomiglianaDeformer final : public CageDeformer {
 
   Method method() const override { return methods::somigliana(); }
   int dim() const override { return rest_.dim(); }
+
+  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
+                                                    const ProgressCallback& progress) const override {
+    std::vector<FrameCoordinates> frames(static_cast<std::size_t>(dim()));
+    const bool isFloat = coordinates_.isFloat();
+    std::vector<CoordinateMatrix<float>> floats;
+    std::vector<CoordinateMatrix<double>> doubles;
+    if (isFloat)
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, layout_, floats);
+    else
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, layout_, doubles);
+    for (std::size_t a = 0; a < frames.size(); ++a) {
+      frames[a].mainColumns = coordinates_.mainColumns;
+      if (isFloat)
+        frames[a].floats = std::move(floats[a]);
+      else
+        frames[a].doubles = std::move(doubles[a]);
+    }
+    return frames;
+  }
 
   // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j R_j K_j R_j^T tau~_j], T(x) = sum_i R_i T_i R_i^T,
   // evaluated as o + T(x)^-1 [... (v~_i - o) ...] about the posed centroid o (frame_evaluation.h).
@@ -216,8 +268,15 @@ std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::siz
 namespace methods {
 
 const MethodDescriptor& somigliana() {
-  static const MethodDescriptor descriptor{
-      "somigliana", "Somigliana", 0, true, false, somiglianaLayout, somiglianaWorkingBytes, precomputeSomigliana};
+  static const MethodDescriptor descriptor{"somigliana",
+                                           "Somigliana",
+                                           0,
+                                           kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
+                                           false,
+                                           validateDeformParams,
+                                           somiglianaLayout,
+                                           somiglianaWorkingBytes,
+                                           precomputeSomigliana};
   return descriptor;
 }
 

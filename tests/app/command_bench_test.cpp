@@ -14,10 +14,13 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   ASSERT_EQ(r.exitCode, 0) << r;
   const Json json = JsonParser::parse(r.out);
   ASSERT_EQ(json.type, Json::Type::Object);
-  const std::vector<std::string> keys = {
-      "mesh_vertices",    "cage_vertices", "cage_faces",          "threads",         "precompute_s",
-      "pou_max",          "pou_median",    "baseline_quadrature", "baseline_points", "baseline_speedup",
-      "baseline_pou_max", "deform_ms",     "nu_update_ms",        "coord_bytes",     "peak_rss_bytes"};
+  const std::vector<std::string> keys = {"mesh_vertices",    "cage_vertices",       "cage_faces",
+                                         "threads",          "precompute_s",        "pou_max",
+                                         "pou_median",       "baseline_quadrature", "baseline_points",
+                                         "baseline_speedup", "baseline_pou_max",    "deform_ms",
+                                         "nu_update_ms",     "coord_bytes",         "peak_rss_bytes",
+                                         "analyze_ms",       "detj_updates_per_s",  "gradient_precompute_s",
+                                         "gradient_bytes",   "bem_factor_ms"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
   EXPECT_EQ(json["mesh_vertices"].number, 5);
@@ -29,8 +32,15 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_GT(json["baseline_speedup"].number, 1.0);  // 192 Gauss points per triangle against one closed form
   ASSERT_EQ(json["deform_ms"].type, Json::Type::Object);
   EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
+  EXPECT_TRUE(json["deform_ms"].has("cpu_bem"));
+  EXPECT_GT(json["bem_factor_ms"].number, 0);
   EXPECT_GT(json["coord_bytes"].number, 0);
   EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
+  ASSERT_EQ(json["analyze_ms"].type, Json::Type::Object);
+  EXPECT_TRUE(json["analyze_ms"].has("cpu_global") && json["analyze_ms"].has("cpu_local"));
+  EXPECT_NEAR(json["detj_updates_per_s"].number, 1e3 / json["analyze_ms"]["cpu_local"].number, 1e-6);
+  // Three gradient matrices of C's point rows (the bench stores C in float), plus one frame's J and outputs.
+  EXPECT_GE(json["gradient_bytes"].number, 3 * json["coord_bytes"].number);
 }
 
 TEST(CliBench, MissingMeshIsBadInput) {

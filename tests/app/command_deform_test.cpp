@@ -27,6 +27,8 @@ const std::vector<MethodCase> kMethods = {
     {"somigliana nu inf", {"--nu=inf", "--variant=local"}},
     {"green", {"--method", "green"}},
     {"mvc", {"--method", "mvc"}},
+    {"bem nu 0.3", {"--method", "bem", "--nu", "0.3"}},
+    {"bem nu inf, corotational", {"--method", "bem", "--nu", "inf", "--corotational"}},
 };
 
 RunResult deform(const std::string& cage, const std::string& posed, const std::string& mesh, const std::string& out,
@@ -127,6 +129,16 @@ TEST(CliDeform, SharedModelsDeform) {
   EXPECT_EQ(output.faces, input.faces);
   EXPECT_TRUE(output.vertices.allFinite());
   EXPECT_GT(maxDistance(output.vertices, input.vertices), 1e-2 * size) << "the pose should move the mesh";
+
+  // The boundary element reference on the same pose: finite, and moves the mesh.
+  r = deform(cage, posed, mesh, dir.file("bem.obj"), {"--method", "bem", "--nu", "0.3"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const PolygonMesh bem = loadMesh(dir.file("bem.obj"));
+  EXPECT_TRUE(bem.vertices.allFinite());
+  EXPECT_GT(maxDistance(bem.vertices, input.vertices), 1e-2 * size) << "the pose should move the mesh";
+  r = deform(cage, posed, mesh, dir.file("half.obj"), {"--method", "bem", "--nu", "0.5"});
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.err.find("incompressible"), std::string::npos) << r;
 
   // A quad cage (triangulated on load) at rest.
   const fs::path wire = kModelsDir / "wiresphere";

@@ -20,11 +20,10 @@ namespace {
 constexpr int kLanes = 32;
 
 template <typename Scalar, int Dim>
-Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame,
-                              const FrameWeights& W) {
+Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame, const FrameWeights& W) {
   const RowMatrixXd main = W.main, tail = W.tail;
-  PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns,
-                               W.mainOffset, W.outputs, {0, 0, 0}};
+  PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns, W.mainOffset,
+                               W.outputs,   {0, 0, 0}};
   for (int a = 0; a < Dim && a < W.origin.size(); ++a) weights.origin[a] = W.origin(a);
   Eigen::MatrixXd out(C.rows(), Dim);
   for (int p = 0; p < C.rows(); ++p) {

@@ -14,10 +14,9 @@
 #include <random>
 #include <vector>
 
-#include "test_shapes.h"
-#include "triangle_integrals.h"
 #include "cuda/somigliana_row_portable.h"
 #include "somigliana_coordinates.h"
+#include "test_shapes.h"
 #include "triangle_integrals.h"
 
 namespace somicage {

@@ -210,7 +210,8 @@ TEST_P(ExteriorPointsTest, FloatStorageMatchesDouble) {
 INSTANTIATE_TEST_SUITE_P(Methods, ExteriorPointsTest,
                          ::testing::Values(Case{"somigliana3d", 3, methods::somigliana()},
                                            Case{"somigliana2d", 2, methods::somigliana()},
-                                           Case{"green3d", 3, methods::green()}, Case{"green2d", 2, methods::green()}),
+                                           Case{"green3d", 3, methods::green()}, Case{"green2d", 2, methods::green()},
+                                           Case{"bem3d", 3, methods::bem()}, Case{"bem2d", 2, methods::bem()}),
                          test::methodCaseName);
 
 TEST(ExteriorPoints, ProxiesAreInsideWithAccurateIntegrals) {

@@ -7,6 +7,7 @@
 #include "errors.h"
 #include "layout.h"
 #include "methods/method_descriptors.h"
+#include "view_quantity.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -58,6 +59,13 @@ TEST(EditorOptions, DemoByDefault) {
   EXPECT_EQ(parseEditorArgs({"--demo", "2d"}).demoDim, 2);
 }
 
+// A mesh alone opens with a generated cage (scene.h): no cage path.
+TEST(EditorOptions, MeshAloneHasNoCagePath) {
+  const EditorOptions o = parseEditorArgs({"m.obj"});
+  EXPECT_EQ(o.meshPath, "m.obj");
+  EXPECT_TRUE(o.cagePath.empty());
+}
+
 TEST(EditorOptions, BadInputNamesTheOption) {
   auto sourceOf = [](std::vector<std::string> args) {
     try {
@@ -74,6 +82,17 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--compare", "green,foo"}), "--compare");
   EXPECT_EQ(sourceOf({"--size", "12"}), "--size");
   EXPECT_EQ(sourceOf({"--bogus"}), "--bogus");
-  EXPECT_EQ(sourceOf({"only_one.obj"}), "command line");
+  EXPECT_EQ(sourceOf({"a.obj", "b.obj", "c.obj", "d.obj"}), "command line");
   EXPECT_EQ(sourceOf({"--method"}), "--method");
+  EXPECT_EQ(sourceOf({"--show", "volume"}), "--show");
+  EXPECT_EQ(sourceOf({"--show"}), "--show");
+}
+
+TEST(EditorOptions, ShowNamesAQuantityDescriptor) {
+  const EditorOptions o = parseEditorArgs({"--show", "detj", "--hide-cage"});
+  EXPECT_STREQ(quantityDescriptors()[static_cast<std::size_t>(o.show)].id, "detj");
+  EXPECT_TRUE(quantityDescriptors()[static_cast<std::size_t>(o.show)].usesJacobian);
+  EXPECT_TRUE(o.hideCage);
+  EXPECT_EQ(parseEditorArgs({}).show, 0);  // shading only
+  EXPECT_EQ(quantityDescriptors()[0].values, nullptr);
 }

@@ -5,6 +5,8 @@
 #include <filesystem>
 
 #include "app_state.h"
+#include "cage_generation.h"
+#include "cage_validation.h"
 #include "errors.h"
 #include "obj_io.h"
 #include "scene.h"
@@ -87,3 +89,21 @@ TEST(EditorSceneRepair, AMeshInOtherUnitsGetsANotice) {
   const std::string expected = "mesh warning: the mesh " + millimetres + " and the cage " + cage + " do not fit";
   EXPECT_EQ(scene.notices[0].rfind(expected, 0), 0u) << scene.notices[0];
 }
+
+namespace {
+
+// A mesh opened alone gets a generated cage that encloses it (core/cage_generation.h), and a notice saying so.
+TEST(EditorSceneRepair, MeshWithoutACageGetsAGeneratedOne) {
+  CubeFiles files("scene_generated_cage");
+  const std::string mesh = files.cage("cube_mesh.obj", files.cube);  // the cube as a mesh this time
+  const Scene scene = loadScene(mesh, "");
+  EXPECT_TRUE(validateCage(scene.restCage).valid());
+  EXPECT_LE(scene.restCage.numFaces(), CageGenerationOptions{}.maxFaces);
+  // Strictly outside the cube [-1, 1]^3 by a margin: every cage vertex beyond it in some coordinate.
+  for (int i = 0; i < scene.restCage.numVertices(); ++i)
+    EXPECT_GT(scene.restCage.vertices.row(i).cwiseAbs().maxCoeff(), 1.0);
+  ASSERT_FALSE(scene.notices.empty());
+  EXPECT_NE(scene.notices.front().find("cage generated"), std::string::npos);
+}
+
+}  // namespace

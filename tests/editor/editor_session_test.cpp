@@ -25,8 +25,9 @@ Session sample() {
   s.params.gamma = 2.25;
   s.params.blend = 0.125;
   s.params.tractionCorrection = false;
+  s.params.corotational = true;
   s.compare = true;
-  s.compareMethods = {methods::somigliana(), methods::mvc()};
+  s.compareMethods = {methods::somigliana(), methods::bem(), methods::mvc()};
   s.camera.target = Eigen::Vector3d(0.1, -0.2, 0.3);
   s.camera.distance = 7.5;
   s.camera.yaw = -1.25;
@@ -46,6 +47,7 @@ TEST(EditorSession, RoundTripIsExact) {
   EXPECT_EQ(b.params.gamma, a.params.gamma);
   EXPECT_EQ(b.params.blend, a.params.blend);
   EXPECT_EQ(b.params.tractionCorrection, a.params.tractionCorrection);
+  EXPECT_EQ(b.params.corotational, a.params.corotational);
   EXPECT_EQ(b.compare, a.compare);
   EXPECT_EQ(b.compareMethods, a.compareMethods);
   EXPECT_EQ(b.camera.target, a.camera.target);
@@ -142,9 +144,10 @@ TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
     return std::string("accepted");
   };
   std::string newer = good;
-  ASSERT_NE(newer.find("\"version\": 1"), std::string::npos);
-  newer.replace(newer.find("\"version\": 1"), 12, "\"version\": 2");
-  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads version 1)"), std::string::npos)
+  ASSERT_NE(newer.find("\"version\": 2"), std::string::npos);
+  newer.replace(newer.find("\"version\": 2"), 12, "\"version\": 3");
+  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 and 2)"),
+            std::string::npos)
       << messageFor(newer);
   std::string other = good;
   other.replace(other.find("somicage-session"), 16, "somicage-recent!");

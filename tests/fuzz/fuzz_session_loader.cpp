@@ -38,8 +38,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
   // The JSON layer alone: whatever it accepts, it writes back as JSON it accepts again.
   try {
-    const somicage::editor::JsonValue value = somicage::editor::parseJson(text, "fuzz.json");
-    (void)somicage::editor::parseJson(value.dump(2), "dumped.json");
+    const somicage::JsonValue value = somicage::parseJson(text, "fuzz.json");
+    (void)somicage::parseJson(value.dump(2), "dumped.json");
   } catch (const somicage::InputError&) {
   }
 

@@ -8,7 +8,7 @@
 
 #include "errors.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 JsonValue JsonValue::boolean(bool b) {
   JsonValue v;
@@ -318,4 +318,4 @@ std::string JsonValue::dump(int indent) const {
 
 JsonValue parseJson(const std::string& text, const std::string& source) { return Parser(text, source).parseDocument(); }
 
-}  // namespace somicage::editor
+}  // namespace somicage

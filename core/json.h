@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-namespace somicage::editor {
+namespace somicage {
 
 class JsonValue {
  public:
@@ -52,4 +52,4 @@ class JsonValue {
 // Parses JSON text; throws InputError(source, line, what, hint) on a syntax error.
 JsonValue parseJson(const std::string& text, const std::string& source);
 
-}  // namespace somicage::editor
+}  // namespace somicage

@@ -4,7 +4,7 @@
 
 #include <string>
 
-namespace somicage::editor {
+namespace somicage {
 
 // Throws InputError(path, -1, reason, hint) when the file cannot be read.
 std::string readTextFile(const std::string& path);
@@ -13,4 +13,4 @@ std::string readTextFile(const std::string& path);
 // file at `path` is left as it was.
 void writeFileAtomic(const std::string& path, const std::string& bytes);
 
-}  // namespace somicage::editor
+}  // namespace somicage

@@ -13,7 +13,7 @@
 
 #include "errors.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 std::string readTextFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -30,8 +30,8 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
   tmpl.push_back('\0');
   const int fd = ::mkstemp(tmpl.data());
   if (fd < 0) {
-    throw InputError(path, -1, std::string("cannot create a temporary file next to it: ") + std::strerror(errno),
-                     "check that the folder exists and is writable");
+    throw InputError(path, -1, std::string("cannot create a file in this folder: ") + std::strerror(errno),
+                     "check that the folder exists and that you may write to it");
   }
   const std::string tmp(tmpl.data());
   auto failWith = [&](const char* what) {
@@ -63,4 +63,4 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
   }
 }
 
-}  // namespace somicage::editor
+}  // namespace somicage

@@ -1,0 +1,197 @@
+// somicage analyze: the numbers behind a pose (issue 12): volume change, det J, conformal distortion, fold-overs
+// and face area ratios of a deformed mesh, from the exact deformation gradient (core/jacobian.h); with a nu sweep,
+// and the per-vertex J as CSV.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+#include "cli/arg_parser.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/json_writer.h"
+#include "cli/progress_reporter.h"
+#include "deformation_analysis.h"
+#include "deformer.h"
+#include "errors.h"
+#include "obj_io.h"
+
+namespace somicage {
+
+namespace {
+
+const char* const kCommand = "somicage analyze";
+
+ArgParser analyzeOptions() {
+  return ArgParser(
+      kCommand,
+      withDeformParams(
+          {
+              {"--cage", "REST.obj", "the rest cage: a closed triangle/quad mesh, or a 2D polygon (z = 0)", true},
+              {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
+              {"--mesh", "MESH.obj", "the mesh whose deformation is measured (2D cage: its x, y)", true},
+          },
+          {
+              {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
+              {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
+              {"--json", "", "print one JSON object"},
+              {"--threads", "N", "OpenMP threads (default: all cores)"},
+          }));
+}
+
+// FROM:TO:N.
+std::vector<double> sweepOption(const ArgParser& args) {
+  const std::string text = args.text("--nu-sweep");
+  double from = 0, to = 0;
+  int count = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%lf:%lf:%d%c", &from, &to, &count, &rest) != 3)
+    throw InputError("--nu-sweep", -1, "'" + text + "' is not FROM:TO:N",
+                     "give two Poisson ratios and a count, e.g. -0.9:0.49:30");
+  return nuSweepValues(from, to, count);
+}
+
+std::string csvNumber(double value) {
+  if (std::isnan(value)) return "nan";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", value);
+  return buffer;
+}
+
+// vertex,det_j,conformal_distortion,j00,... (row-major J), one row per mesh vertex in input order.
+std::string fieldsCsv(const DeformationAnalysis& a, int dim) {
+  std::string out = "vertex,det_j,conformal_distortion";
+  for (int r = 0; r < dim; ++r)
+    for (int c = 0; c < dim; ++c) out += ",j" + std::to_string(r) + std::to_string(c);
+  out += '\n';
+  for (Eigen::Index p = 0; p < a.jacobians.rows(); ++p) {
+    out += std::to_string(p) + ',' + csvNumber(a.points.detJ(p)) + ',' + csvNumber(a.points.distortion(p));
+    for (int k = 0; k < dim * dim; ++k) out += ',' + csvNumber(a.jacobians(p, k));
+    out += '\n';
+  }
+  return out;
+}
+
+JsonObjectWriter::NumberObject quantiles(const Eigen::VectorXd& values, const std::vector<std::string>& names) {
+  JsonObjectWriter::NumberObject object;
+  for (const std::string& name : names) {
+    const double q = name == "min" ? 0.0 : name == "max" ? 1.0 : std::stod(name.substr(1)) / 100;
+    object.emplace_back(name, quantile(values, q));
+  }
+  return object;
+}
+
+}  // namespace
+
+std::string analyzeUsage() {
+  std::ostringstream out;
+  out << "usage: " << kCommand << " --cage REST.obj --posed POSED.obj --mesh MESH.obj [OPTIONS]\n\n"
+      << "Measures the deformation of MESH by the cage moved from REST to POSED with the exact deformation gradient\n"
+      << "J = df/dx at every vertex (docs/engine.md, \"Quantities\"): the enclosed volume before and after (a closed\n"
+      << "mesh; the area in 2D), det J (local volume ratio), the conformal distortion sigma_max/sigma_min of J,\n"
+      << "fold-overs (det J <= 0) and the face area ratios. Vertices outside the cage follow the exterior rule and\n"
+      << "have no J (outside_points; nan in the CSV).\n\n"
+      << "options:\n"
+      << analyzeOptions().optionHelp();
+  return out.str();
+}
+
+int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
+  ArgParser args = analyzeOptions();
+  args.parse(rawArgs);
+  if (args.helpRequested()) {
+    std::cout << analyzeUsage();
+    return kExitOk;
+  }
+  const Method method = methodOption(args);
+  const DeformParams params = deformParamsOptions(args, method);
+  const std::vector<double> nus = args.has("--nu-sweep") ? sweepOption(args) : std::vector<double>();
+  const bool json = args.has("--json");
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+  const std::string meshPath = args.text("--mesh");
+
+  const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
+  const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage);
+  const PolygonMesh mesh = loadMesh(meshPath);
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
+  noteIgnoredParameters(kCommand, args, method);
+
+  PrecomputeOptions options;
+  options.threads = threads;
+  options.integration.threads = threads;
+  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath, true);
+  std::unique_ptr<CageDeformer> deformer;
+  std::unique_ptr<DeformationGradients> gradients;
+  {
+    ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
+    deformer = makeDeformer(method, cage, points, options, progress.callback());
+  }
+  {
+    ProgressReporter progress("integrating their gradients");
+    gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
+  }
+  const DeformationAnalysis a = analyzeDeformation(*gradients, points, mesh.faces, posed, params);
+  std::vector<NuSweepEntry> sweep;
+  if (!nus.empty()) {
+    if (!readsParameter(method, kParamNu))
+      std::cerr << kCommand << ": note: " << methodName(method) << " does not depend on nu; the sweep is flat\n";
+    ProgressReporter progress("sweeping nu");
+    sweep = sweepNu(*gradients, points, mesh.faces, posed, params, nus, progress.callback());
+  }
+  if (args.has("--fields")) saveTextFile(args.text("--fields"), fieldsCsv(a, cage.dim()));
+  if (!a.volume.closed)
+    std::cerr << kCommand << ": note: " << meshPath << " is not a closed mesh: it encloses no volume; the volume "
+              << "change with its holes capped by cones is reported instead (volume_change_capped)\n";
+
+  if (json) {
+    JsonObjectWriter out(std::cout);
+    out.field("method", methodName(method));
+    out.field("dimension", cage.dim());
+    out.field("vertices", static_cast<int>(points.rows()));
+    // An open mesh encloses no volume: null, and the estimate with its holes capped (deformation_quantities.h).
+    const double none = std::numeric_limits<double>::quiet_NaN();
+    const bool closed = a.volume.closed;
+    out.field("closed", closed);
+    out.field("volume_rest", closed ? a.volume.rest : none);
+    out.field("volume_deformed", closed ? a.volume.deformed : none);
+    out.field("volume_change", closed ? a.volume.change() : none);
+    if (!closed) out.field("volume_change_capped", a.volume.change());
+    out.field("jacobian_det", quantiles(a.points.detJ, {"min", "p05", "p50", "p95", "max"}));
+    out.field("conformal_distortion", quantiles(a.points.distortion, {"p50", "p95", "max"}));
+    out.field("foldover_vertices", a.points.foldovers);
+    out.field("area_ratio", quantiles(a.faces.areaRatio, {"p05", "p50", "p95", "max"}));
+    out.field("outside_points", a.points.undefined);
+    if (!nus.empty()) {
+      std::vector<JsonObjectWriter::NumberObject> entries;
+      for (const NuSweepEntry& e : sweep)
+        entries.push_back({{"nu", e.nu},
+                           {closed ? "volume_change" : "volume_change_capped", e.volumeChange},
+                           {"foldover_vertices", static_cast<double>(e.foldovers)}});
+      out.field("nu_sweep", entries);
+    }
+    return kExitOk;
+  }
+  const char* measure = cage.dim() == 3 ? "volume" : "area";
+  std::cout << kCommand << ": " << cage.dim() << "D " << methodName(method) << ", " << points.rows() << " vertices ("
+            << a.points.undefined << " outside the cage)\n";
+  if (a.volume.closed)
+    std::cout << "  " << measure << ": " << formatNumber(a.volume.rest, 10) << " -> "
+              << formatNumber(a.volume.deformed, 10) << " (" << formatNumber(100 * a.volume.change(), 4) << " %)\n";
+  else
+    std::cout << "  " << measure << ": the mesh is open; with its holes capped " << formatNumber(a.volume.rest, 10)
+              << " -> " << formatNumber(a.volume.deformed, 10) << " (" << formatNumber(100 * a.volume.change(), 4)
+              << " %)\n";
+  std::cout << "  det J: min " << formatNumber(quantile(a.points.detJ, 0)) << ", median "
+            << formatNumber(quantile(a.points.detJ, 0.5)) << ", max " << formatNumber(quantile(a.points.detJ, 1))
+            << "; fold-over vertices (det J <= 0): " << a.points.foldovers << "\n"
+            << "  conformal distortion: median " << formatNumber(quantile(a.points.distortion, 0.5)) << ", p95 "
+            << formatNumber(quantile(a.points.distortion, 0.95)) << "\n";
+  for (const NuSweepEntry& e : sweep)
+    std::cout << "  nu " << formatNumber(e.nu) << ": " << measure << " change " << formatNumber(100 * e.volumeChange, 4)
+              << " %, fold-overs " << e.foldovers << "\n";
+  return kExitOk;
+}
+
+}  // namespace somicage

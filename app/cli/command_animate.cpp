@@ -1,0 +1,127 @@
+// somicage animate: the timeline of a saved editor session, deformed frame by frame and written as a GLB
+// (morph-target animation) or an OBJ sequence, through the same core calls as `somicage deform`.
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "animation_export.h"
+#include "cli/arg_parser.h"
+#include "cli/command_support.h"
+#include "cli/commands.h"
+#include "cli/progress_reporter.h"
+#include "errors.h"
+#include "file_util.h"
+#include "mesh_formats.h"
+#include "pose_timeline_json.h"
+
+namespace somicage {
+
+namespace {
+
+const char* const kCommand = "somicage animate";
+
+ArgParser animateOptions() {
+  return ArgParser(kCommand,
+                   {
+                       {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
+                       {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
+                       {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
+                       {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
+                       {"--threads", "N", "OpenMP threads (default: all cores)"},
+                   });
+}
+
+// A session names its files as the editor opened them; a relative name is looked up next to the session first.
+std::string resolveNextTo(const std::string& sessionPath, const std::string& path) {
+  const std::filesystem::path name(path);
+  if (name.is_absolute()) return path;
+  const std::filesystem::path beside = std::filesystem::path(sessionPath).parent_path() / name;
+  std::error_code error;
+  return std::filesystem::exists(beside, error) ? beside.string() : path;
+}
+
+void parseFrameRange(const std::string& text, int& first, int& last) {
+  const size_t colon = text.find(':');
+  try {
+    size_t used = 0;
+    if (colon == std::string::npos) throw std::invalid_argument("no colon");
+    first = std::stoi(text.substr(0, colon), &used);
+    if (used != colon) throw std::invalid_argument("junk");
+    last = std::stoi(text.substr(colon + 1), &used);
+    if (used != text.size() - colon - 1) throw std::invalid_argument("junk");
+  } catch (const std::exception&) {
+    throw InputError("--frames", -1, "'" + text + "' is not a frame range", "write --frames A:B, e.g. --frames 0:48");
+  }
+  if (last < first) throw InputError("--frames", -1, "the range " + text + " is empty", "write A:B with A <= B");
+}
+
+}  // namespace
+
+std::string animateUsage() {
+  std::ostringstream out;
+  out << "usage: " << kCommand << " --session S.json --out anim.glb|DIR/ [--fps 24] [--frames A:B]\n\n"
+      << "Plays the session's timeline (its keys, poses and interpolation; core/pose_timeline.h) and writes every\n"
+      << "whole frame of A..B: a .glb OUT gets the mesh and one morph target per frame, animated at F frames per\n"
+      << "second (Blender imports it as shape keys); any other OUT is a new folder of NAME_0001.obj ... files, each\n"
+      << "keeping everything of the OBJ mesh but its positions. Nothing is left half-written on failure.\n\n"
+      << "options:\n"
+      << animateOptions().optionHelp();
+  return out.str();
+}
+
+int runAnimateCommand(const std::vector<std::string>& rawArgs) {
+  ArgParser args = animateOptions();
+  args.parse(rawArgs);
+  if (args.helpRequested()) {
+    std::cout << animateUsage();
+    return kExitOk;
+  }
+  const std::string sessionPath = args.text("--session"), outPath = args.text("--out");
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+
+  const AnimationSource session = animationSourceFromSessionJson(readTextFile(sessionPath), sessionPath);
+  if (session.meshPath.empty()) {
+    throw InputError(sessionPath, -1, "the session animates a built-in demo, which has no mesh file",
+                     "open a mesh and a cage in the editor, key it, and save the session again");
+  }
+  if (session.timeline.keys.empty()) {
+    throw InputError(sessionPath, -1, "the session's timeline has no keys",
+                     "add keys in the editor's Timeline panel (Key pose) and save the session");
+  }
+  int first = session.timeline.firstFrame, last = session.timeline.lastFrame;
+  if (args.has("--frames")) parseFrameRange(args.text("--frames"), first, last);
+  const double fps = args.number("--fps", session.timeline.fps);
+  if (!(fps > 0 && fps <= 1000)) throw InputError("--fps", -1, "must be in (0, 1000]", "write e.g. --fps 24");
+
+  const std::string cagePath = resolveNextTo(sessionPath, session.cagePath);
+  const std::string meshPath = resolveNextTo(sessionPath, session.meshPath);
+  const Cage cage = loadUsableCage(cagePath, printNotice);
+  const MeshDocument document = loadMeshDocument(meshPath);
+  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, printNotice);
+  PrecomputeOptions options;
+  options.threads = threads;
+  options.integration.threads = threads;
+  requirePrecomputeMemory(kCommand, session.method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
+  std::unique_ptr<CageDeformer> deformer;
+  {
+    ProgressReporter progress("precomputing " + methodName(session.method) + " coordinates");
+    deformer = makeDeformer(session.method, cage, points, options, progress.callback());
+  }
+  std::vector<Eigen::MatrixXd> frames;
+  {
+    ProgressReporter progress("deforming frames " + std::to_string(first) + ".." + std::to_string(last));
+    frames = deformTimelineFrames(*deformer, cage, session.timeline, session.poses, session.params,
+                                  document.geometry.vertices, cage.dim(), first, last, progress.callback());
+  }
+  {
+    ProgressReporter progress("writing " + outPath);
+    for (const std::string& note : writeAnimation(outPath, document, frames, first, fps, progress.callback()))
+      std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
+  }
+  std::cerr << kCommand << ": " << frames.size() << " frames (" << first << ".." << last << ") of " << meshPath
+            << " at " << formatNumber(fps) << " fps; wrote " << outPath << "\n";
+  return kExitOk;
+}
+
+}  // namespace somicage

@@ -1,0 +1,126 @@
+#include "animation_export_job.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+#include "animation_export.h"
+#include "app_state.h"
+#include "errors.h"
+#include "gl_context.h"
+#include "screenshot.h"
+
+namespace somicage::editor {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+void finish(AppState& state, const std::string& message) {
+  AnimationExportJob& job = *state.animation.exportJob;
+  if (!job.pngFolder.empty()) {
+    std::error_code ignored;
+    fs::remove_all(job.pngFolder, ignored);  // still there: cancelled or failed
+  }
+  setPose(state, job.savedPose);
+  setParams(state, job.savedParams);
+  state.animation.frame = job.savedFrame;
+  state.animation.exportJob.reset();
+  state.statusMessage = message;
+}
+
+void writeFinishedExport(AppState& state) {
+  AnimationExportJob& job = *state.animation.exportJob;
+  if (job.kind == AnimationExportJob::Kind::PngSequence) {
+    fs::path target(job.out);
+    if (target.filename().empty()) target = target.parent_path();
+    std::error_code error;
+    if (fs::exists(target, error)) fs::remove(target, error);  // empty: checked at the start
+    fs::rename(job.pngFolder, target, error);
+    if (error)
+      throw InputError(job.out, -1, "cannot move the images into place: " + error.message(), "check the permissions");
+    job.pngFolder.clear();
+    return;
+  }
+  for (const std::string& note :
+       writeAnimation(job.out, *state.scene->document, job.frames, job.first, state.animation.timeline.fps))
+    state.errors.push_back("export: " + note);
+}
+
+}  // namespace
+
+void startAnimationExport(AppState& state, AnimationExportJob::Kind kind, const std::string& out) {
+  const Timeline& timeline = state.animation.timeline;
+  if (!state.scene || !state.scene->document) {
+    state.errors.push_back("Export animation: open a mesh file first (the built-in demos have no file to export)");
+    return;
+  }
+  if (timeline.keys.empty()) {
+    state.errors.push_back("Export animation: the timeline has no keys (Timeline panel: Key pose)");
+    return;
+  }
+  AnimationExportJob job;
+  job.kind = kind;
+  job.out = out;
+  job.first = job.next = timeline.firstFrame;
+  job.last = timeline.lastFrame;
+  job.savedPose = state.pose;
+  job.savedParams = state.params;
+  job.savedFrame = state.animation.frame;
+  if (kind == AnimationExportJob::Kind::PngSequence) {
+    fs::path target(out);
+    if (target.filename().empty()) target = target.parent_path();
+    std::error_code error;
+    if (fs::exists(target, error) && (!fs::is_directory(target, error) || !fs::is_empty(target, error))) {
+      state.errors.push_back(out + ": exists and is not an empty folder; give a new folder for the images");
+      return;
+    }
+    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
+    if (!::mkdtemp(pattern.data())) {
+      state.errors.push_back(out + ": cannot create a folder next to it");
+      return;
+    }
+    job.pngFolder = pattern;
+  }
+  stopPlayback(state);
+  state.animation.exportJob = std::move(job);
+}
+
+void showNextExportFrame(AppState& state) {
+  if (!state.animation.exportJob) return;
+  AnimationExportJob& job = *state.animation.exportJob;
+  if (job.cancelRequested) {
+    finish(state, "animation export cancelled; nothing was written");
+    return;
+  }
+  scrubTo(state, job.next);
+}
+
+void captureExportFrame(AppState& state, int framebufferWidth, int framebufferHeight) {
+  if (!state.animation.exportJob) return;
+  AnimationExportJob& job = *state.animation.exportJob;
+  try {
+    if (job.kind == AnimationExportJob::Kind::PngSequence) {
+      char name[32];
+      std::snprintf(name, sizeof name, "frame_%04d.png", job.next);
+      writePng((fs::path(job.pngFolder) / name).string(), framebufferWidth, framebufferHeight,
+               render::readPixelsRgba(framebufferWidth, framebufferHeight));
+    } else {
+      ensureCpuPoints(state, state.method);
+      Eigen::MatrixXd positions = state.scene->document->geometry.vertices;  // a 2D scene keeps z
+      const Eigen::MatrixXd& points = displayedPoints(state, state.method);
+      positions.leftCols(points.cols()) = points;
+      job.frames.push_back(std::move(positions));
+    }
+    if (++job.next <= job.last) return;
+    writeFinishedExport(state);
+    finish(state, "exported the animation (" + std::to_string(job.last - job.first + 1) + " frames) to " + job.out);
+  } catch (const std::exception& e) {
+    state.errors.push_back(e.what());
+    finish(state, "animation export failed; nothing was written");
+  }
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,109 @@
+#include "animation_export.h"
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+#include "errors.h"
+#include "gltf_writer.h"
+
+namespace somicage {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool endsWithGlb(std::string path) {
+  for (char& c : path) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return path.size() > 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
+}
+
+void step(const ProgressCallback& progress, double fraction) {
+  if (!progress(fraction)) throw Cancelled();
+}
+
+// Removes the temporary folder unless it was renamed onto the target.
+struct TemporaryFolder {
+  fs::path path;
+  bool kept = false;
+  ~TemporaryFolder() {
+    std::error_code ignored;
+    if (!kept && !path.empty()) fs::remove_all(path, ignored);
+  }
+};
+
+std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocument& document,
+                                          const std::vector<Eigen::MatrixXd>& frames, int first,
+                                          const ProgressCallback& progress) {
+  std::error_code error;
+  fs::path target = fs::path(out);
+  if (target.filename().empty()) target = target.parent_path();  // "DIR/"
+  if (fs::exists(target, error) && (!fs::is_directory(target, error) || !fs::is_empty(target, error))) {
+    throw InputError(out, -1, "exists and is not an empty folder",
+                     "give a new folder for the OBJ sequence (or a path ending in .glb)");
+  }
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  if (!fs::is_directory(parent, error)) {
+    throw InputError(out, -1, "the folder " + parent.string() + " does not exist", "create it first");
+  }
+  std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
+  TemporaryFolder temporary;
+  if (!::mkdtemp(pattern.data())) {
+    throw InputError(out, -1, "cannot create a folder next to it", "check the permissions of " + parent.string());
+  }
+  temporary.path = pattern;
+  const std::string stem = document.sourcePath.empty() ? "mesh" : fs::path(document.sourcePath).stem().string();
+  for (size_t k = 0; k < frames.size(); ++k) {
+    char number[16];
+    std::snprintf(number, sizeof number, "_%04d.obj", first + static_cast<int>(k));
+    writeObjDocument((temporary.path / (stem + number)).string(), document, frames[k]);
+    step(progress, static_cast<double>(k + 1) / static_cast<double>(frames.size()));
+  }
+  if (fs::exists(target, error)) fs::remove(target, error);  // empty, checked above
+  fs::rename(temporary.path, target, error);
+  if (error)
+    throw InputError(out, -1, "cannot rename the finished sequence into place: " + error.message(),
+                     "check the permissions");
+  temporary.kept = true;
+  return {};
+}
+
+}  // namespace
+
+std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
+                                                  const Timeline& timeline, const PoseLibrary& poses,
+                                                  const DeformParams& base, const Eigen::MatrixXd& meshVertices,
+                                                  int dim, int first, int last, const ProgressCallback& progress) {
+  if (last < first)
+    throw InputError("--frames", -1, "the last frame comes before the first", "write --frames A:B with A <= B");
+  std::vector<Eigen::MatrixXd> frames;
+  for (int frame = first; frame <= last; ++frame) {
+    const FrameState state = evaluateTimeline(timeline, poses, frame, base, cage.numVertices(), cage.dim());
+    validateDeformParams(state.params);
+    const Eigen::MatrixXd deformed = deformer.deform(state.cage, state.params);
+    if (!deformed.allFinite()) {
+      throw InputError("frame " + std::to_string(frame), -1, "some points could not be deformed",
+                       "nothing was written; please report this with the session");
+    }
+    Eigen::MatrixXd positions = meshVertices;
+    positions.leftCols(dim) = deformed;
+    frames.push_back(std::move(positions));
+    step(progress, static_cast<double>(frame - first + 1) / static_cast<double>(last - first + 1));
+  }
+  return frames;
+}
+
+std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
+                                        const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
+                                        const ProgressCallback& progress) {
+  if (endsWithGlb(out)) {
+    std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps);
+    step(progress, 1.0);
+    return notes;
+  }
+  return writeObjSequence(out, document, frames, first, progress);
+}
+
+}  // namespace somicage

@@ -1,0 +1,34 @@
+// Animation export: the timeline's frames deformed and written as one GLB (a morph target per frame,
+// gltf_writer.h) or as a folder of OBJ files NAME_0001.obj ... (one per frame, numbered by frame, each lossless
+// as writeObjDocument writes it). Nothing is half-written: the GLB goes through an atomic write, the OBJ sequence
+// is written into a temporary folder next to the target and renamed onto it at the end.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "deformer.h"
+#include "mesh_document.h"
+#include "pose_timeline.h"
+#include "progress.h"
+
+namespace somicage {
+
+// The mesh's positions at frames first..last (inclusive): the timeline evaluated at each whole frame, then
+// deformed. A 2D cage moves x, y and keeps the mesh's z. progress gets the fraction of frames done; returning
+// false throws Cancelled. Throws InputError when a frame cannot be deformed (a point not finite).
+std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
+                                                  const Timeline& timeline, const PoseLibrary& poses,
+                                                  const DeformParams& base, const Eigen::MatrixXd& meshVertices,
+                                                  int dim, int first, int last,
+                                                  const ProgressCallback& progress = noProgress);
+
+// Writes frames (frame k is timeline frame first + k) to out: a path ending in .glb gives one GLB at fps,
+// anything else is a folder for the OBJ sequence (it must not exist, or be empty). Returns the notes of what the
+// format could not carry. progress as above (for the writing).
+std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
+                                        const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
+                                        const ProgressCallback& progress = noProgress);
+
+}  // namespace somicage

@@ -1,0 +1,200 @@
+#include "coordinate_gradients.h"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "bem_layer_integrals.h"
+#include "dual_number.h"
+#include "edge_integrals.h"
+#include "point_blocks.h"
+#include "somigliana_coordinates.h"
+#include "triangle_integrals.h"
+
+namespace somicage {
+
+namespace {
+
+template <int Dim>
+using DualOf = dual::Dual<Dim>;
+
+// The query point as dual numbers seeded with the unit vectors: every result carries d/dx_a in its gradient.
+template <int Dim>
+void seedPoint(const Eigen::MatrixXd& points, int p, DualOf<Dim> x[Dim]) {
+  for (int a = 0; a < Dim; ++a) x[a] = DualOf<Dim>::variable(points(p, a), a);
+}
+
+// Per-thread storage: a dual row and its split into Dim gradient rows.
+template <int Dim>
+struct GradientBuffers {
+  std::vector<DualOf<Dim>> row;
+  std::vector<double> split;
+  explicit GradientBuffers(int columns) : row(columns), split(static_cast<std::size_t>(Dim) * columns) {}
+
+  void clear() { std::fill(row.begin(), row.end(), DualOf<Dim>(0.0)); }
+  // Writes rows[a][k] = d row[k] / dx_a and hands them to the sink.
+  void emit(int p, const GradientRowSink& sink) {
+    const std::size_t columns = row.size();
+    const double* rows[Dim];
+    for (int a = 0; a < Dim; ++a) {
+      double* out = split.data() + a * columns;
+      for (std::size_t k = 0; k < columns; ++k) out[k] = row[k].g[a];
+      rows[a] = out;
+    }
+    sink(p, rows);
+  }
+};
+
+std::vector<TriangleFrame> cageFrames(const Cage& cage) {
+  std::vector<TriangleFrame> frames;
+  frames.reserve(cage.numFaces());
+  for (int j = 0; j < cage.numFaces(); ++j)
+    frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
+                                       cage.vertices.row(cage.faces(j, 2))));
+  return frames;
+}
+
+// Calls perFace(j, integrals) for every non-degenerate face of a 3D cage (PortableTriangleIntegralsOf) or every
+// edge of non-zero length of a 2D one (EdgeIntegralsOf), with the point as dual numbers.
+template <int Dim, typename PerFace>
+void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& frames, const DualOf<Dim> x[Dim],
+                        PerFace perFace) {
+  if constexpr (Dim == 3) {
+    PortableTriangleIntegralsOf<DualOf<3>> I;
+    for (int j = 0; j < cage.numFaces(); ++j) {
+      if (frames[j].degenerate) continue;
+      integrateTrianglePortable(frames[j].kernel, x, I);
+      perFace(j, I);
+    }
+  } else {
+    EdgeIntegralsOf<DualOf<2>> I;
+    for (int j = 0; j < cage.numFaces(); ++j) {
+      if (isDegenerateFace(cage, j)) continue;
+      const Eigen::Vector2d p0 = cage.vertices.row(cage.faces(j, 0)), p1 = cage.vertices.row(cage.faces(j, 1));
+      integrateEdgeOf(p0, p1, x, I);
+      perFace(j, I);
+    }
+  }
+}
+
+// Rows laid out as `layout` (vertexTermCount(Dim) terms per vertex, no tail): the vertex terms of
+// somigliana_coordinates.h and, per face, writeFace(face, integrals, n) for the face block.
+template <int Dim, typename WriteFace>
+void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                         const CoordinateLayout& layout, WriteFace writeFace, const GradientRowSink& sink) {
+  const RowMatrixXd normals = faceNormals(cage, cage.vertices);  // row-major: rows as pointers
+  const int columns = layout.mainColumns(), stride = layout.numVertices;
+  const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
+  forEachPointInBlocks(
+      static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
+      [columns] { return GradientBuffers<Dim>(columns); },
+      [&](GradientBuffers<Dim>& buffers, int p) {
+        buffers.clear();
+        DualOf<Dim> x[Dim];
+        seedPoint<Dim>(points, p, x);
+        DualOf<Dim>* row = buffers.row.data();
+        // The accumulation of somigliana_coordinates.cpp (addVertexTerms), in dual numbers.
+        integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
+          const double* n = normals.row(j).data();
+          for (int k = 0; k < Dim; ++k) {
+            DualOf<Dim>* t = row + layout.vertexColumn(cage.faces(j, k), 0);
+            t[0] += I.D[k];
+            if constexpr (Dim == 3) {
+              const auto& V = I.V[k];
+              const auto& B = I.B[k];
+              t[stride] += V[1] * n[2] - V[2] * n[1], t[2 * stride] += V[2] * n[0] - V[0] * n[2];
+              t[3 * stride] += V[0] * n[1] - V[1] * n[0];
+              t[4 * stride] += B[0][0], t[5 * stride] += B[1][1], t[6 * stride] += B[2][2];
+              t[7 * stride] += B[0][1], t[8 * stride] += B[0][2], t[9 * stride] += B[1][2];
+            } else {
+              t[stride] += I.A[k];
+              t[2 * stride] += I.B[k][0][0], t[3 * stride] += I.B[k][1][1], t[4 * stride] += I.B[k][0][1];
+            }
+          }
+          writeFace(row + layout.faceColumn(j, 0), I, n);
+        });
+        buffers.emit(p, sink);
+      });
+}
+
+// Somigliana's face terms S_j and q_j = M_j n_j (somigliana_coordinates.h).
+template <int Dim>
+void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                         const GradientRowSink& sink) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double* n) {
+    f[0] += I.S;
+    for (int a = 0; a < Dim; ++a)
+      for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
+  };
+  const CoordinateLayout layout = somiglianaLayout(Dim, cage.numVertices(), cage.numFaces());
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
+}
+
+// The boundary element's face terms S_j and the full moment M_j (bem_layer_integrals.h).
+template <int Dim>
+void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                       const GradientRowSink& sink) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double*) {
+    f[0] = I.S;
+    if constexpr (Dim == 3)
+      f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[2][2], f[4] = I.M[0][1], f[5] = I.M[0][2], f[6] = I.M[1][2];
+    else
+      f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[0][1];
+  };
+  const CoordinateLayout layout = bemLayerLayout(Dim, cage.numVertices(), cage.numFaces());
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
+}
+
+template <int Dim>
+void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
+                    const GradientRowSink& sink) {
+  const double scale = 1 / (Dim == 3 ? 4 * M_PI : 2 * M_PI);                    // green_coordinates.h
+  const CoordinateLayout layout{cage.numVertices(), cage.numFaces(), 1, 1, 0};  // [phi | psi]
+  const int columns = layout.mainColumns();
+  const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
+  forEachPointInBlocks(
+      static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
+      [columns] { return GradientBuffers<Dim>(columns); },
+      [&](GradientBuffers<Dim>& buffers, int p) {
+        buffers.clear();
+        DualOf<Dim> x[Dim];
+        seedPoint<Dim>(points, p, x);
+        DualOf<Dim>* row = buffers.row.data();
+        integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
+          for (int k = 0; k < Dim; ++k) row[layout.vertexColumn(cage.faces(j, k), 0)] += scale * I.D[k];
+          row[layout.faceColumn(j, 0)] = scale * I.S;
+        });
+        buffers.emit(p, sink);
+      });
+}
+
+}  // namespace
+
+void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                  const ProgressCallback& progress, const GradientRowSink& sink) {
+  assertCageAndPoints(cage, points);
+  if (cage.dim() == 3)
+    somiglianaGradients<3>(cage, points, threads, progress, sink);
+  else
+    somiglianaGradients<2>(cage, points, threads, progress, sink);
+}
+
+void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                             const ProgressCallback& progress, const GradientRowSink& sink) {
+  assertCageAndPoints(cage, points);
+  if (cage.dim() == 3)
+    greenGradients<3>(cage, points, threads, progress, sink);
+  else
+    greenGradients<2>(cage, points, threads, progress, sink);
+}
+
+void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                const ProgressCallback& progress, const GradientRowSink& sink) {
+  assertCageAndPoints(cage, points);
+  if (cage.dim() == 3)
+    bemLayerGradients<3>(cage, points, threads, progress, sink);
+  else
+    bemLayerGradients<2>(cage, points, threads, progress, sink);
+}
+
+}  // namespace somicage

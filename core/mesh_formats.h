@@ -1,0 +1,46 @@
+// Mesh files by format: which formats are read and written, chosen by the file's extension.
+//
+// Read: .obj (parseObjDocument: every record kept), and .ply .stl .off .gltf .glb .fbx through assimp, with no
+// post-processing step that welds, reorders or drops vertices, so vertex i of the file is vertex i of the mesh
+// (a cage's posed and rest files match index for index). assimp stores coordinates as 32-bit floats, so these
+// formats read with float precision. A file with several meshes gives their vertices one after the other, in the
+// file's mesh order, each moved by the transform of the first node that shows it. STL has no shared vertices:
+// each triangle brings its own three, so a closed STL surface reads as a soup; ReadOptions::weld joins vertices
+// at exactly equal positions (in order of first appearance), which a cage read from STL needs.
+//
+// Written: .obj (writeObjDocument: lossless), .ply (binary, double positions and the polygons; nothing else)
+// and .glb (gltf_writer.h: triangles, UVs, materials by name). What a format cannot carry is named in the
+// returned notes, never dropped silently.
+#pragma once
+
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "mesh_document.h"
+
+namespace somicage {
+
+struct ReadOptions {
+  bool weld = false;  // join vertices at exactly equal positions (first appearance order)
+};
+
+// Throws InputError for an unknown extension (naming the known ones) and for anything the reader rejects.
+MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& options = {});
+
+// The geometry of loadMeshDocument: for meshes and cages read from any supported format.
+PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options = {});
+
+// Writes document with the given positions (#V by 2 or 3) in the format of path's extension, atomically.
+// Returns one sentence per kind of data the format could not carry (empty: nothing was lost).
+std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,
+                                           const Eigen::MatrixXd& positions);
+
+// "obj, ply, ..." for help texts.
+std::string readableExtensions();
+std::string writableExtensions();
+
+// Joins vertices at exactly equal positions, in order of first appearance, and renumbers faces and lines.
+PolygonMesh weldVertices(const PolygonMesh& mesh);
+
+}  // namespace somicage

@@ -1,0 +1,141 @@
+// The Python module `somicage` (imported through the package python/somicage): the engine's cage loading, checks,
+// precompute and deformation over NumPy arrays, with the command line's checks and error messages. The binding
+// layer converts and forwards; what a cage is, how it is repaired and deformed lives in core/.
+#include <pybind11/eigen.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include "numpy_arrays.h"
+#include "obj_io.h"
+#include "python_cage.h"
+#include "python_deformer.h"
+#include "python_errors.h"
+
+namespace py = pybind11;
+
+namespace somicage {
+
+namespace {
+
+void defineCage(py::module_& module) {
+  py::class_<PythonCage>(module, "Cage",
+                         "A cage as `somicage deform` uses it: face orientation repaired, validated, warned about.")
+      .def(py::init([](const py::handle& vertices, const py::handle& faces) {
+             return makeUsableCage(cageFromArrays(vertices, faces), "Cage(vertices, faces)");
+           }),
+           py::arg("vertices"), py::arg("faces") = py::none(),
+           "vertices (V, 3) with triangles faces (F, 3), counter-clockwise seen from outside; or a 2D polygon: "
+           "vertices (V, 2) with edges (F, 2), or faces=None for a counter-clockwise vertex loop.")
+      .def_static(
+          "from_obj", [](const std::string& path) { return makeUsableCage(loadCage(path), path); }, py::arg("path"),
+          "A cage from an OBJ file: a closed triangle (or polygon) mesh, or a 2D polygon when every z is 0.")
+      .def_property_readonly(
+          "vertices", [](const PythonCage& cage) -> const Eigen::MatrixXd& { return cage.cage.vertices; },
+          "(V, d) float64, read-only view (no copy)")
+      .def_property_readonly(
+          "faces", [](const PythonCage& cage) -> const Eigen::MatrixXi& { return cage.cage.faces; },
+          "(F, d) int32, read-only view (no copy): triangles (3D) or edges (2D)")
+      .def_property_readonly("dim", [](const PythonCage& cage) { return cage.cage.dim(); })
+      .def_property_readonly("num_vertices", [](const PythonCage& cage) { return cage.cage.numVertices(); })
+      .def_property_readonly("num_faces", [](const PythonCage& cage) { return cage.cage.numFaces(); })
+      .def_readonly("source", &PythonCage::source, "the file, or 'Cage(vertices, faces)'")
+      .def_readonly("repairs", &PythonCage::repairs, "the face flips applied on load, one sentence each")
+      .def_readonly("warnings", &PythonCage::warnings, "what makes the cage deform poorly (3D self-intersections)")
+      .def("__repr__", [](const PythonCage& cage) {
+        return "<somicage.Cage " + std::to_string(cage.cage.dim()) + "D, " + std::to_string(cage.cage.numVertices()) +
+               " vertices, " + std::to_string(cage.cage.numFaces()) + (cage.cage.dim() == 3 ? " triangles" : " edges") +
+               ", from " + cage.source + ">";
+      });
+}
+
+void defineDeformer(py::module_& module) {
+  py::class_<PythonDeformer>(module, "Deformer",
+                             "Precomputed coordinates of points in a rest cage (GIL released, progress, cancel).")
+      .def(py::init<const PythonCage&, const py::handle&, const std::string&, int, bool, const py::object&>(),
+           py::arg("cage"), py::arg("points"), py::arg("method") = "somigliana", py::kw_only(), py::arg("threads") = 0,
+           py::arg("float_storage") = false, py::arg("progress") = py::none(),
+           "points (P, d) (a 2D cage also takes (P, 3) and uses x, y); method: one of somicage.methods(); "
+           "threads: 0 = all cores, for the precompute and every deform; float_storage: store the coordinates in "
+           "float (half the memory, ~1e-7 relative error); progress(fraction) -> False cancels (somicage.Cancelled); "
+           "Ctrl-C raises KeyboardInterrupt.")
+      .def(
+          "deform",
+          [](const PythonDeformer& deformer, const py::handle& posed, double nu, double gamma,
+             const std::string& variant, std::optional<double> blend, bool tractionFix, bool corotational) {
+            return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix, corotational});
+          },
+          py::arg("posed"), py::kw_only(), py::arg("nu") = 0.0, py::arg("gamma") = 0.0, py::arg("variant") = "global",
+          py::arg("blend") = py::none(), py::arg("traction_fix") = true, py::arg("corotational") = false,
+          "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed "
+          "(V, d). nu: Poisson ratio in (-1, 0.5) or +-inf; gamma >= 0: bulging; variant: global or local; blend in "
+          "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation "
+          "before "
+          "the linear-elastic solve. Green and mvc ignore all but posed; bem reads nu and corotational.")
+      .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })
+      .def_property_readonly("dim", &PythonDeformer::dim)
+      .def_property_readonly("num_points", [](const PythonDeformer& d) { return d.engine().numPoints(); })
+      .def_property_readonly("exterior_count",
+                             [](const PythonDeformer& d) { return d.engine().diagnostics().exteriorCount(); })
+      .def_property_readonly(
+          "winding", [](const PythonDeformer& d) -> const Eigen::VectorXd& { return d.engine().diagnostics().winding; },
+          "(P,) generalised winding number of each point w.r.t. the rest cage (somigliana, green); read-only view")
+      .def_property_readonly(
+          "unity_residual",
+          [](const PythonDeformer& d) -> const Eigen::VectorXd& { return d.engine().diagnostics().unityResidual; },
+          "(P,) somigliana: max |sum_i T_i - I| (Eq. 9), meaningful inside the cage; empty for other methods")
+      .def_property_readonly("coordinate_bytes",
+                             [](const PythonDeformer& d) { return d.engine().frameCoordinates().bytes(); });
+}
+
+}  // namespace
+}  // namespace somicage
+
+PYBIND11_MODULE(_somicage, module) {
+  using namespace somicage;
+  module.doc() =
+      "Cage deformation with Somigliana coordinates and the other methods of somicage.methods() (SomiCage's "
+      "engine).";
+  module.attr("__version__") = SOMICAGE_VERSION;
+  registerErrors(module);
+  defineCage(module);
+  defineDeformer(module);
+
+  module.def(
+      "methods",
+      [] {
+        std::vector<std::string> names;
+        for (Method method : allMethods()) names.push_back(methodName(method));
+        return names;
+      },
+      "The method names Deformer takes (the engine's registry, core/method.h).");
+  module.def(
+      "load_mesh",
+      [](const std::string& path) {
+        PolygonMesh mesh = loadMesh(path);
+        return py::make_tuple(std::move(mesh.vertices), std::move(mesh.faces));
+      },
+      py::arg("path"), "(vertices (V, 3) float64, faces: list of 0-based index lists) of any OBJ file.");
+  module.def(
+      "save_obj",
+      [](const std::string& path, const py::handle& vertices, const std::vector<std::vector<int>>& faces) {
+        PolygonMesh topology;
+        topology.faces = faces;
+        saveObj(path, matrixFromArray(vertices, "vertices", 0), topology);
+      },
+      py::arg("path"), py::arg("vertices"), py::arg("faces") = std::vector<std::vector<int>>{},
+      "Writes vertices (V, 3) or (V, 2) and faces (0-based index lists) with 17 significant digits, atomically, "
+      "as `somicage deform` writes its output.");
+  module.def(
+      "load_posed", [](const std::string& path, const PythonCage& cage) { return loadPosedVertices(path, cage.cage); },
+      py::arg("path"), py::arg("cage"), "The vertices (V, d) of a posed cage file, checked against the rest cage.");
+  module.def(
+      "check",
+      [](const py::handle& cage, const py::handle& faces) {
+        if (py::isinstance<py::str>(cage))
+          return checkCage(loadCage(cage.cast<std::string>()), cage.cast<std::string>());
+        return checkCage(cageFromArrays(cage, faces), "Cage(vertices, faces)");
+      },
+      py::arg("cage"), py::arg("faces") = py::none(),
+      "Validity of a cage as given (an OBJ path, or vertices and faces), the repairs deform would apply and its "
+      "warnings: the cage keys of `somicage check --json`.");
+}

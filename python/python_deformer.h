@@ -1,0 +1,45 @@
+// somicage.Deformer: one precompute (makeDeformer) over a cage and points, then deform() for every posed cage and
+// parameter set. Both run with the GIL released; the precompute reports progress and can be cancelled
+// (python_progress.h). The deformed points come back as a Fortran-ordered (#P, d) float64 array that owns the
+// engine's result matrix: no copy on the way out.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "deformer.h"
+#include "python_cage.h"
+
+namespace somicage {
+
+struct PythonDeformOptions {
+  double nu = 0.0;
+  double gamma = 0.0;
+  std::string variant = "global";
+  std::optional<double> blend;  // overrides variant
+  bool tractionFix = true;
+  bool corotational = false;  // bem: remove the best-fit rotation before the linear solve
+};
+
+class PythonDeformer {
+ public:
+  // points: (#P, d), or (#P, 3) for a 2D cage (x, y are used, as by `somicage deform`).
+  PythonDeformer(const PythonCage& cage, const pybind11::handle& points, const std::string& method, int threads,
+                 bool floatStorage, const pybind11::object& progress);
+
+  // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
+  Eigen::MatrixXd deform(const pybind11::handle& posed, const PythonDeformOptions& options) const;
+
+  const CageDeformer& engine() const { return *deformer_; }
+  int dim() const { return deformer_->dim(); }
+
+ private:
+  std::unique_ptr<CageDeformer> deformer_;
+  Cage restCage_;  // for the pose's vertex count and order checks
+};
+
+}  // namespace somicage

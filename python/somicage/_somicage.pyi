@@ -1,0 +1,76 @@
+"""Type stubs for the compiled module (python/module.cpp)."""
+from typing import Callable, Optional, Sequence, Union
+
+import numpy as np
+import numpy.typing as npt
+
+__version__: str
+
+ArrayLike = npt.ArrayLike
+Progress = Callable[[float], Optional[bool]]
+
+class InputError(ValueError):
+    """Bad input; the message is the command line's. line is None when not applicable."""
+    source: str
+    line: Optional[int]
+    problem: str
+    hint: str
+
+class Cancelled(RuntimeError):
+    """A precompute stopped because its progress callback returned False."""
+
+class SomiCageWarning(UserWarning):
+    """A repair done on load, a self-intersecting cage, points outside the cage, a mesh in other units."""
+
+class Cage:
+    def __init__(self, vertices: ArrayLike, faces: Optional[ArrayLike] = None) -> None:
+        """vertices (V, 3) + triangles (F, 3), or a 2D polygon: (V, 2) + edges (F, 2) or faces=None (a loop)."""
+    @staticmethod
+    def from_obj(path: str) -> "Cage": ...
+    @property
+    def vertices(self) -> npt.NDArray[np.float64]:
+        """(V, d), read-only view."""
+    @property
+    def faces(self) -> npt.NDArray[np.int32]:
+        """(F, d), read-only view."""
+    @property
+    def dim(self) -> int: ...
+    @property
+    def num_vertices(self) -> int: ...
+    @property
+    def num_faces(self) -> int: ...
+    @property
+    def source(self) -> str: ...
+    @property
+    def repairs(self) -> list[str]: ...
+    @property
+    def warnings(self) -> list[str]: ...
+
+class Deformer:
+    def __init__(self, cage: Cage, points: ArrayLike, method: str = "somigliana", *, threads: int = 0,
+                 float_storage: bool = False, progress: Optional[Progress] = None) -> None:
+        """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released."""
+    def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
+               blend: Optional[float] = None, traction_fix: bool = True,
+               corotational: bool = False) -> npt.NDArray[np.float64]:
+        """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
+    @property
+    def method(self) -> str: ...
+    @property
+    def dim(self) -> int: ...
+    @property
+    def num_points(self) -> int: ...
+    @property
+    def exterior_count(self) -> int: ...
+    @property
+    def winding(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def unity_residual(self) -> npt.NDArray[np.float64]: ...
+    @property
+    def coordinate_bytes(self) -> int: ...
+
+def methods() -> list[str]: ...
+def load_mesh(path: str) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
+def save_obj(path: str, vertices: ArrayLike, faces: Sequence[Sequence[int]] = ...) -> None: ...
+def load_posed(path: str, cage: Cage) -> npt.NDArray[np.float64]: ...
+def check(cage: Union[str, ArrayLike], faces: Optional[ArrayLike] = None) -> dict[str, object]: ...

@@ -1,0 +1,190 @@
+// The editor's pose library and timeline: each change is undoable and redoable, a failed change records nothing,
+// scrubbing shows the timeline's cage (a key's pose at its frame, the linear mean between two), and sessions keep
+// the library and the keys (version 1 sessions still load, with neither). File > Export animation runs one frame
+// per editor frame, matches the core export and leaves nothing when cancelled.
+#include <gtest/gtest.h>
+#include <stdlib.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include "animation_export.h"
+#include "app_state.h"
+#include "obj_io.h"
+#include "pose_keys.h"
+#include "session.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+void loadDemo(AppState& state) {
+  state.scene = std::make_shared<const Scene>(makeDemoScene(3));
+  state.pose = state.scene->restCage.vertices;
+  state.history.reset(currentDocument(state), "Original", true);
+}
+
+TEST(EditorPoseKeys, LibraryEditsAreUndoable) {
+  AppState state;
+  loadDemo(state);
+  const Eigen::MatrixXd rest = state.pose;
+  storeCurrentPose(state, "rest");
+  Eigen::MatrixXd moved = rest;
+  moved.row(0) += Eigen::RowVector3d(0.5, 0, 0);
+  setPose(state, moved);
+  storeCurrentPose(state, "moved");
+  renameNamedPose(state, "moved", "reach");
+  ASSERT_NE(state.animation.poses.find("reach"), nullptr);
+  applyNamedPose(state, "rest");
+  EXPECT_EQ(state.pose, rest);
+  deleteNamedPose(state, "rest");
+  EXPECT_EQ(state.animation.poses.find("rest"), nullptr);
+
+  undo(state);  // delete
+  ASSERT_NE(state.animation.poses.find("rest"), nullptr);
+  undo(state);  // apply
+  EXPECT_EQ(state.pose, moved);
+  undo(state);  // rename
+  EXPECT_NE(state.animation.poses.find("moved"), nullptr);
+  EXPECT_EQ(state.animation.poses.find("reach"), nullptr);
+  redo(state);
+  EXPECT_NE(state.animation.poses.find("reach"), nullptr);
+
+  const size_t undoCount = state.history.size();
+  renameNamedPose(state, "reach", "rest");  // taken: an error, no edit
+  EXPECT_EQ(state.history.size(), undoCount);
+  EXPECT_EQ(state.errors.size(), 1u);
+}
+
+TEST(EditorPoseKeys, ScrubbingShowsKeysAndTheLinearMean) {
+  AppState state;
+  loadDemo(state);
+  const Eigen::MatrixXd rest = state.pose;
+  state.animation.timeline.interpolation = Interpolation::Linear;
+  state.animation.frame = 0;
+  keyCurrentPose(state);
+  Eigen::MatrixXd moved = rest;
+  moved.col(1).array() += 0.4;
+  setPose(state, moved);
+  state.animation.frame = 10;
+  state.animation.keyParams = true;
+  state.params.gamma = 2.0;
+  keyCurrentPose(state);
+  ASSERT_EQ(state.animation.timeline.keys.size(), 2u);
+
+  scrubTo(state, 0);
+  EXPECT_EQ(state.pose, rest);
+  scrubTo(state, 5);
+  EXPECT_LE((state.pose - 0.5 * (rest + moved)).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_DOUBLE_EQ(state.params.gamma, 2.0) << "the first key sets no gamma: it takes the second's";
+  undo(state);  // the second key
+  EXPECT_EQ(state.animation.timeline.keys.size(), 1u);
+}
+
+TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
+  AppState state;
+  loadDemo(state);
+  storeCurrentPose(state, "a");
+  keyCurrentPose(state);
+  const Session saved = makeSession(state);
+  const Session read = sessionFromJson(sessionToJson(saved), "s.json");
+  ASSERT_EQ(read.poses.poses().size(), 2u);
+  EXPECT_EQ(read.poses.poses()[0].vertices, state.pose);
+  ASSERT_EQ(read.timeline.keys.size(), 1u);
+  EXPECT_EQ(read.timeline.keys[0].pose, state.animation.timeline.keys[0].pose);
+
+  const std::string v1 = R"({"format": "somicage-session", "version": 1, "mesh": "", "cage": "", "demoDim": 3,
+    "pose": [], "method": "green", "params": {"blend": 0, "nu": 0, "gamma": 0, "tractionCorrection": true},
+    "compare": false, "compareMethods": ["green"],
+    "camera": {"target": [0, 0, 0], "distance": 3, "yaw": 0, "pitch": 0}})";
+  const Session old = sessionFromJson(v1, "old.json");
+  EXPECT_TRUE(old.poses.poses().empty());
+  EXPECT_TRUE(old.timeline.keys.empty());
+}
+
+}  // namespace
+
+namespace {
+
+// File > Export animation without a window: the frame loop's hooks run one timeline frame per call; the GLB
+// written must hold the same frames as the core writer's `deformTimelineFrames` (base = frame 0, one target per
+// later frame), the pose is restored, and Cancel leaves nothing.
+class EditorAnimationExport : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    std::string pattern = (std::filesystem::temp_directory_path() / "somicage-export-XXXXXX").string();
+    folder = ::mkdtemp(pattern.data());
+    std::ofstream(folder / "cage.obj")
+        << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
+           "v -1 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+    std::ofstream(folder / "mesh.obj")
+        << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+    requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "cage.obj").string());
+    std::optional<PrecomputeOutcome> out = state.worker.wait();
+    ASSERT_TRUE(out.has_value());
+    installOutcome(state, std::move(*out));
+    ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+    state.animation.timeline.firstFrame = 0;
+    state.animation.timeline.lastFrame = 4;
+    state.animation.frame = 0;
+    keyCurrentPose(state);
+    Eigen::MatrixXd moved = state.pose;
+    moved.row(6) += Eigen::RowVector3d(0.3, 0.2, 0.1);
+    setPose(state, moved);
+    state.animation.frame = 4;
+    keyCurrentPose(state);
+    posed = state.pose;
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    std::filesystem::remove_all(folder, ignored);
+  }
+  // Runs the hooks the way the frame loop does until the job ends (or `frames` editor frames passed).
+  void runFrames(int frames) {
+    for (int k = 0; k < frames && state.animation.exportJob; ++k) {
+      showNextExportFrame(state);
+      updateDeformation(state);
+      captureExportFrame(state, 0, 0);
+    }
+  }
+
+  std::filesystem::path folder;
+  AppState state;
+  Eigen::MatrixXd posed;
+};
+
+TEST_F(EditorAnimationExport, ObjSequenceHoldsTheTimelineFramesAndThePoseIsRestored) {
+  startAnimationExport(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string());
+  ASSERT_TRUE(state.animation.exportJob.has_value());
+  runFrames(100);
+  EXPECT_FALSE(state.animation.exportJob.has_value());
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_EQ(state.pose, posed);
+  const std::vector<Eigen::MatrixXd> expected =
+      deformTimelineFrames(*state.deformers.at(state.method), state.scene->restCage, state.animation.timeline,
+                           state.animation.poses, state.params, state.scene->document->geometry.vertices, 3, 0, 4);
+  for (int f = 0; f <= 4; ++f) {
+    const std::string name = (folder / "seq" / ("mesh_000" + std::to_string(f) + ".obj")).string();
+    const PolygonMesh frame = loadMesh(name);
+    EXPECT_LE((frame.vertices - expected[static_cast<size_t>(f)]).cwiseAbs().maxCoeff(), 1e-12) << name;
+  }
+}
+
+TEST_F(EditorAnimationExport, CancelLeavesNothing) {
+  startAnimationExport(state, AnimationExportJob::Kind::Glb, (folder / "anim.glb").string());
+  runFrames(2);
+  ASSERT_TRUE(state.animation.exportJob.has_value());
+  state.animation.exportJob->cancelRequested = true;
+  runFrames(1);
+  EXPECT_FALSE(state.animation.exportJob.has_value());
+  EXPECT_EQ(state.pose, posed);
+  std::vector<std::string> left;
+  for (const auto& entry : std::filesystem::directory_iterator(folder))
+    left.push_back(entry.path().filename().string());
+  std::sort(left.begin(), left.end());
+  EXPECT_EQ(left, (std::vector<std::string>{"cage.obj", "mesh.obj"}));
+}
+
+}  // namespace
