@@ -14,9 +14,10 @@
 #include <string>
 #include <vector>
 
+#include "deformer.h"
+#include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "reference/somigliana_reference.h"
-#include "somigliana_deformer.h"
 #include "test_models.h"
 
 namespace somicage {
@@ -81,7 +82,7 @@ TEST_P(GoldenDeformation, CoreMatchesTheHighOrderReference) {
 
   PrecomputeOptions options;
   options.threads = 1;
-  const auto deformer = makeSomiglianaDeformer(cage, points, options, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, points, options);
   for (const reference::PoseParameters& p : c.parameters) {
     const size_t k = std::find(nus.begin(), nus.end(), p.nu) - nus.begin();
     const reference::BoundaryConditions bc = reference::boundaryConditions(cage, posed, p);

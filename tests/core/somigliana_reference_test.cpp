@@ -22,7 +22,8 @@
 #include <string>
 #include <vector>
 
-#include "somigliana_deformer.h"
+#include "deformer.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -149,7 +150,7 @@ std::vector<ReferenceScene> referenceScenes() {
 std::unique_ptr<CageDeformer> coreDeformer(const Cage& cage, const Eigen::MatrixXd& points) {
   PrecomputeOptions options;
   options.threads = 1;
-  return makeSomiglianaDeformer(cage, points, options, noProgress);
+  return makeDeformer(methods::somigliana(), cage, points, options);
 }
 
 DeformParams coreParams(const reference::PoseParameters& p) {

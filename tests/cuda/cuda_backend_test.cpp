@@ -19,6 +19,7 @@
 #include "core/reference/portable_row_check.h"
 #include "core/test_shapes.h"
 #include "deformer.h"
+#include "methods/method_descriptors.h"
 
 namespace somicage {
 namespace {
@@ -54,7 +55,7 @@ TEST(CudaBackend, StatusExplainsItself) {
 TEST(CudaBackend, WithoutDeviceEveryCallThrowsCudaError) {
   if (cudaStatus().available) GTEST_SKIP() << "a CUDA device is present: " << cudaStatus().deviceName;
   const Cage cage = test::makeCube();
-  const auto deformer = makeDeformer(Method::Somigliana, cage, randomPointsIn(cage, 8, 0.5, 1));
+  const auto deformer = makeDeformer(methods::somigliana(), cage, randomPointsIn(cage, 8, 0.5, 1));
   EXPECT_THROW(CudaFrameEvaluator(deformer->frameCoordinates(), 3), CudaError);
   EXPECT_THROW(integrateSomiglianaCoordinatesCuda(cage, randomPointsIn(cage, 4, 0.5, 2), noProgress,
                                                   [](int, const double*, double) {}),
