@@ -4,7 +4,8 @@
 // Tolerances: a frame from float coordinates within 1e-5 cage diameters of the CPU frame (both read the same
 // float C; the GPU accumulates in double, the CPU partly in float), from double coordinates within 1e-9; the
 // precompute's rows within 1e-9 relative to the row's largest entry (the same double formulas; only the device's
-// fused multiply-adds and math library round differently).
+// fused multiply-adds and math library round differently); against the independent quadrature of
+// core/reference/ (not the CPU), T_i and K_j n_j within 1e-10 relative.
 #include "cuda/cuda_backend.h"
 
 #include <gtest/gtest.h>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "core/frame_cases.h"
+#include "core/reference/portable_row_check.h"
 #include "core/test_shapes.h"
 #include "deformer.h"
 #include "methods/method_descriptors.h"
@@ -103,6 +105,29 @@ TEST(CudaBackend, PrecomputeMatchesCpu) {
                      (gpu.row(p) - cpu.values.row(p)).cwiseAbs().maxCoeff() / cpu.values.row(p).cwiseAbs().maxCoeff());
   EXPECT_LE(worst, 1e-9) << "largest relative difference of a row";
   EXPECT_LE((winding - cpu.winding).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// The device precompute against the independent reference (adaptive Gauss-Legendre quadrature of Eqs. 3-4), not
+// only against the CPU, which shares the device's triangle kernel: each row is turned back into T_i and K_j n_j.
+TEST(CudaBackend, PrecomputeMatchesTheReferenceQuadrature) {
+  SKIP_WITHOUT_DEVICE();
+  const Cage cage = test::makeBumpySphere(1);
+  const Eigen::MatrixXd points = randomPointsIn(cage, 40, 0.45, 6);
+  const int columns = 10 * cage.numVertices() + 4 * cage.numFaces();
+  std::vector<std::vector<double>> rows(points.rows());
+  std::vector<double> winding(points.rows());
+  integrateSomiglianaCoordinatesCuda(cage, points, noProgress, [&](int p, const double* row, double w) {
+    rows[p].assign(row, row + columns);
+    winding[p] = w;
+  });
+  double worst = 0, worstWinding = 0;
+  for (int p = 0; p < points.rows(); ++p) {
+    const reference::RowComparison c =
+        reference::compareRowWithReference(cage, points.row(p).transpose(), rows[p].data(), 1, winding[p]);
+    worst = std::max(worst, c.coordinates), worstWinding = std::max(worstWinding, c.winding);
+  }
+  EXPECT_LE(worst, 1e-10) << "largest relative difference of T_i, K_j n_j";
+  EXPECT_LE(worstWinding, 1e-10);
 }
 
 }  // namespace

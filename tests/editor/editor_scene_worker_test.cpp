@@ -16,6 +16,30 @@
 using namespace somicage;
 using namespace somicage::editor;
 
+namespace {
+
+// For a convex body: each face's (3D) or edge's (2D, (e_y, -e_x)) normal has a positive component along the
+// direction from the vertices' centroid to the face's centroid.
+void expectNormalsPointAwayFromCentroid(const Eigen::MatrixXd& V, const Eigen::MatrixXi& faces, const char* what) {
+  const Eigen::RowVectorXd centroid = V.colwise().mean();
+  int inward = 0;
+  for (Eigen::Index f = 0; f < faces.rows(); ++f) {
+    Eigen::RowVectorXd faceCentroid = Eigen::RowVectorXd::Zero(V.cols());
+    for (Eigen::Index k = 0; k < faces.cols(); ++k) faceCentroid += V.row(faces(f, k)) / double(faces.cols());
+    const Eigen::RowVectorXd toFace = faceCentroid - centroid, e1 = V.row(faces(f, 1)) - V.row(faces(f, 0));
+    double outward = e1(1) * toFace(0) - e1(0) * toFace(1);  // 2D: (e_y, -e_x) . toFace
+    if (V.cols() == 3) {
+      const Eigen::RowVectorXd e2 = V.row(faces(f, 2)) - V.row(faces(f, 0));
+      outward = (e1(1) * e2(2) - e1(2) * e2(1)) * toFace(0) + (e1(2) * e2(0) - e1(0) * e2(2)) * toFace(1) +
+                (e1(0) * e2(1) - e1(1) * e2(0)) * toFace(2);  // (e1 x e2) . toFace
+    }
+    inward += outward <= 0;
+  }
+  EXPECT_EQ(inward, 0) << what << ": faces whose normal points into the body";
+}
+
+}  // namespace
+
 TEST(EditorScene, DemoCagesEncloseTheirMeshesAndFaceOutward) {
   for (int dim : {2, 3}) {
     const Scene s = makeDemoScene(dim);
@@ -33,14 +57,20 @@ TEST(EditorScene, DemoCagesEncloseTheirMeshesAndFaceOutward) {
     // positive measure), with nothing to repair.
     EXPECT_TRUE(validateCage(s.restCage).valid());
     EXPECT_TRUE(repairCage(s.restCage).fixes.empty());
+    // Outward, face by face: the cage (a box) and the 3D mesh (a capped cylinder) are convex, so every face's
+    // normal points away from the body's centroid.
+    expectNormalsPointAwayFromCentroid(s.restCage.vertices, s.restCage.faces, "cage");
     if (dim == 3) {
-      // The mesh is written facing outward (its normals shade it): a positive signed volume.
+      expectNormalsPointAwayFromCentroid(s.meshVertices, s.meshTriangles, "mesh");
       EXPECT_GT(signedMeasure(s.meshVertices, s.meshTriangles), 0.0);
-      // Closed: every edge is shared by exactly two faces in opposite directions.
+      // Closed and consistently wound: every directed edge once, and its reverse once.
       std::map<std::pair<int, int>, int> edges;
       for (Eigen::Index f = 0; f < s.restCage.faces.rows(); ++f)
         for (int k = 0; k < 3; ++k) ++edges[{s.restCage.faces(f, k), s.restCage.faces(f, (k + 1) % 3)}];
-      for (const auto& [e, n] : edges) EXPECT_EQ(edges.count({e.second, e.first}), 1u);
+      for (const auto& [e, n] : edges) {
+        EXPECT_EQ(n, 1) << "edge " << e.first << "-" << e.second;
+        EXPECT_EQ(edges.count({e.second, e.first}), 1u) << "edge " << e.first << "-" << e.second;
+      }
     }
   }
 }
