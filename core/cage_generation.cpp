@@ -157,6 +157,7 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
       generated.cage = std::move(tried.cage);
       generated.repairRounds = tried.repairRounds;
       generated.minAngleDegrees = minimumAngleDegrees(generated.cage);
+      generated.tightness = measureTightness(generated.cage, vertices, triangles);
       progress(1.0);
       return generated;
     }

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "cage.h"
+#include "cage_enclosure.h"
 #include "progress.h"
 
 namespace somicage {
@@ -35,6 +36,7 @@ struct GeneratedCage {
   double minAngleDegrees = 0.0;  // smallest triangle angle of the cage
   int attempts = 0;              // offset surfaces made (1 unless a try was rejected)
   int repairRounds = 0;          // rounds of pushing vertices outward after the exact check
+  CageTightness tightness;       // how closely the cage fits the mesh (cage_enclosure.h)
 };
 
 // vertices #V by 3, triangles #T by 3 (any mesh; see triangulatePolygons in obj_io.h for polygons). source names the

@@ -71,7 +71,7 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
   const double seconds = secondsSince(start);
   saveObj(outPath, generated.cage.vertices, cageTopology(generated.cage));
 
-  const CageTightness tightness = measureTightness(generated.cage, mesh.vertices, triangles);
+  const CageTightness& tightness = generated.tightness;
   const bool valid = validateCage(generated.cage).valid();
   if (args.has("--json")) {
     JsonObjectWriter json(std::cout);
