@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cage_enclosure.h"
+#include "cage_shrink.h"
 #include "cage_simplification.h"
 #include "cage_validation.h"
 #include "errors.h"
@@ -19,6 +20,8 @@ namespace {
 constexpr int kMaxAttempts = 4;
 constexpr int kMaxRepairRounds = 8;
 constexpr double kMarginGrowth = 1.5;  // per rejected attempt
+constexpr double kClearance = 0.25;    // the shrink step keeps vertices this many margins from the mesh
+constexpr double kShrinkFrom = 0.9;    // of the progress bar: the tries before, the shrink step after
 
 // Voxels per diagonal: enough to resolve what maxFaces faces can show (edges of about 1/sqrt(maxFaces) diagonals)
 // several times over, bounded so that large budgets stay fast.
@@ -152,9 +155,18 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
     // The first try takes 70% of the bar, each retry 70% of what is left.
     const double from = 1.0 - std::pow(0.3, generated.attempts - 1), span = 0.7 * (1.0 - from);
     Attempt tried = attempt(unitVertices, triangles, center, diagonal, vertices, options, generated.margin, voxel,
-                            [&](double done) { return progress(from + span * done); });
+                            [&](double done) { return progress(kShrinkFrom * (from + span * done)); });
     if (tried.failure.empty()) {
       generated.cage = std::move(tried.cage);
+      ShrinkOptions shrink;
+      shrink.clearance = kClearance * generated.margin * diagonal;
+      shrink.minAngleDegrees = options.minAngleDegrees;
+      Cage shrunk = generated.cage;
+      shrinkTowardMesh(shrunk, vertices, triangles, shrink,
+                       [&](double done) { return progress(kShrinkFrom + (1 - kShrinkFrom) * done); });
+      // Every move was proven safe; the exact check still has the last word.
+      if (validateCage(shrunk).valid() && checkEnclosure(shrunk, vertices, triangles).encloses())
+        generated.cage = std::move(shrunk);
       generated.repairRounds = tried.repairRounds;
       generated.minAngleDegrees = minimumAngleDegrees(generated.cage);
       generated.tightness = measureTightness(generated.cage, vertices, triangles);

@@ -1,0 +1,125 @@
+#include "cage_shrink.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+
+#include <cmath>
+#include <vector>
+
+#include "errors.h"
+#include "triangle_crossing.h"
+
+namespace somicage {
+
+namespace {
+
+using cage_geometry::Kernel;
+using cage_geometry::minAngle;
+using cage_geometry::Point;
+using cage_geometry::trianglesCross;
+using Triangles = std::vector<Kernel::Triangle_3>;
+using SoupTree =
+    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
+
+Point point(const Eigen::MatrixXd& vertices, int i) { return Point(vertices(i, 0), vertices(i, 1), vertices(i, 2)); }
+
+class Shrinker {
+ public:
+  Shrinker(Cage& cage, const SoupTree& mesh, const ShrinkOptions& options)
+      : cage_(cage), mesh_(mesh), options_(options), facesOf_(cage.numVertices()) {
+    for (int j = 0; j < cage.numFaces(); ++j)
+      for (int k = 0; k < 3; ++k) facesOf_[cage.faces(j, k)].push_back(j);
+  }
+
+  // Tries to bring vertex v toward its closest mesh point, as far as it can go (full step, then halves).
+  bool move(int v) {
+    const Point p = point(cage_.vertices, v);
+    const Point closest = mesh_.closest_point(p);
+    const double distance = std::sqrt(CGAL::squared_distance(p, closest));
+    const double travel = distance - options_.clearance;
+    if (!(travel > 1e-3 * options_.clearance)) return false;
+    const Kernel::Vector_3 toward = (closest - p) / distance;
+    for (double step = travel; step > 0.05 * travel; step *= 0.5) {
+      const Point q = p + step * toward;
+      if (!(std::sqrt(mesh_.squared_distance(q)) >= options_.clearance)) continue;  // another part is nearer
+      if (!acceptable(v, p, q)) continue;
+      cage_.vertices.row(v) << q.x(), q.y(), q.z();
+      return true;
+    }
+    return false;
+  }
+
+ private:
+  // The corners of face f with vertex v first, in the face's order.
+  std::array<int, 3> rotated(int f, int v) const {
+    int k = 0;
+    while (cage_.faces(f, k) != v) ++k;
+    return {v, cage_.faces(f, (k + 1) % 3), cage_.faces(f, (k + 2) % 3)};
+  }
+
+  bool acceptable(int v, const Point& p, const Point& q) const {
+    const double minAngleRadians = options_.minAngleDegrees * M_PI / 180.0;
+    std::vector<std::array<Point, 3>> made;
+    for (int f : facesOf_[v]) {
+      const std::array<int, 3> c = rotated(f, v);
+      const Point a = point(cage_.vertices, c[1]), b = point(cage_.vertices, c[2]);
+      if (!(CGAL::cross_product(a - p, b - p) * CGAL::cross_product(a - q, b - q) > 0)) return false;  // flips
+      if (minAngle(q, a, b) < std::min(minAngleRadians, minAngle(p, a, b))) return false;
+      const Kernel::Triangle_3 triangle(q, a, b);
+      if (mesh_.do_intersect(triangle)) return false;
+      if (CGAL::orientation(p, q, a, b) != CGAL::COPLANAR && mesh_.do_intersect(Kernel::Tetrahedron_3(p, q, a, b)))
+        return false;  // the face would sweep over part of the mesh
+      for (const std::array<Point, 3>& other : made)
+        if (trianglesCross(triangle, other)) return false;
+      if (crossesOtherFaces(v, triangle)) return false;
+      made.push_back({q, a, b});
+    }
+    return true;
+  }
+
+  bool crossesOtherFaces(int v, const Kernel::Triangle_3& triangle) const {
+    const CGAL::Bbox_3 box = triangle.bbox();
+    for (int g = 0; g < cage_.numFaces(); ++g) {
+      if (cage_.faces(g, 0) == v || cage_.faces(g, 1) == v || cage_.faces(g, 2) == v) continue;  // moved with v
+      const std::array<Point, 3> corners = {point(cage_.vertices, cage_.faces(g, 0)),
+                                            point(cage_.vertices, cage_.faces(g, 1)),
+                                            point(cage_.vertices, cage_.faces(g, 2))};
+      if (!CGAL::do_overlap(box, corners[0].bbox() + corners[1].bbox() + corners[2].bbox())) continue;
+      if (trianglesCross(triangle, corners)) return true;
+    }
+    return false;
+  }
+
+  Cage& cage_;
+  const SoupTree& mesh_;
+  const ShrinkOptions& options_;
+  std::vector<std::vector<int>> facesOf_;
+};
+
+}  // namespace
+
+int shrinkTowardMesh(Cage& cage, const Eigen::MatrixXd& meshVertices, const Eigen::MatrixXi& meshTriangles,
+                     const ShrinkOptions& options, const ProgressCallback& progress) {
+  Triangles triangles;
+  triangles.reserve(meshTriangles.rows());
+  for (int j = 0; j < meshTriangles.rows(); ++j)
+    triangles.emplace_back(point(meshVertices, meshTriangles(j, 0)), point(meshVertices, meshTriangles(j, 1)),
+                           point(meshVertices, meshTriangles(j, 2)));
+  SoupTree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+  Shrinker shrinker(cage, tree, options);
+  int moves = 0;
+  for (int round = 0; round < options.rounds; ++round) {
+    int moved = 0;
+    for (int v = 0; v < cage.numVertices(); ++v) {
+      moved += shrinker.move(v);
+      if (!progress((round + double(v + 1) / cage.numVertices()) / options.rounds)) throw Cancelled();
+    }
+    moves += moved;
+    if (moved == 0) break;
+  }
+  return moves;
+}
+
+}  // namespace somicage
