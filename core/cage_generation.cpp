@@ -20,7 +20,7 @@ namespace {
 constexpr int kMaxAttempts = 4;
 constexpr int kMaxRepairRounds = 8;
 constexpr double kMarginGrowth = 1.5;  // per rejected attempt
-constexpr double kClearance = 0.25;    // the shrink step keeps vertices this many margins from the mesh
+constexpr double kClearance = 0.5;     // the shrink step keeps vertices this many voxels from the mesh
 constexpr double kShrinkFrom = 0.9;    // of the progress bar: the tries before, the shrink step after
 
 // Voxels per diagonal: enough to resolve what maxFaces faces can show (edges of about 1/sqrt(maxFaces) diagonals)
@@ -159,7 +159,7 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
     if (tried.failure.empty()) {
       generated.cage = std::move(tried.cage);
       ShrinkOptions shrink;
-      shrink.clearance = kClearance * generated.margin * diagonal;
+      shrink.clearance = kClearance * voxel * diagonal;
       shrink.minAngleDegrees = options.minAngleDegrees;
       Cage shrunk = generated.cage;
       shrinkTowardMesh(shrunk, vertices, triangles, shrink,

@@ -18,7 +18,7 @@ namespace somicage {
 struct ShrinkOptions {
   double clearance = 0.0;  // the least distance from a moved vertex to the mesh, in the mesh's units
   double minAngleDegrees = 10.0;
-  int rounds = 6;  // passes over all vertices
+  int rounds = 6;  // passes over all vertices (moves, then edge flips)
 };
 
 // cage: closed, edge-manifold, outward, strictly enclosing the mesh (meshVertices #V by 3, meshTriangles #T by 3).
