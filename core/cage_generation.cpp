@@ -112,6 +112,26 @@ Attempt attempt(const Eigen::MatrixXd& unitVertices, const Eigen::MatrixXi& tria
   }
 }
 
+// The box [lower - pad, upper + pad] as 12 outward triangles.
+Cage boundingBoxCage(const Eigen::RowVector3d& lower, const Eigen::RowVector3d& upper, double pad) {
+  Cage box;
+  box.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i)
+    for (int axis = 0; axis < 3; ++axis)
+      box.vertices(i, axis) = (i >> axis) & 1 ? upper(axis) + pad : lower(axis) - pad;
+  box.faces.resize(12, 3);
+  box.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7,
+      5;
+  return box;
+}
+
+// A valid cage within the budget that the exact check finds enclosing the mesh.
+bool provenCage(const Cage& cage, const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles,
+                const CageGenerationOptions& options) {
+  return cage.numFaces() <= options.maxFaces && validateCage(cage).valid() &&
+         checkEnclosure(cage, vertices, triangles).encloses();
+}
+
 }  // namespace
 
 double minimumAngleDegrees(const Cage& cage) {
@@ -165,8 +185,13 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
       shrinkTowardMesh(shrunk, vertices, triangles, shrink,
                        [&](double done) { return progress(kShrinkFrom + (1 - kShrinkFrom) * done); });
       // Every move was proven safe; the exact check still has the last word.
-      if (validateCage(shrunk).valid() && checkEnclosure(shrunk, vertices, triangles).encloses())
-        generated.cage = std::move(shrunk);
+      if (provenCage(shrunk, vertices, triangles, options)) generated.cage = std::move(shrunk);
+      // On box-like shapes the bounding box, tightened the same way, fits better than any offset surface.
+      Cage box = boundingBoxCage(lower, upper, shrink.clearance);
+      shrinkTowardMesh(box, vertices, triangles, shrink);
+      if (minimumAngleDegrees(box) >= options.minAngleDegrees && provenCage(box, vertices, triangles, options) &&
+          hausdorffCageToMesh(box, vertices, triangles) < hausdorffCageToMesh(generated.cage, vertices, triangles))
+        generated.cage = std::move(box);
       generated.repairRounds = tried.repairRounds;
       generated.minAngleDegrees = minimumAngleDegrees(generated.cage);
       generated.tightness = measureTightness(generated.cage, vertices, triangles);

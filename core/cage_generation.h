@@ -9,6 +9,8 @@
 //   3. cage_enclosure.h: the exact check. Where it fails, the vertices of the faces concerned are pushed outward
 //      along their normals and the check repeated; a self-intersection or a budget that could not be met restarts
 //      from 1 with a larger margin. After a bounded number of tries, an InputError says what to change.
+//   4. cage_shrink.h: vertices move toward the mesh and convex edges flip where exact tests prove the enclosure is
+//      kept (an inward flow in the spirit of Nested Cages); the exact check of 3 then has the last word.
 // Any mesh: open, several components, non-manifold, with thin parts or handles (a handle may be filled).
 #pragma once
 
