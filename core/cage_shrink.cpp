@@ -1,15 +1,11 @@
 #include "cage_shrink.h"
 
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
-
 #include <algorithm>
 #include <cmath>
 #include <vector>
 
+#include "cage_geometry.h"
 #include "errors.h"
-#include "triangle_crossing.h"
 
 namespace somicage {
 
@@ -18,10 +14,9 @@ namespace {
 using cage_geometry::Kernel;
 using cage_geometry::minAngle;
 using cage_geometry::Point;
+using cage_geometry::SoupTree;
+using cage_geometry::Triangles;
 using cage_geometry::trianglesCross;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using SoupTree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
 
 Point point(const Eigen::MatrixXd& vertices, int i) { return Point(vertices(i, 0), vertices(i, 1), vertices(i, 2)); }
 
@@ -173,11 +168,7 @@ class Shrinker {
 
 int shrinkTowardMesh(Cage& cage, const Eigen::MatrixXd& meshVertices, const Eigen::MatrixXi& meshTriangles,
                      const ShrinkOptions& options, const ProgressCallback& progress) {
-  Triangles triangles;
-  triangles.reserve(meshTriangles.rows());
-  for (int j = 0; j < meshTriangles.rows(); ++j)
-    triangles.emplace_back(point(meshVertices, meshTriangles(j, 0)), point(meshVertices, meshTriangles(j, 1)),
-                           point(meshVertices, meshTriangles(j, 2)));
+  const Triangles triangles = cage_geometry::triangleSoup(meshVertices, meshTriangles);
   SoupTree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   Shrinker shrinker(cage, tree, options);

@@ -19,8 +19,8 @@
 #include <cmath>
 #include <vector>
 
+#include "cage_geometry.h"
 #include "errors.h"
-#include "triangle_crossing.h"
 
 namespace somicage {
 
@@ -37,9 +37,8 @@ using Face = Mesh::Face_index;
 using Vertex = Mesh::Vertex_index;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 using Profile = SMS::Edge_profile<Mesh>;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using SoupTree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
+using cage_geometry::SoupTree;
+using cage_geometry::Triangles;
 
 // A closed oriented polygon soup as a halfedge mesh; vertices where marching cubes made a pinch are duplicated.
 Mesh toMesh(const Cage& cage) {
@@ -243,12 +242,7 @@ SimplificationResult simplifyOutsideBarrier(const Cage& surface, const Cage& bar
   const Mesh barrierMesh = toMesh(barrier);
   Tree barrierTree(faces(barrierMesh).first, faces(barrierMesh).second, barrierMesh);
   barrierTree.accelerate_distance_queries();
-  Triangles meshSoup;
-  const auto corner = [&](int j, int k) {
-    const int i = meshTriangles(j, k);
-    return Point(meshVertices(i, 0), meshVertices(i, 1), meshVertices(i, 2));
-  };
-  for (int j = 0; j < meshTriangles.rows(); ++j) meshSoup.emplace_back(corner(j, 0), corner(j, 1), corner(j, 2));
+  const Triangles meshSoup = cage_geometry::triangleSoup(meshVertices, meshTriangles);
   const SoupTree meshTree(meshSoup.begin(), meshSoup.end());
   TriangleGrid grid(mesh, 32);
   const double minAngleRadians = options.minAngleDegrees * M_PI / 180.0;

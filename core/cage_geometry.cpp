@@ -1,9 +1,20 @@
-#include "triangle_crossing.h"
+#include "cage_geometry.h"
 
 #include <algorithm>
 #include <cmath>
 
 namespace somicage::cage_geometry {
+
+Triangles triangleSoup(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles) {
+  const auto corner = [&](int j, int k) {
+    const int i = triangles(j, k);
+    return Point(vertices(i, 0), vertices(i, 1), vertices(i, 2));
+  };
+  Triangles soup;
+  soup.reserve(triangles.rows());
+  for (int j = 0; j < triangles.rows(); ++j) soup.emplace_back(corner(j, 0), corner(j, 1), corner(j, 2));
+  return soup;
+}
 
 double minAngle(const Point& a, const Point& b, const Point& c) {
   const auto angle = [](const Point& o, const Point& p, const Point& q) {
