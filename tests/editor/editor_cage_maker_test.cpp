@@ -13,6 +13,7 @@
 #include "cage_maker.h"
 #include "core/test_shapes.h"
 #include "errors.h"
+#include "methods/method_descriptors.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -178,9 +179,9 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   std::optional<PrecomputeOutcome> out = state.worker.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_TRUE(hasDeformer(state, Method::Somigliana));
+  ASSERT_TRUE(hasDeformer(state, methods::somigliana()));
   updateDeformation(state);
-  const Eigen::MatrixXd& shown = displayedPoints(state, Method::Somigliana);
+  const Eigen::MatrixXd& shown = displayedPoints(state, methods::somigliana());
   ASSERT_EQ(shown.rows(), state.scene->meshVertices.rows());
   EXPECT_LT((shown - state.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
 
