@@ -14,6 +14,7 @@
 #include <limits>
 #include <set>
 
+#include "cage_geometry.h"
 #include "cage_validation.h"
 
 namespace somicage {
@@ -24,9 +25,8 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
 using Mesh = CGAL::Surface_mesh<Point>;
 using FaceTree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using SoupTree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
+using cage_geometry::SoupTree;
+using cage_geometry::Triangles;
 
 Point point(const Eigen::MatrixXd& vertices, int i) { return Point(vertices(i, 0), vertices(i, 1), vertices(i, 2)); }
 
@@ -78,11 +78,7 @@ EnclosureReport checkEnclosure(const Cage& cage, const Eigen::MatrixXd& meshVert
 
 double hausdorffCageToMesh(const Cage& cage, const Eigen::MatrixXd& meshVertices, const Eigen::MatrixXi& meshTriangles,
                            int samplesPerEdge) {
-  Triangles triangles;
-  triangles.reserve(meshTriangles.rows());
-  for (int j = 0; j < meshTriangles.rows(); ++j)
-    triangles.emplace_back(point(meshVertices, meshTriangles(j, 0)), point(meshVertices, meshTriangles(j, 1)),
-                           point(meshVertices, meshTriangles(j, 2)));
+  const Triangles triangles = cage_geometry::triangleSoup(meshVertices, meshTriangles);
   SoupTree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
   double worst = 0;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cage_enclosure.h"
+#include "cage_shrink.h"
 #include "cage_simplification.h"
 #include "cage_validation.h"
 #include "errors.h"
@@ -19,6 +20,8 @@ namespace {
 constexpr int kMaxAttempts = 4;
 constexpr int kMaxRepairRounds = 8;
 constexpr double kMarginGrowth = 1.5;  // per rejected attempt
+constexpr double kClearance = 0.5;     // the shrink step keeps vertices this many voxels from the mesh
+constexpr double kShrinkFrom = 0.9;    // of the progress bar: the tries before, the shrink step after
 
 // Voxels per diagonal: enough to resolve what maxFaces faces can show (edges of about 1/sqrt(maxFaces) diagonals)
 // several times over, bounded so that large budgets stay fast.
@@ -109,6 +112,26 @@ Attempt attempt(const Eigen::MatrixXd& unitVertices, const Eigen::MatrixXi& tria
   }
 }
 
+// The box [lower - pad, upper + pad] as 12 outward triangles.
+Cage boundingBoxCage(const Eigen::RowVector3d& lower, const Eigen::RowVector3d& upper, double pad) {
+  Cage box;
+  box.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i)
+    for (int axis = 0; axis < 3; ++axis)
+      box.vertices(i, axis) = (i >> axis) & 1 ? upper(axis) + pad : lower(axis) - pad;
+  box.faces.resize(12, 3);
+  box.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7,
+      5;
+  return box;
+}
+
+// A valid cage within the budget that the exact check finds enclosing the mesh.
+bool provenCage(const Cage& cage, const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles,
+                const CageGenerationOptions& options) {
+  return cage.numFaces() <= options.maxFaces && validateCage(cage).valid() &&
+         checkEnclosure(cage, vertices, triangles).encloses();
+}
+
 }  // namespace
 
 double minimumAngleDegrees(const Cage& cage) {
@@ -152,11 +175,26 @@ GeneratedCage generateCage(const Eigen::MatrixXd& vertices, const Eigen::MatrixX
     // The first try takes 70% of the bar, each retry 70% of what is left.
     const double from = 1.0 - std::pow(0.3, generated.attempts - 1), span = 0.7 * (1.0 - from);
     Attempt tried = attempt(unitVertices, triangles, center, diagonal, vertices, options, generated.margin, voxel,
-                            [&](double done) { return progress(from + span * done); });
+                            [&](double done) { return progress(kShrinkFrom * (from + span * done)); });
     if (tried.failure.empty()) {
       generated.cage = std::move(tried.cage);
+      ShrinkOptions shrink;
+      shrink.clearance = kClearance * voxel * diagonal;
+      shrink.minAngleDegrees = options.minAngleDegrees;
+      Cage shrunk = generated.cage;
+      shrinkTowardMesh(shrunk, vertices, triangles, shrink,
+                       [&](double done) { return progress(kShrinkFrom + (1 - kShrinkFrom) * done); });
+      // Every move was proven safe; the exact check still has the last word.
+      if (provenCage(shrunk, vertices, triangles, options)) generated.cage = std::move(shrunk);
+      // On box-like shapes the bounding box, tightened the same way, fits better than any offset surface.
+      Cage box = boundingBoxCage(lower, upper, shrink.clearance);
+      shrinkTowardMesh(box, vertices, triangles, shrink);
+      if (minimumAngleDegrees(box) >= options.minAngleDegrees && provenCage(box, vertices, triangles, options) &&
+          hausdorffCageToMesh(box, vertices, triangles) < hausdorffCageToMesh(generated.cage, vertices, triangles))
+        generated.cage = std::move(box);
       generated.repairRounds = tried.repairRounds;
       generated.minAngleDegrees = minimumAngleDegrees(generated.cage);
+      generated.tightness = measureTightness(generated.cage, vertices, triangles);
       progress(1.0);
       return generated;
     }

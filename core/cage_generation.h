@@ -9,6 +9,8 @@
 //   3. cage_enclosure.h: the exact check. Where it fails, the vertices of the faces concerned are pushed outward
 //      along their normals and the check repeated; a self-intersection or a budget that could not be met restarts
 //      from 1 with a larger margin. After a bounded number of tries, an InputError says what to change.
+//   4. cage_shrink.h: vertices move toward the mesh and convex edges flip where exact tests prove the enclosure is
+//      kept (an inward flow in the spirit of Nested Cages); the exact check of 3 then has the last word.
 // Any mesh: open, several components, non-manifold, with thin parts or handles (a handle may be filled).
 #pragma once
 
@@ -16,6 +18,7 @@
 #include <string>
 
 #include "cage.h"
+#include "cage_enclosure.h"
 #include "progress.h"
 
 namespace somicage {
@@ -35,6 +38,7 @@ struct GeneratedCage {
   double minAngleDegrees = 0.0;  // smallest triangle angle of the cage
   int attempts = 0;              // offset surfaces made (1 unless a try was rejected)
   int repairRounds = 0;          // rounds of pushing vertices outward after the exact check
+  CageTightness tightness;       // how closely the cage fits the mesh (cage_enclosure.h)
 };
 
 // vertices #V by 3, triangles #T by 3 (any mesh; see triangulatePolygons in obj_io.h for polygons). source names the

@@ -19,12 +19,15 @@
 #include <cmath>
 #include <vector>
 
+#include "cage_geometry.h"
 #include "errors.h"
 
 namespace somicage {
 
 namespace {
 
+using cage_geometry::minAngle;
+using cage_geometry::trianglesCross;
 namespace SMS = CGAL::Surface_mesh_simplification;
 namespace PMP = CGAL::Polygon_mesh_processing;
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -34,9 +37,8 @@ using Face = Mesh::Face_index;
 using Vertex = Mesh::Vertex_index;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
 using Profile = SMS::Edge_profile<Mesh>;
-using Triangles = std::vector<Kernel::Triangle_3>;
-using SoupTree =
-    CGAL::AABB_tree<CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>>>;
+using cage_geometry::SoupTree;
+using cage_geometry::Triangles;
 
 // A closed oriented polygon soup as a halfedge mesh; vertices where marching cubes made a pinch are duplicated.
 Mesh toMesh(const Cage& cage) {
@@ -70,39 +72,6 @@ Cage toCage(const Mesh& mesh) {
     ++j;
   }
   return cage;
-}
-
-double minAngle(const Point& a, const Point& b, const Point& c) {
-  const auto angle = [](const Point& o, const Point& p, const Point& q) {
-    const Kernel::Vector_3 u = p - o, v = q - o;
-    return std::atan2(std::sqrt(CGAL::cross_product(u, v).squared_length()), u * v);
-  };
-  return std::min({angle(a, b, c), angle(b, c, a), angle(c, a, b)});
-}
-
-// Whether two triangles meet other than at the corners they share: triangles that share corners cross only when an
-// edge of one pierces the other away from them, or (sharing an edge) when they are folded flat onto each other.
-bool trianglesCross(const Kernel::Triangle_3& t, const std::array<Point, 3>& q) {
-  int shared = 0, sharedAt[3] = {-1, -1, -1};
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (t[i] == q[j]) sharedAt[i] = j, ++shared;
-  const Kernel::Triangle_3 u(q[0], q[1], q[2]);
-  if (shared == 0) return CGAL::do_intersect(t, u);
-  if (shared == 3) return true;  // the same triangle twice
-  if (shared == 2) {             // edge neighbours overlap only when folded flat onto each other
-    int o = 0, r = 0;
-    while (sharedAt[r] >= 0) ++r;                                          // t's corner off the shared edge
-    while (o == sharedAt[0] || o == sharedAt[1] || o == sharedAt[2]) ++o;  // u's
-    const int s0 = (r + 1) % 3, s1 = (r + 2) % 3;
-    return CGAL::orientation(t[0], t[1], t[2], q[o]) == CGAL::COPLANAR &&
-           CGAL::coplanar_orientation(t[s0], t[s1], t[r], q[o]) == CGAL::POSITIVE;
-  }
-  int i = 0;
-  while (sharedAt[i] < 0) ++i;
-  const int j = sharedAt[i];
-  return CGAL::do_intersect(Kernel::Segment_3(t[(i + 1) % 3], t[(i + 2) % 3]), u) ||
-         CGAL::do_intersect(Kernel::Segment_3(q[(j + 1) % 3], q[(j + 2) % 3]), t);
 }
 
 // The current triangles of the surface in a uniform grid of cells over its bounding box. A triangle is (re)entered
@@ -273,12 +242,7 @@ SimplificationResult simplifyOutsideBarrier(const Cage& surface, const Cage& bar
   const Mesh barrierMesh = toMesh(barrier);
   Tree barrierTree(faces(barrierMesh).first, faces(barrierMesh).second, barrierMesh);
   barrierTree.accelerate_distance_queries();
-  Triangles meshSoup;
-  const auto corner = [&](int j, int k) {
-    const int i = meshTriangles(j, k);
-    return Point(meshVertices(i, 0), meshVertices(i, 1), meshVertices(i, 2));
-  };
-  for (int j = 0; j < meshTriangles.rows(); ++j) meshSoup.emplace_back(corner(j, 0), corner(j, 1), corner(j, 2));
+  const Triangles meshSoup = cage_geometry::triangleSoup(meshVertices, meshTriangles);
   const SoupTree meshTree(meshSoup.begin(), meshSoup.end());
   TriangleGrid grid(mesh, 32);
   const double minAngleRadians = options.minAngleDegrees * M_PI / 180.0;

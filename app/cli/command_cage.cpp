@@ -1,9 +1,7 @@
 // somicage cage: makes a cage for a mesh (core/cage_generation.h) and writes it as OBJ, with how tight it is.
-#include <cmath>
 #include <iostream>
 #include <sstream>
 
-#include "cage_enclosure.h"
 #include "cage_generation.h"
 #include "cage_validation.h"
 #include "cli/arg_parser.h"
@@ -11,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
+#include "cli/tightness_report.h"
 #include "errors.h"
 #include "obj_io.h"
 
@@ -71,7 +70,7 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
   const double seconds = secondsSince(start);
   saveObj(outPath, generated.cage.vertices, cageTopology(generated.cage));
 
-  const CageTightness tightness = measureTightness(generated.cage, mesh.vertices, triangles);
+  const CageTightness& tightness = generated.tightness;
   const bool valid = validateCage(generated.cage).valid();
   if (args.has("--json")) {
     JsonObjectWriter json(std::cout);
@@ -82,8 +81,7 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
     json.field("max_faces", options.maxFaces);
     json.field("margin", generated.margin);
     json.field("min_angle_deg", generated.minAngleDegrees);
-    json.field("hausdorff_diagonals", tightness.hausdorff);
-    json.field("volume_ratio", tightness.volumeRatio);  // null for an open mesh
+    writeTightness(json, tightness);
     json.field("attempts", generated.attempts);
     json.field("repair_rounds", generated.repairRounds);
     json.field("seconds", seconds);
@@ -94,9 +92,7 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
     out << "cage   " << outPath << ": " << generated.cage.numVertices() << " vertices, " << generated.cage.numFaces()
         << " triangles (at most " << options.maxFaces << "), smallest angle "
         << formatNumber(generated.minAngleDegrees, 3) << " deg\n"
-        << "fit    margin " << formatNumber(generated.margin, 3) << " diagonals, Hausdorff cage -> mesh "
-        << formatNumber(tightness.hausdorff, 3) << " diagonals, volume cage / mesh "
-        << (std::isnan(tightness.volumeRatio) ? std::string("- (open mesh)") : formatNumber(tightness.volumeRatio, 3))
+        << "fit    margin " << formatNumber(generated.margin, 3) << " diagonals, " << describeTightness(tightness)
         << "\n"
         << "result " << (valid ? "valid" : "NOT VALID") << ", encloses every vertex and edge of " << meshPath << " ("
         << formatSeconds(seconds) << ")\n";

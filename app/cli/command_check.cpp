@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "cage_enclosure.h"
 #include "cage_repair.h"
 #include "cage_validation.h"
 #include "cli/arg_parser.h"
@@ -12,6 +13,7 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
+#include "cli/tightness_report.h"
 #include "deformer.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
@@ -99,6 +101,12 @@ std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, 
   return errors;
 }
 
+// How tightly the cage fits the mesh (3D, a mesh with faces).
+struct Fit {
+  bool computed = false;
+  CageTightness tightness;
+};
+
 // What the other commands make of the cage: the repairs they apply, whether it is usable then, and the warnings.
 struct RepairOutcome {
   std::vector<std::string> fixes, warnings;
@@ -108,7 +116,7 @@ struct RepairOutcome {
 
 void writeJson(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
                const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
-               const std::vector<std::pair<std::string, double>>& reproduction) {
+               const std::vector<std::pair<std::string, double>>& reproduction, const Fit& fit) {
   JsonObjectWriter json(std::cout);
   json.field("cage", cagePath);
   if (meshPath.empty()) {
@@ -165,12 +173,19 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
     json.null("precompute_s");
     json.null("reproduction_error");
   }
+  if (fit.computed) {
+    writeTightness(json, fit.tightness);
+  } else {
+    json.null("hausdorff_diagonals");  // no mesh with faces, or a 2D cage
+    json.null("volume_ratio");
+    json.null("mesh_closed");
+  }
   json.close();
 }
 
 void writeReport(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
                  const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
-                 const std::vector<std::pair<std::string, double>>& reproduction) {
+                 const std::vector<std::pair<std::string, double>>& reproduction, const Fit& fit) {
   const auto yesNo = [](bool value) { return value ? "yes" : "NO"; };
   std::ostringstream out;
   out << "cage   " << cagePath << ": " << report.dim << "D, " << report.numVertices << " vertices, " << report.numFaces
@@ -200,6 +215,7 @@ void writeReport(const std::string& cagePath, const std::string& meshPath, const
     } else {
       out << "; partition of unity not computed: fix the cage first\n";
     }
+    if (fit.computed) out << "fit    " << describeTightness(fit.tightness) << "\n";
   }
   if (!problems.empty()) {
     out << "problems (indices are 0-based):\n";
@@ -272,10 +288,15 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
     unity = checkPartitionOfUnity(repaired.cage, points, threads, winding);
     reproduction = checkReproduction(repaired.cage, points, winding, threads);
   }
+  Fit fit;
+  if (unity.computed && cage.dim() == 3 && !mesh.faces.empty()) {
+    fit.tightness = measureTightness(repaired.cage, mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces));
+    fit.computed = true;
+  }
   if (args.has("--json")) {
-    writeJson(cagePath, meshPath, report, problems, repair, unity, reproduction);
+    writeJson(cagePath, meshPath, report, problems, repair, unity, reproduction, fit);
   } else {
-    writeReport(cagePath, meshPath, report, problems, repair, unity, reproduction);
+    writeReport(cagePath, meshPath, report, problems, repair, unity, reproduction, fit);
   }
   return report.valid() ? kExitOk : kExitFailure;
 }

@@ -243,10 +243,33 @@ const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
 // ---- edits ----
 
 Document currentDocument(const AppState& state) {
-  return {state.pose, state.method, state.params, state.animation.poses, state.animation.timeline};
+  return {state.pose,
+          state.method,
+          state.params,
+          state.animation.poses,
+          state.animation.timeline,
+          state.scene ? state.scene->restCage : Cage{}};
+}
+
+void replaceRestCage(AppState& state, const Cage& cage) {
+  if (!state.scene) return;
+  auto scene = std::make_shared<Scene>(*state.scene);
+  scene->restCage = cage;
+  scene->cagePath.clear();  // the cage is no longer the file's
+  state.scene = std::move(scene);
+  ++state.sceneGeneration;
+  state.deformers.clear();
+  state.deformed.clear();
+  state.cpuStale.clear();
+  state.selection.resize(cage.numVertices());
+  state.interaction = Interaction{};
+  setPose(state, cage.vertices);
+  ensureDeformers(state);
 }
 
 void applyDocument(AppState& state, const Document& document) {
+  if (state.scene && document.restCage.numVertices() > 0 && !sameCage(document.restCage, state.scene->restCage))
+    replaceRestCage(state, document.restCage);
   if (document.pose.rows() == state.pose.rows() && document.pose.cols() == state.pose.cols())
     setPose(state, document.pose);
   setParams(state, document.params);

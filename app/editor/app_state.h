@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "cage_maker.h"
 #include "camera.h"
 #include "deformer.h"
 #include "document.h"
@@ -100,6 +101,7 @@ struct AppState {
 
   // ---- background work ----
   PrecomputeWorker worker;
+  CageMaker cageMaker;                         // File > Make cage... (its dialog and the preview)
   bool loadingScene = false;                   // the running request replaces the scene
   std::optional<Eigen::MatrixXd> pendingPose;  // applied when the loading scene arrives
   std::optional<CameraState> pendingCamera;
@@ -184,6 +186,8 @@ bool hasDeformer(const AppState& state, Method method);
 // commit once, when they end.
 Document currentDocument(const AppState& state);
 void applyDocument(AppState& state, const Document& document);  // restores exactly; no history
+// Makes `cage` the scene's rest cage, at rest, and precomputes its deformers (no history; Make cage commits).
+void replaceRestCage(AppState& state, const Cage& cage);
 bool commitEdit(AppState& state, const std::string& name);
 void setPose(AppState& state, const Eigen::MatrixXd& pose);   // no history; marks dirty
 void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty

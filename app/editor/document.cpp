@@ -28,11 +28,17 @@ bool sameTimeline(const Timeline& a, const Timeline& b) {
 
 }  // namespace
 
+bool sameCage(const Cage& a, const Cage& b) {
+  return a.vertices.rows() == b.vertices.rows() && a.vertices.cols() == b.vertices.cols() && a.vertices == b.vertices &&
+         a.faces.rows() == b.faces.rows() && a.faces.cols() == b.faces.cols() && a.faces == b.faces;
+}
+
 bool operator==(const Document& a, const Document& b) {
   const DeformParams &p = a.params, &q = b.params;
   return a.method == b.method && a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose &&
          p.nu == q.nu && p.gamma == q.gamma && p.blend == q.blend && p.tractionCorrection == q.tractionCorrection &&
-         p.corotational == q.corotational && samePoses(a.poses, b.poses) && sameTimeline(a.timeline, b.timeline);
+         p.corotational == q.corotational && samePoses(a.poses, b.poses) && sameTimeline(a.timeline, b.timeline) &&
+         sameCage(a.restCage, b.restCage);
 }
 
 }  // namespace somicage::editor

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 
+#include "cage.h"
 #include "deformer.h"
 #include "pose_timeline.h"
 
@@ -20,10 +21,12 @@ struct Document {
   DeformParams params;
   PoseLibrary poses;  // the pose library and the timeline (pose_keys.h)
   Timeline timeline;
+  Cage restCage;  // the scene's rest cage: File > Make cage replaces it (cage_maker.h); empty: not recorded
 };
 
 // Exact comparison (bitwise for the numbers: undo must restore exactly, and "no change" must be no step).
 bool operator==(const Document& a, const Document& b);
 inline bool operator!=(const Document& a, const Document& b) { return !(a == b); }
+bool sameCage(const Cage& a, const Cage& b);  // bitwise
 
 }  // namespace somicage::editor

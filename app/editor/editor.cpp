@@ -17,6 +17,7 @@
 
 #include "app_state.h"
 #include "autosave.h"
+#include "cage_maker_panel.h"
 #include "editor_options.h"
 #include "editor_renderer.h"
 #include "errors.h"
@@ -176,6 +177,7 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
   feedInput(window, queue);
   pollWorker(state);
+  state.cageMaker.poll();
   if (!state.droppedPaths.empty()) {
     std::vector<std::string> dropped;
     dropped.swap(state.droppedPaths);
@@ -206,6 +208,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
       drawPoseLibraryPanel(state, top);
     }
     drawAnimationExportDialogs(state);
+    drawCageMakerDialog(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
@@ -379,6 +382,17 @@ int runWindow(const EditorOptions& options) {
         for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
         rc = 2;
       } else {
+        if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
+          openCageMaker(state, options.makeCageFaces);
+          state.cageMaker.wait();
+          if (const auto& candidate = state.cageMaker.candidate()) {
+            const GeneratedCage& g = candidate->generated;
+            std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
+                        g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
+          } else {
+            state.errors.push_back("make cage: " + state.cageMaker.error());
+          }
+        }
         // A few frames let ImGui settle its layout before the capture.
         for (int i = 0; i < 4; ++i) {
           if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
@@ -405,6 +419,7 @@ int runWindow(const EditorOptions& options) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
         demand.busy = state.worker.busy() || state.loadingScene || state.animation.playing ||
+                      state.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);

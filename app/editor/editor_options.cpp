@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "cage_generation.h"
 #include "errors.h"
 #include "session.h"  // kMaxCompareViews
 #include "view_quantity.h"
@@ -103,6 +104,12 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.nuPlot = true;
     } else if (a == "--hide-cage") {
       o.hideCage = true;
+    } else if (a == "--make-cage") {
+      const std::string& v = value();
+      const double faces = parseNumber(v, a);
+      if (!(faces >= CageGenerationOptions::kMinFaces && faces <= 2000 && faces == std::floor(faces)))
+        throw InputError(a, -1, "expected a face count in [12, 2000], got '" + v + "'", "--make-cage 200");
+      o.makeCageFaces = static_cast<int>(faces);
     } else if (a == "--show") {
       o.show = quantityIndex(value(), a);
     } else if (a == "--flat") {
@@ -164,6 +171,7 @@ std::string editorUsage() {
          "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
          "                            change against nu (in the window: the Sweep nu button)\n"
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
+         "  --make-cage N             with --screenshot: File > Make cage... with N faces, shown once generated\n"
          "  --show detj|distortion|foldover|area\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"

@@ -31,6 +31,7 @@ struct EditorOptions {
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
+  int makeCageFaces = 0;                      // --make-cage N: open File > Make cage with N faces (screenshots)
   int show = 0;                               // --show detj|distortion|foldover (view_quantity.h)
   bool help = false;                          // -h / --help
 };

@@ -108,6 +108,14 @@ void Renderer::sync(AppState& state) {
     cage_.setSelection(state.selection.flags());
     cagePose_ = state.poseGeneration;
   }
+  const CageMaker& maker = state.cageMaker;
+  if (previewGeneration_ != maker.candidateGeneration()) {
+    previewGeneration_ = maker.candidateGeneration();
+    if (maker.candidate()) {
+      preview_.setTopology(maker.candidate()->generated.cage.faces);
+      preview_.setPositions(maker.candidate()->generated.cage.vertices);
+    }
+  }
 }
 
 void Renderer::syncScalars(const AppState& state) {
@@ -142,6 +150,10 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
   meshStyle.flat = state.flatShading;
   render::CageStyle cageStyle;
   if (state.dim() == 2) cageStyle.edgeColor = Eigen::Vector4f(0.25f, 0.45f, 0.95f, 1.0f);
+  render::CageStyle previewStyle;  // Make cage's candidate: green, no handles (it cannot be edited yet)
+  previewStyle.faceColor = Eigen::Vector4f(0.20f, 0.85f, 0.35f, 0.10f);
+  previewStyle.edgeColor = Eigen::Vector4f(0.10f, 0.80f, 0.25f, 1.0f);
+  previewStyle.showHandles = false;
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
     const ViewRect& r = views[v];
     render::ViewportRect rect;
@@ -154,7 +166,11 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
     meshStyle.colorMap = state.show > 0 ? meshes_[v].colorMap : -1;
     if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);
-    if (state.showCage) cage_.draw(matrices, cageStyle);
+    if (state.cageMaker.isOpen() && state.cageMaker.candidate()) {
+      preview_.draw(matrices, previewStyle);  // in place of the scene's cage
+    } else if (state.showCage) {
+      cage_.draw(matrices, cageStyle);
+    }
   }
   render::endViewports(framebufferWidth, framebufferHeight);
 }

@@ -51,6 +51,8 @@ class Renderer {
   std::vector<MeshSlot> meshes_;
   render::CageRenderer cage_;
   std::uint64_t cageScene_ = ~0ull, cagePose_ = ~0ull;
+  render::CageRenderer preview_;  // File > Make cage's candidate (cage_maker.h)
+  std::uint64_t previewGeneration_ = ~0ull;
 };
 
 }  // namespace somicage::editor

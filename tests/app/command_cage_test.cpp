@@ -19,6 +19,8 @@ TEST(CliCage, WritesACageThatCheckFindsValidWithNoPointOutside) {
   EXPECT_TRUE(report["valid"].boolean);
   EXPECT_GT(report["min_angle_deg"].number, 1.0);
   EXPECT_GT(report["hausdorff_diagonals"].number, 0.0);
+  EXPECT_TRUE(report["mesh_closed"].boolean);
+  EXPECT_GT(report["volume_ratio"].number, 1.0);  // the cage holds the closed mesh
   EXPECT_EQ(loadCage(out).numFaces(), int(report["faces"].number));
 
   const RunResult checked = runSomicage({"check", "--cage", out, "--mesh", dataFile("pyramid_mesh.obj"), "--json"});

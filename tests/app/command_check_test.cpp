@@ -175,5 +175,31 @@ TEST(CliCheck, WithoutMesh) {
   EXPECT_EQ(json["mesh"].type, Json::Type::Null);
 }
 
+// The fit of a cage around a mesh, for a case with a closed form: the cube [-1, 1]^3 around [-0.5, 0.5]^3 has 8 times
+// its volume, and its corners are sqrt(3) / 2 from the inner cube, half the inner cube's diagonal.
+TEST(CliCheck, ReportsTheFitOfTheCageAroundTheMesh) {
+  ScratchDir dir;
+  Cage inner = loadCage(dataFile("cube_cage.obj"));
+  inner.vertices *= 0.5;
+  const std::string mesh = dir.file("half_cube.obj");
+  saveObj(mesh, inner.vertices, cageTopology(inner));
+  const Json json = checkJson({"--cage", dataFile("cube_cage.obj"), "--mesh", mesh}, 0);
+  EXPECT_NEAR(json["volume_ratio"].number, 8.0, 1e-9);
+  EXPECT_NEAR(json["hausdorff_diagonals"].number, 0.5, 1e-9);
+  EXPECT_TRUE(json["mesh_closed"].boolean);
+
+  Cage open = inner;
+  open.faces.conservativeResize(10, 3);  // an open box: no volume to compare with
+  saveObj(mesh, open.vertices, cageTopology(open));
+  const Json openJson = checkJson({"--cage", dataFile("cube_cage.obj"), "--mesh", mesh}, 0);
+  EXPECT_EQ(openJson["volume_ratio"].type, Json::Type::Null);
+  EXPECT_FALSE(openJson["mesh_closed"].boolean);
+  EXPECT_NEAR(openJson["hausdorff_diagonals"].number, 0.5, 1e-9);
+  const RunResult readable = runSomicage({"check", "--cage", dataFile("cube_cage.obj"), "--mesh", mesh});
+  EXPECT_NE(readable.out.find("Hausdorff cage -> mesh 0.5 diagonals, volume cage / mesh - (open mesh)"),
+            std::string::npos)
+      << readable;
+}
+
 }  // namespace
 }  // namespace somicage

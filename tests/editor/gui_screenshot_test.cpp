@@ -5,6 +5,7 @@
 // differences do not matter; gui_golden_screenshot_test.cpp compares whole pictures with references.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -237,4 +238,45 @@ TEST(GuiScreenshot, DetJLegendRangeIsWhatAnalyzeReports) {
   const double m = std::max(mx, 1 / mn);
   EXPECT_NEAR(hi, m, 1e-6 * m) << json;
   EXPECT_NEAR(lo, 1 / m, 1e-6) << json;
+}
+
+// File > Make cage... (--make-cage N): the candidate is drawn in green over the mesh in place of the scene's cage, and
+// the green outline contains the mesh in the picture (the cage encloses it).
+TEST(GuiScreenshot, MakeCageShowsTheCandidateAroundTheMesh) {
+  REQUIRE_DISPLAY();
+  const auto isPreview = [](const Image& img, int x, int y) {
+    const unsigned char* p = &img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4];
+    return p[1] > p[0] + 60 && p[1] > p[2] + 60;
+  };
+  struct Box {
+    int x0 = 1 << 30, y0 = 1 << 30, x1 = -1, y1 = -1;
+    long count = 0;
+    void add(int x, int y) {
+      x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y), ++count;
+    }
+  };
+  const Image plain = screenshot("--hide-ui --size 800x600", "make_cage_none");
+  const Image made = screenshot("--hide-ui --size 800x600 --make-cage 40", "make_cage_40");
+  ASSERT_GT(made.width, 0);
+  Box green, mesh, plainGreen;
+  for (int y = 0; y < made.height; ++y)
+    for (int x = 0; x < made.width; ++x) {
+      if (isPreview(made, x, y)) green.add(x, y);
+      if (made.isMesh(x, y)) mesh.add(x, y);
+      if (isPreview(plain, x, y)) plainGreen.add(x, y);
+    }
+  EXPECT_EQ(plainGreen.count, 0) << "nothing is green without the dialog";
+  EXPECT_GT(green.count, 500) << "the candidate's edges";
+  EXPECT_GT(mesh.count, 5000);
+  EXPECT_LE(green.x0, mesh.x0);
+  EXPECT_LE(green.y0, mesh.y0);
+  EXPECT_GE(green.x1, mesh.x1);
+  EXPECT_GE(green.y1, mesh.y1);
+  const std::string log = readLog("make_cage_40");
+  int faces = 0;
+  const std::size_t at = log.find("make-cage: ");
+  ASSERT_NE(at, std::string::npos) << log;
+  ASSERT_EQ(std::sscanf(log.c_str() + at, "make-cage: %d faces", &faces), 1) << log;
+  EXPECT_GE(faces, 12);
+  EXPECT_LE(faces, 40);
 }
