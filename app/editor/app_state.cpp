@@ -69,6 +69,7 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
   PrecomputeRequest request;
   request.scene = std::move(scene);
   request.methods = state.viewMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -79,6 +80,7 @@ void requestSceneFiles(AppState& state, const std::string& meshPath, const std::
   PrecomputeRequest request;
   request.loadScene = [meshPath, cagePath]() { return loadScene(meshPath, cagePath); };
   request.methods = state.viewMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
   state.loadingScene = true;
   state.pendingPosedPath = posedPath;
   state.pendingRecent = RecentEntry::files(meshPath, cagePath, posedPath);
@@ -99,6 +101,7 @@ void ensureDeformers(AppState& state) {
   PrecomputeRequest request;
   request.scene = state.scene;
   request.methods = missing;
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.viewMethods().size());
   state.worker.start(std::move(request));
 }
 
@@ -146,7 +149,8 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
-        state.pose = posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
+        state.pose =
+            posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
         posedLoaded = true;
       } catch (const std::exception& e) {
         state.errors.push_back(e.what());

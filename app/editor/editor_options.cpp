@@ -103,7 +103,7 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
     } else if (a == "--hide-cage") {
       o.hideCage = true;
     } else if (a == "--show") {
-      o.show = quantityIndex(value(), a);
+      o.show = parseShow(value(), a, o.showFieldVertex);
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -161,10 +161,13 @@ std::string editorUsage() {
          "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
          "                            change against nu (in the window: the Sweep nu button)\n"
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
-         "  --show detj|distortion|foldover|area\n"
+         "  --show detj|distortion|foldover|area|difference|field:VERTEX[,...]\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
-         "                            magenta) or the triangles' area ratio (per vertex: geometric mean, log scale)\n"
+         "                            magenta), the triangles' area ratio (per vertex: geometric mean, log scale),\n"
+         "                            the distance to the next view (cage diameters) or the coordinate field of\n"
+         "                            cage vertex VERTEX (|T_i n_i|, Somigliana); a comma list gives each view its "
+         "own\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"

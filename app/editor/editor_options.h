@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "deformer.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -31,7 +32,8 @@ struct EditorOptions {
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
-  int show = 0;                               // --show detj|distortion|foldover (view_quantity.h)
+  ShowSettings show;                          // --show detj|...|field:VERTEX, per view (view_quantity.h)
+  int showFieldVertex = -1;                   // --show field:VERTEX: the cage vertex selected for the field
   bool help = false;                          // -h / --help
 };
 
