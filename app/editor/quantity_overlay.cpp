@@ -50,8 +50,8 @@ void computeDifferences(AppState& state) {
     ensureCpuPoints(state, methods[static_cast<std::size_t>(w)]);
     ViewMeasurement m;
     m.values =
-        differenceInDiameters(displayedPoints(state, methods[v]),
-                              displayedPoints(state, methods[static_cast<std::size_t>(w)]), cageDiameter(*state.scene));
+        pointDifference(displayedPoints(state, methods[v]),
+                        displayedPoints(state, methods[static_cast<std::size_t>(w)]), cageDiameter(*state.scene));
     state.quantities.measured[v] = std::move(m);
   }
   state.quantities.differenceGeneration = state.deformGeneration;

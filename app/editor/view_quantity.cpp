@@ -77,10 +77,6 @@ ViewMeasurement jacobianMeasurement(const DeformationAnalysis& a, const Eigen::M
   return out;
 }
 
-Eigen::VectorXd differenceInDiameters(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double diameter) {
-  return (a - b).rowwise().norm() / diameter;
-}
-
 ColorRange sharedRange(const std::vector<const ViewMeasurement*>& views, const QuantityDescriptor& quantity) {
   const bool log = quantity.scale == ColorScale::LogDiverging;
   double hi = log ? 1.0 : quantity.autoLow;

@@ -57,8 +57,6 @@ struct ViewMeasurement {
 // The measured quantities of a pose at `quantity` (a Jacobian descriptor) from its analysis.
 ViewMeasurement jacobianMeasurement(const DeformationAnalysis& analysis, const Eigen::MatrixXi& triangles,
                                     int quantity);
-// Per point, |a_p - b_p| / diameter (#P); a and b are #P by d.
-Eigen::VectorXd differenceInDiameters(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, double diameter);
 
 // The colour range of a quantity. LogDiverging: lo < 1 < hi, 1 at the centre of the map, log scale on each side;
 // Viridis: linear from lo to hi.
