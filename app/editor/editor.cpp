@@ -56,6 +56,8 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
   state.quantities.show = o.show;
+  for (const ViewShow& view : o.show.views)
+    if (o.range && view.quantity > 0) state.quantities.show.ranges[view.quantity] = RangeSetting{true, *o.range};
   state.showCage = !o.hideCage;
 }
 

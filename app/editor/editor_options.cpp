@@ -104,6 +104,11 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.hideCage = true;
     } else if (a == "--show") {
       o.show = parseShow(value(), a, o.showFieldVertex);
+    } else if (a == "--range") {
+      const std::string& v = value();
+      const std::size_t colon = v.find(':');
+      if (colon == std::string::npos) throw InputError(a, -1, "expected MIN:MAX, got '" + v + "'", "--range 0.5:2");
+      o.range = ColorRange{parseNumber(v.substr(0, colon), a), parseNumber(v.substr(colon + 1), a)};
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -133,6 +138,13 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
     } catch (const InputError& e) {
       throw InputError("--nu", -1, e.problem(), e.hint());
     }
+  }
+  for (const ViewShow& view : o.show.views) {  // the typed range must suit every shown quantity's scale
+    const QuantityDescriptor& d = quantityDescriptor(view.quantity);
+    const std::string problem = o.range && view.quantity > 0 ? rangeProblem(*o.range, d.scale) : "";
+    if (!problem.empty())
+      throw InputError("--range", -1, std::string(problem) + " (for " + d.id + ")",
+                       "e.g. --range 0.5:2 for det J, --range 0:0.05 for a difference");
   }
   if (o.gamma && (!(*o.gamma >= 0) || std::isinf(*o.gamma)))
     throw InputError("--gamma", -1, "must be finite and >= 0", "e.g. --gamma 1");
@@ -165,9 +177,11 @@ std::string editorUsage() {
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
          "                            magenta), the triangles' area ratio (per vertex: geometric mean, log scale),\n"
-         "                            the distance to the next view (cage diameters) or the coordinate field of\n"
-         "                            cage vertex VERTEX (|T_i n_i|, Somigliana); a comma list gives each view its "
-         "own\n"
+         "                            the distance to another view (cage diameters) or the coordinate field\n"
+         "                            of cage vertex VERTEX (|T_i n_i|, Somigliana views); a comma list gives\n"
+         "                            each view its own, e.g. detj,detj,difference\n"
+         "  --range MIN:MAX           a fixed colour range for the shown quantities (default: automatic, shared\n"
+         "                            by the views); a ratio's range must have MIN < 1 < MAX\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"

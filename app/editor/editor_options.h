@@ -33,6 +33,7 @@ struct EditorOptions {
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
   ShowSettings show;                          // --show detj|...|field:VERTEX, per view (view_quantity.h)
+  std::optional<ColorRange> range;            // --range MIN:MAX: a fixed range for the shown quantities
   int showFieldVertex = -1;                   // --show field:VERTEX: the cage vertex selected for the field
   bool help = false;                          // -h / --help
 };

@@ -162,6 +162,7 @@ ImU32 toImColor(const Eigen::Vector3f& c) {
 }
 
 const ImU32 kText = IM_COL32(235, 235, 240, 255);
+const char* const kUndefinedNote = "grey: undefined (outside the cage)";
 
 int colorMapRow(const QuantityDescriptor& d) {
   return d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
@@ -175,9 +176,11 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const bool log = d.scale == ColorScale::LogDiverging;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float w = 220, h = 14;
-  const float x0 = static_cast<float>(view.x + view.width) - w - 24, y0 = static_cast<float>(view.y + view.height) - 58;
   const std::string title = std::string(d.name) + (log ? "  (log scale)" : "") + (isFixed ? "  fixed" : "");
-  const float boxW = std::max(w, ImGui::CalcTextSize(title.c_str()).x);
+  const char* note = d.source == QuantitySource::Jacobian ? "    fold-over (det J <= 0)" : kUndefinedNote;
+  const float boxW = std::max({w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x});
+  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
+  const float y0 = static_cast<float>(view.y + view.height) - 58;
   draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + h + 36), IM_COL32(20, 20, 24, 190), 3.0f);
   draw->AddText(ImVec2(x0, y0 - 20), kText, title.c_str());
   const int steps = 64;
@@ -197,7 +200,7 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
     draw->AddRectFilled(ImVec2(x0, y0 + h + 20), ImVec2(x0 + 12, y0 + h + 32), toImColor(render::kFoldoverColor));
     draw->AddText(ImVec2(x0 + 18, y0 + h + 19), kText, "fold-over (det J <= 0)");
   } else {
-    draw->AddText(ImVec2(x0, y0 + h + 19), IM_COL32(170, 170, 180, 255), "grey: undefined (outside the cage)");
+    draw->AddText(ImVec2(x0, y0 + h + 19), IM_COL32(170, 170, 180, 255), kUndefinedNote);
   }
 }
 

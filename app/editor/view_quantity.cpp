@@ -46,8 +46,8 @@ const std::vector<QuantityDescriptor>& quantityDescriptors() {
       {"distortion", "conformal distortion", ColorScale::Viridis, S::Jacobian, 1, distortion},
       {"foldover", "fold-overs", ColorScale::LogDiverging, S::Jacobian, 1, foldovers},
       {"area", "area ratio", ColorScale::LogDiverging, S::Jacobian, 1, vertexAreaRatio},
-      {"difference", "difference to another view (cage diameters)", ColorScale::Viridis, S::Difference, 0, nullptr},
-      {"field", "coordinate field of the selected vertex / face", ColorScale::Viridis, S::Field, 0, nullptr},
+      {"difference", "difference (cage diameters)", ColorScale::Viridis, S::Difference, 0, nullptr},
+      {"field", "coordinate field |T n|", ColorScale::Viridis, S::Field, 0, nullptr},
   };
   return descriptors;
 }
