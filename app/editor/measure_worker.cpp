@@ -37,6 +37,18 @@ void requireGradientMemory(const MeasureRequest& request, const std::vector<cons
                 "show shading only, or fewer compare views");
 }
 
+// A regular grid over the cage's bounding box, `count` points along its longer side (the arrows of a 2D field).
+Eigen::MatrixXd arrowGrid(const Cage& cage, int count) {
+  const Eigen::RowVector2d lo = cage.vertices.colwise().minCoeff(), hi = cage.vertices.colwise().maxCoeff();
+  const double step = (hi - lo).maxCoeff() / count;
+  const int nx = static_cast<int>((hi.x() - lo.x()) / step), ny = static_cast<int>((hi.y() - lo.y()) / step);
+  Eigen::MatrixXd grid(static_cast<Eigen::Index>(nx) * ny, 2);
+  for (int i = 0; i < nx; ++i)
+    for (int j = 0; j < ny; ++j)
+      grid.row(static_cast<Eigen::Index>(i) * ny + j) << lo.x() + (i + 0.5) * step, lo.y() + (j + 0.5) * step;
+  return grid;
+}
+
 }  // namespace
 
 bool MeasureKey::operator==(const MeasureKey& o) const {
@@ -73,6 +85,7 @@ void MeasureWorker::release() {
   job_.wait();
   caches_->gradients.clear();
   caches_->field.reset();
+  caches_->gridField.reset();
   caches_->fieldScene = nullptr;
 }
 
@@ -145,6 +158,10 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
             IntegrationOptions options;
             caches.field =
                 integrateElementTerms(scene.restCage, scene.meshVertices, kind, index, options, context.span(0.0, 0.9));
+            if (scene.dim() == 2) {
+              caches.fieldGrid = arrowGrid(scene.restCage, 28);
+              caches.gridField = integrateElementTerms(scene.restCage, caches.fieldGrid, kind, index, options);
+            }
             caches.fieldScene = &scene;
           }
           const Eigen::MatrixXd field = elementCoordinateField(*caches.field, view.params.nu);
@@ -152,6 +169,18 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
           m.values = field.rowwise().norm();
           for (Eigen::Index p = 0; p < m.values.size(); ++p)  // Eq. 8 holds inside the cage only
             if (!(caches.field->winding[p] >= 0.5)) m.values[p] = std::numeric_limits<double>::quiet_NaN();
+          if (scene.dim() == 2) {  // the arrows: grid points inside the polygon
+            const Eigen::MatrixXd grid = elementCoordinateField(*caches.gridField, view.params.nu);
+            std::vector<Eigen::Index> inside;
+            for (Eigen::Index p = 0; p < grid.rows(); ++p)
+              if (caches.gridField->winding[p] >= 0.5 && grid.row(p).allFinite()) inside.push_back(p);
+            m.arrowPoints.resize(static_cast<Eigen::Index>(inside.size()), 2);
+            m.arrowVectors.resize(static_cast<Eigen::Index>(inside.size()), 2);
+            for (std::size_t k = 0; k < inside.size(); ++k) {
+              m.arrowPoints.row(static_cast<Eigen::Index>(k)) = caches.fieldGrid.row(inside[k]);
+              m.arrowVectors.row(static_cast<Eigen::Index>(k)) = grid.row(inside[k]);
+            }
+          }
           out.views[v] = std::move(m);
         }
       }

@@ -88,7 +88,8 @@ class MeasureWorker {
     };
     std::map<const CageDeformer*, Gradients> gradients;
     const Scene* fieldScene = nullptr;
-    std::optional<ElementTerms> field;
+    std::optional<ElementTerms> field, gridField;  // at the mesh vertices; 2D: at fieldGrid too
+    Eigen::MatrixXd fieldGrid;
   };
   static MeasureOutcome run(const MeasureRequest& request, Caches& caches, JobContext& context);
 

@@ -268,6 +268,41 @@ int hoveredVertex(const AppState& state, std::size_t v, const ViewRect& rect, co
   return best;
 }
 
+// A 2D field's arrows (paper Fig. 3) at their rest positions, coloured by magnitude in the view's range; the longest
+// spans about one grid step.
+void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect) {
+  const ViewMeasurement* m = state.quantities.measurement(v);
+  if (!m || m->arrowPoints.rows() < 2) return;
+  const int quantity = state.quantities.show.view(v).quantity;
+  const ColorRange range = shownRange(state, quantity);
+  const Eigen::Matrix4d mvp = state.camera.projectionMatrix(rect.width / rect.height) * state.camera.viewMatrix();
+  auto screen = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector4d c = mvp * Eigen::Vector4d(p.x(), p.y(), 0.0, 1.0);
+    return ImVec2(static_cast<float>(rect.x + (c.x() / c.w() + 1) * 0.5 * rect.width),
+                  static_cast<float>(rect.y + (1 - c.y() / c.w()) * 0.5 * rect.height));
+  };
+  const double step = (m->arrowPoints.row(1) - m->arrowPoints.row(0)).norm();
+  const double longest = m->arrowVectors.rowwise().norm().maxCoeff();
+  if (!(longest > 0)) return;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  for (Eigen::Index k = 0; k < m->arrowPoints.rows(); ++k) {
+    const Eigen::Vector2d p = m->arrowPoints.row(k).transpose(), f = m->arrowVectors.row(k).transpose();
+    const double magnitude = f.norm();
+    const ImU32 color = toImColor(render::colorMapColor(
+        render::kViridisMap, std::max(0.0f, colorCoordinate(magnitude, 1.0, range, ColorScale::Viridis))));
+    const ImVec2 a = screen(p - 0.45 * step * f / longest), b = screen(p + 0.45 * step * f / longest);
+    const float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    const float ux = len > 0 ? dx / len : 0, uy = len > 0 ? dy / len : 0, head = std::min(6.0f, 0.4f * len);
+    const ImVec2 left(b.x - head * (ux + 0.5f * uy), b.y - head * (uy - 0.5f * ux));
+    const ImVec2 right(b.x - head * (ux - 0.5f * uy), b.y - head * (uy + 0.5f * ux));
+    for (int pass = 0; pass < 2; ++pass) {  // a dark outline first, so the arrows read over a coloured mesh
+      const ImU32 c = pass == 0 ? IM_COL32(10, 10, 14, 220) : color;
+      draw->AddLine(a, b, c, pass == 0 ? 4.0f : 2.0f);
+      if (len >= 3) draw->AddTriangleFilled(left, right, b, c);
+    }
+  }
+}
+
 void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
   if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return;
   const ImVec2 mp = ImGui::GetIO().MousePos;
@@ -302,6 +337,7 @@ void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& vie
       drawBoxedText(draw, ImVec2(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8) + line + 2),
                     text);
   }
+  for (std::size_t v = 0; v < n; ++v) drawFieldArrows(state, v, views[v]);
   for (std::size_t v = 0; v < n; ++v) {  // one legend per quantity, in the last view showing it
     const int quantity = state.quantities.show.view(v).quantity;
     bool last = quantity > 0;

@@ -52,6 +52,8 @@ struct ViewMeasurement {
   double volumeChange = 0;   // deformed / rest - 1
   int foldovers = 0;         // vertices with det J <= 0
   double distortionP95 = 0;  // 95th percentile of sigma_max / sigma_min
+  // 2D field: the field on a grid over the inside of the polygon, drawn as arrows (paper Fig. 3). Rest positions.
+  Eigen::MatrixXd arrowPoints, arrowVectors;  // #A by 2 each
 };
 
 // The measured quantities of a pose at `quantity` (a Jacobian descriptor) from its analysis.

@@ -488,3 +488,19 @@ TEST(GuiScreenshot, FieldViewOfACageVertex) {
   EXPECT_EQ(runSomicage(quote(f.mesh) + " " + quote(f.cage) + " --show field:99 --screenshot x.png", "bad_field"), 2);
   EXPECT_NE(readLog("bad_field").find("the cage has 8 vertices"), std::string::npos) << readLog("bad_field");
 }
+
+// Paper Fig. 3 in 2D: the field of one polygon vertex as arrows over the inside at two nu, side by side (two
+// screenshots). The field changes with nu (Eq. 8a: alpha and beta), so the legends' tops differ.
+TEST(GuiScreenshot, FieldArrowsIn2DAtTwoNu) {
+  REQUIRE_DISPLAY();
+  double top[2] = {0, 0};
+  const char* nus[2] = {"-0.5", "0.45"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = std::string("field2d_") + (k ? "b" : "a");
+    const Image img = screenshot(std::string("--demo 2d --show field:2 --hide-ui --size 640x480 --nu ") + nus[k], name);
+    EXPECT_GT(img.width, 0);
+    top[k] = legendRange(readLog(name), "field").second;
+    EXPECT_GT(top[k], 0.01) << readLog(name);
+  }
+  EXPECT_GT(std::abs(top[1] - top[0]), 0.05 * top[0]);
+}
