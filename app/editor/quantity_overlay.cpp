@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <string>
 
 #include "mesh_renderer.h"
+#include "selection.h"
 
 namespace somicage::editor {
 
@@ -247,25 +247,11 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
   return "";
 }
 
-// The mesh vertex of view v nearest the mouse on screen (within 8 pixels; the nearest to the eye among those), -1
-// when none. The points are the view's deformed ones.
+// The mesh vertex of view v under the mouse (selection.h's pickPoint on the view's deformed points, 8 pixels), -1
+// when none.
 int hoveredVertex(const AppState& state, std::size_t v, const ViewRect& rect, const Eigen::Vector2d& mouse) {
   const Eigen::MatrixXd& points = displayedPoints(state, state.viewMethods()[v]);
-  const Eigen::Matrix4d m = state.camera.projectionMatrix(rect.width / rect.height) * state.camera.viewMatrix();
-  int best = -1;
-  double bestDepth = std::numeric_limits<double>::infinity();
-  for (Eigen::Index i = 0; i < points.rows(); ++i) {
-    Eigen::Vector4d p(points(i, 0), points(i, 1), points.cols() > 2 ? points(i, 2) : 0.0, 1.0);
-    const Eigen::Vector4d c = m * p;
-    if (c.w() <= 0) continue;
-    const Eigen::Vector3d ndc = c.head<3>() / c.w();
-    const Eigen::Vector2d s(rect.x + (ndc.x() + 1) * 0.5 * rect.width, rect.y + (1 - ndc.y()) * 0.5 * rect.height);
-    if ((s - mouse).squaredNorm() <= 64.0 && ndc.z() < bestDepth) {
-      bestDepth = ndc.z();
-      best = static_cast<int>(i);
-    }
-  }
-  return best;
+  return pickPoint(projectPoints(state.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
 }
 
 // A 2D field's arrows (paper Fig. 3) at their rest positions, coloured by magnitude in the view's range; the longest
