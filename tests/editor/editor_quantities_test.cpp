@@ -4,10 +4,14 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <thread>
 
 #include "app_state.h"
+#include "background_job.h"
 #include "coordinate_fields.h"
 #include "errors.h"
 #include "quantity_overlay.h"
@@ -242,4 +246,38 @@ TEST(EditorQuantities, GradientsThatWouldNotFitAreRefusedWithTheirSize) {
   EXPECT_NE(state.errors.front().find("free"), std::string::npos) << state.errors.front();
   EXPECT_EQ(state.quantities.show.view(0).quantity, 0);  // turned off
   EXPECT_EQ(state.quantities.measurement(0), nullptr);
+}
+
+// The worker pattern under the measurements: progress and stage are visible while a job runs, Cancel reaches it at
+// its next report, and a new start cancels the running job and drops its outcome.
+TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
+  BackgroundJob<std::string> job;
+  std::atomic<bool> running{false};
+  job.start([&](JobContext& context) {
+    context.setStage("spinning");
+    running = true;
+    while (context.report(0.25)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return std::string("stopped");
+  });
+  while (!running) std::this_thread::yield();
+  EXPECT_TRUE(job.busy());
+  EXPECT_EQ(job.stage(), "spinning");
+  EXPECT_FALSE(job.poll().has_value());  // nothing while it runs
+  job.cancel();
+  const std::optional<std::string> out = job.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_EQ(*out, "stopped");
+  EXPECT_EQ(job.progress(), 0.25);
+  EXPECT_FALSE(job.busy());
+
+  running = false;
+  job.start([&](JobContext& context) {
+    running = true;
+    while (context.report(0.5)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return std::string("superseded");
+  });
+  while (!running) std::this_thread::yield();
+  job.start([](JobContext&) { return std::string("second"); });
+  EXPECT_EQ(job.wait().value_or(""), "second");  // the first one's outcome never shows
+  EXPECT_FALSE(job.poll().has_value());
 }
