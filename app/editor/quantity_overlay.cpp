@@ -300,11 +300,12 @@ void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
     const int i = hoveredVertex(state, v, views[v], mouse);
     if (i < 0 || i >= m->values.size()) return;
     const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
-    char buf[160];
-    if (std::isfinite(m->values[i]))
-      std::snprintf(buf, sizeof buf, "%s %.6g\nvertex %d", d.name, m->values[i], i);
-    else
-      std::snprintf(buf, sizeof buf, "%s undefined\nvertex %d", d.name, i);
+    char buf[200];
+    int n = std::isfinite(m->values[i]) ? std::snprintf(buf, sizeof buf, "%s %.6g", d.name, m->values[i])
+                                        : std::snprintf(buf, sizeof buf, "%s undefined", d.name);
+    if (m->detJ.size() && std::string(d.id) != "detj" && n > 0)  // what the other J quantities come from
+      n += std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "  (det J %.4g)", m->detJ[i]);
+    if (n > 0) std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "\nvertex %d", i);
     drawBoxedText(ImGui::GetForegroundDrawList(), ImVec2(mp.x + 16, mp.y + 12), buf);
     return;
   }
@@ -330,7 +331,7 @@ void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& vie
     for (std::size_t w = v + 1; w < n && last; ++w) last = state.quantities.show.view(w).quantity != quantity;
     if (last) drawLegend(state, quantity, views[v]);
   }
-  if (!state.hideUi) drawHoverValue(state, views);
+  if (!state.hideUi && state.screenshotRequest.empty()) drawHoverValue(state, views);  // not in a capture
 }
 
 namespace {
