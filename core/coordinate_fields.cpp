@@ -1,6 +1,7 @@
 #include "coordinate_fields.h"
 
 #include <string>
+#include <vector>
 
 #include "boundary_conditions.h"
 #include "errors.h"
@@ -8,7 +9,7 @@
 namespace somicage {
 
 Eigen::MatrixXd vertexCoordinateField(const SomiglianaCoordinates& coords, const Cage& cage, int vertex, double nu) {
-  SOMICAGE_ASSERT(vertex >= 0 && vertex < coords.numVertices, "a cage vertex");
+  SOMICAGE_ASSERT(vertex >= 0 && vertex < coords.layout.numVertices, "a cage vertex");
   const Eigen::VectorXd n = vertexNormals(cage, cage.vertices).row(vertex).transpose();
   Eigen::MatrixXd field(coords.numPoints(), coords.dim);
   for (int p = 0; p < coords.numPoints(); ++p) field.row(p) = (coords.vertexCoordinate(p, vertex, nu) * n).transpose();
@@ -16,7 +17,7 @@ Eigen::MatrixXd vertexCoordinateField(const SomiglianaCoordinates& coords, const
 }
 
 Eigen::MatrixXd faceCoordinateField(const SomiglianaCoordinates& coords, int face, double nu) {
-  SOMICAGE_ASSERT(face >= 0 && face < coords.numFaces, "a cage face");
+  SOMICAGE_ASSERT(face >= 0 && face < coords.layout.numFaces, "a cage face");
   Eigen::MatrixXd field(coords.numPoints(), coords.dim);
   for (int p = 0; p < coords.numPoints(); ++p) field.row(p) = coords.faceCoordinateTimesNormal(p, face, nu).transpose();
   return field;
@@ -35,14 +36,16 @@ ElementTerms integrateElementTerms(const Cage& cage, const Eigen::MatrixXd& poin
   out.index = index;
   out.dim = d;
   const int count = vertex ? vertexTermCount(d) : faceTermCount(d);
-  const int offset =
-      vertex ? index * vertexTermCount(d) : cage.numVertices() * vertexTermCount(d) + index * faceTermCount(d);
+  const CoordinateLayout layout = somiglianaLayout(d, cage.numVertices(), cage.numFaces());  // the sink's rows
+  std::vector<int> columns(static_cast<std::size_t>(count));
+  for (int k = 0; k < count; ++k)
+    columns[static_cast<std::size_t>(k)] = vertex ? layout.vertexColumn(index, k) : layout.faceColumn(index, k);
   out.terms.resize(points.rows(), count);
   out.winding.resize(points.rows());
   out.normal = vertex ? vertexNormals(cage, cage.vertices).row(index).transpose()
                       : faceNormals(cage, cage.vertices).row(index).transpose();
   integrateSomiglianaCoordinates(cage, points, options, progress, [&](int p, const double* row, double winding) {
-    for (int k = 0; k < count; ++k) out.terms(p, k) = row[offset + k];  // each point once: no lock needed
+    for (int k = 0; k < count; ++k) out.terms(p, k) = row[columns[static_cast<std::size_t>(k)]];  // once per point
     out.winding[p] = winding;
   });
   return out;

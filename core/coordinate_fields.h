@@ -25,7 +25,7 @@ struct ElementTerms {
   Kind kind = Kind::Vertex;
   int index = 0;
   int dim = 3;
-  Eigen::MatrixXd terms;    // #P by the element's term count (SomiglianaCoordinates' layout)
+  Eigen::MatrixXd terms;    // #P by the element's term count, in term order (somigliana_coordinates.h)
   Eigen::VectorXd normal;   // n_i (vertexNormals) or n_j (the rest face normal), d
   Eigen::VectorXd winding;  // #P: generalised winding number (< 1/2 outside the cage)
 };

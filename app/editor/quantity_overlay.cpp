@@ -58,6 +58,13 @@ void computeDifferences(AppState& state) {
   ++state.quantities.generation;
 }
 
+// The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
+const std::shared_ptr<const CageDeformer>* nuSweepDeformer(const AppState& state) {
+  if (!state.scene || !readsParameter(state.method, kParamNu)) return nullptr;
+  const auto d = state.deformers.find(state.method);
+  return d == state.deformers.end() ? nullptr : &d->second;
+}
+
 void turnOff(AppState& state, const std::string& error) {
   state.errors.push_back(error);
   state.quantities.show.setAll(0);
@@ -81,7 +88,7 @@ MeasureRequest measureRequest(const AppState& state) {
     if (source == QuantitySource::Jacobian) {
       auto d = state.deformers.find(methods[v]);
       if (d != state.deformers.end()) view.deformer = d->second;
-    } else if (source == QuantitySource::Field && methods[v] == Method::Somigliana) {
+    } else if (source == QuantitySource::Field && readsParameter(methods[v], kParamNu)) {  // T_i(nu): Somigliana, BEM
       view.fieldVertex = vertex;
       view.fieldFace = face;
     }
@@ -120,10 +127,9 @@ void measureViews(AppState& state) {
   if (q.worker.busy()) return;
   if (q.sweepRequested) {
     q.sweepRequested = false;
-    auto somigliana = state.deformers.find(Method::Somigliana);
-    if (somigliana != state.deformers.end()) {
+    if (const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state)) {
       MeasureRequest sweep = request;
-      sweep.views.assign(1, MeasureView{somigliana->second, 0, state.params, -1, -1});
+      sweep.views.assign(1, MeasureView{*deformer, 0, state.params, -1, -1});
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
       q.worker.start(std::move(sweep));
@@ -229,14 +235,14 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
       if (w < 0) return "difference: needs the compare view";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
-                    methodDisplayName(state.viewMethods()[static_cast<std::size_t>(w)]), m->values.maxCoeff(),
+                    state.viewMethods()[static_cast<std::size_t>(w)]->displayName, m->values.maxCoeff(),
                     quantile(m->values, 0.5));
       return buf;
     }
     case QuantitySource::Field: {
       int vertex = -1, face = -1;
       selectedElement(state, vertex, face);
-      if (state.viewMethods()[v] != Method::Somigliana) return "field: Somigliana views only";
+      if (!readsParameter(state.viewMethods()[v], kParamNu)) return "field: views of a method with nu only";
       if (vertex < 0 && face < 0) return "field: select a cage vertex or face";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "field of cage %s %d at nu %.3g", vertex >= 0 ? "vertex" : "face",
@@ -382,16 +388,16 @@ void drawShowChoice(AppState& state) {
   const std::vector<Method> methods = state.viewMethods();
   for (std::size_t v = 0; v < methods.size(); ++v) {
     int quantity = show.view(v).quantity;
-    const std::string label = methods.size() > 1 ? methodDisplayName(methods[v]) : "show";
+    const std::string label = methods.size() > 1 ? std::string(methods[v]->displayName) : "show";
     ImGui::PushID(static_cast<int>(v));
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Mean value ").x);
     if (quantityCombo(label.c_str(), quantity)) show.setView(v, quantity, methods.size());
     if (quantityDescriptor(quantity).source == QuantitySource::Difference && methods.size() > 1) {
       int other = show.otherView(v, methods.size());
       ImGui::SetNextItemWidth(140);
-      if (ImGui::BeginCombo("to", methodDisplayName(methods[static_cast<std::size_t>(other)]))) {
+      if (ImGui::BeginCombo("to", methods[static_cast<std::size_t>(other)]->displayName)) {
         for (std::size_t w = 0; w < methods.size(); ++w)
-          if (w != v && ImGui::Selectable(methodDisplayName(methods[w]), static_cast<int>(w) == other)) {
+          if (w != v && ImGui::Selectable(methods[w]->displayName, static_cast<int>(w) == other)) {
             show.setView(v, quantity, methods.size());
             show.views[v].other = static_cast<int>(w);
             state.quantities.differenceGeneration = ~0ull;
@@ -424,7 +430,7 @@ void drawShowChoice(AppState& state) {
 void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
 
 void drawNuPlot(AppState& state) {
-  if (!state.scene || state.deformers.count(Method::Somigliana) == 0) return;
+  if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
   const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
   const bool stale = state.quantities.nuSweepGeneration != state.deformGeneration;

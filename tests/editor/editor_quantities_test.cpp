@@ -14,6 +14,7 @@
 #include "background_job.h"
 #include "coordinate_fields.h"
 #include "errors.h"
+#include "methods/method_descriptors.h"
 #include "quantity_overlay.h"
 #include "scene.h"
 #include "somigliana_coordinates.h"
@@ -121,9 +122,9 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   ASSERT_NE(m, nullptr);
   const Scene& scene = *state.scene;
   const Eigen::MatrixXd a =
-      makeDeformer(Method::Somigliana, scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
   const Eigen::MatrixXd b =
-      makeDeformer(Method::Green, scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
   Eigen::Vector3d lo, hi;
   bounds3(scene.restCage.vertices, lo, hi);
   const double diameter = (hi - lo).norm();
@@ -140,9 +141,9 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   bend(state, -0.3);
   measureViews(state);
   const Eigen::MatrixXd a2 =
-      makeDeformer(Method::Somigliana, scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
   const Eigen::MatrixXd b2 =
-      makeDeformer(Method::Green, scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
   EXPECT_NEAR(state.quantities.measurement(0)->values[0], (a2.row(0) - b2.row(0)).norm() / diameter, 2e-5);
 }
 
@@ -212,7 +213,7 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
   EXPECT_TRUE(state.quantities.installed == measureKey(measureRequest(state)));
   // det J of the current pose (the 0.8 bend), not of the first one.
   const Scene& scene = *state.scene;
-  const DeformationGradients gradients(*state.deformers.at(Method::Somigliana), scene.meshVertices);
+  const DeformationGradients gradients(*state.deformers.at(methods::somigliana()), scene.meshVertices);
   Eigen::MatrixXd positions, jacobians;
   gradients.evaluate(state.pose, state.params, positions, jacobians);
   double largest = 0;
