@@ -181,7 +181,7 @@ std::string editorUsage() {
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
          "                            magenta), the triangles' area ratio (per vertex: geometric mean, log scale),\n"
          "                            the distance to another view (cage diameters) or the coordinate field\n"
-         "                            of cage vertex VERTEX (|T_i n_i|, Somigliana views); a comma list gives\n"
+         "                            of cage vertex VERTEX (|T_i n_i|; Somigliana, BEM); a comma list gives\n"
          "                            each view its own, e.g. detj,detj,difference\n"
          "  --range MIN:MAX           a fixed colour range for the shown quantities (default: automatic, shared\n"
          "                            by the views); a ratio's range must have MIN < 1 < MAX\n"
