@@ -2,8 +2,10 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 #include "cage.h"
+#include "progress.h"
 #include "somigliana_coordinates.h"
 
 namespace somicage {
@@ -14,5 +16,23 @@ Eigen::MatrixXd vertexCoordinateField(const SomiglianaCoordinates& coords, const
 
 // K_j(x_p) n_j for every point (#P by d): the Kelvinlet response to a unit traction along face j's normal, at nu.
 Eigen::MatrixXd faceCoordinateField(const SomiglianaCoordinates& coords, int face, double nu);
+
+// One cage element's nu-independent terms at every point (#P by vertexTermCount or faceTermCount), integrated
+// without keeping the whole coordinate matrix: the editor shows the field of one handle at any nu for the memory of
+// a few columns (the full matrix of FIREHYDRANT's mesh is ~270 MB in double).
+struct ElementTerms {
+  enum class Kind { Vertex, Face };
+  Kind kind = Kind::Vertex;
+  int index = 0;
+  int dim = 3;
+  Eigen::MatrixXd terms;    // #P by the element's term count, in term order (somigliana_coordinates.h)
+  Eigen::VectorXd normal;   // n_i (vertexNormals) or n_j (the rest face normal), d
+  Eigen::VectorXd winding;  // #P: generalised winding number (< 1/2 outside the cage)
+};
+ElementTerms integrateElementTerms(const Cage& cage, const Eigen::MatrixXd& points, ElementTerms::Kind kind, int index,
+                                   const IntegrationOptions& options = {},
+                                   const ProgressCallback& progress = noProgress);
+// The element's field at nu (#P by d): T_i(x) n_i or K_j(x) n_j, as vertexCoordinateField / faceCoordinateField.
+Eigen::MatrixXd elementCoordinateField(const ElementTerms& element, double nu);
 
 }  // namespace somicage

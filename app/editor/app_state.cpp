@@ -58,6 +58,7 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
   PrecomputeRequest request;
   request.scene = std::move(scene);
   request.methods = state.viewMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -68,6 +69,7 @@ void requestSceneFiles(AppState& state, const std::string& meshPath, const std::
   PrecomputeRequest request;
   request.loadScene = [meshPath, cagePath]() { return loadScene(meshPath, cagePath); };
   request.methods = state.viewMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
   state.loadingScene = true;
   state.pendingPosedPath = posedPath;
   state.pendingRecent = RecentEntry::files(meshPath, cagePath, posedPath);
@@ -88,6 +90,7 @@ void ensureDeformers(AppState& state) {
   PrecomputeRequest request;
   request.scene = state.scene;
   request.methods = missing;
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.viewMethods().size());
   state.worker.start(std::move(request));
 }
 

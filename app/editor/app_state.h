@@ -28,7 +28,7 @@
 #include "session.h"
 #include "transform.h"
 #include "unsaved_changes.h"
-#include "view_quantity.h"
+#include "view_quantities.h"
 
 namespace somicage::editor {
 
@@ -86,8 +86,7 @@ struct AppState {
   // computes them on the CPU when something needs the numbers (framing, export).
   std::vector<Method> cpuStale;
   // ---- quantities shown on the meshes (view_quantity.h) ----
-  int show = 0;  // index into quantityDescriptors(); 0 = shading only; every view shows it, in one shared range
-  ViewQuantities quantities;
+  ViewQuantities quantities;  // what each view shows, measured on a worker
 
   // ---- editing (document.h: what undo restores) ----
   History history;

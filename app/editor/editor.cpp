@@ -6,6 +6,7 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -55,7 +56,9 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   }
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
-  state.show = o.show;
+  state.quantities.show = o.show;
+  for (const ViewShow& view : o.show.views)
+    if (o.range && view.quantity > 0) state.quantities.show.ranges[view.quantity] = RangeSetting{true, *o.range};
   state.showCage = !o.hideCage;
 }
 
@@ -191,7 +194,8 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 
   const double top = state.hideUi ? 0.0 : menuBarHeight();
   const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
-  const double bottom = state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
+  const double bottom =
+      state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
   state.viewAspect = views.front().width / views.front().height;
@@ -222,7 +226,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     state.frameRequested = false;
   }
   measureViews(state);
-  if (!state.hideUi || state.show > 0) drawQuantityOverlay(state, views);
+  drawQuantityOverlay(state, views);
   renderer.sync(state);
   ImGui::Render();
 
@@ -245,6 +249,18 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   glfwSwapBuffers(window);
   updateTitle(window, state, title);
+}
+
+// "legend ID: LO HI" per shown quantity (full precision), for scripts and tests.
+void printLegends(const AppState& state) {
+  std::vector<int> printed;
+  for (std::size_t v = 0; v < state.viewMethods().size(); ++v) {
+    const int quantity = state.quantities.show.view(v).quantity;
+    if (quantity == 0 || std::find(printed.begin(), printed.end(), quantity) != printed.end()) continue;
+    printed.push_back(quantity);
+    const ColorRange range = shownRange(state, quantity);
+    std::printf("legend %s: %.17g %.17g\n", quantityDescriptor(quantity).id, range.lo, range.hi);
+  }
 }
 
 // Anything that needs frames without new input.
@@ -382,33 +398,38 @@ int runWindow(const EditorOptions& options) {
         for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
         rc = 2;
       } else {
-        if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
-          openCageMaker(state, options.makeCageFaces);
-          state.cageMaker.wait();
-          if (const auto& candidate = state.cageMaker.candidate()) {
-            const GeneratedCage& g = candidate->generated;
-            std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
-                        g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
-          } else {
-            state.errors.push_back("make cage: " + state.cageMaker.error());
-          }
-        }
-        // A few frames let ImGui settle its layout before the capture.
-        for (int i = 0; i < 4; ++i) {
-          if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
-          if (i == 3) state.screenshotRequest = options.screenshotPath;
-          frame(window, state, renderer, title, windowLink.queue);
-        }
-        if (!state.errors.empty()) {
-          for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
-          rc = 1;
+        if (options.showFieldVertex >= state.scene->restCage.numVertices()) {
+          std::fprintf(stderr, "somicage: --show field:%d: the cage has %d vertices (0 .. %d)\n",
+                       options.showFieldVertex, state.scene->restCage.numVertices(),
+                       state.scene->restCage.numVertices() - 1);
+          rc = 2;
         } else {
-          std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
-                      backendDisplayName(state.activeBackend()));
-          if (state.show > 0) {  // the legend's numbers, for scripts and tests
-            const ColorRange range = shownRange(state);
-            std::printf("legend %s: %.17g %.17g\n", quantityDescriptors()[static_cast<std::size_t>(state.show)].id,
-                        range.lo, range.hi);
+          if (options.showFieldVertex >= 0) state.selection.setIndices({options.showFieldVertex});
+          if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
+            openCageMaker(state, options.makeCageFaces);
+            state.cageMaker.wait();
+            if (const auto& candidate = state.cageMaker.candidate()) {
+              const GeneratedCage& g = candidate->generated;
+              std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
+                          g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
+            } else {
+              state.errors.push_back("make cage: " + state.cageMaker.error());
+            }
+          }
+          // A few frames let ImGui settle its layout before the capture; the measurements are waited for.
+          for (int i = 0; i < 4; ++i) {
+            if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
+            if (i >= 1) waitForMeasurements(state);
+            if (i == 3) state.screenshotRequest = options.screenshotPath;
+            frame(window, state, renderer, title, windowLink.queue);
+          }
+          if (!state.errors.empty()) {
+            for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+            rc = 1;
+          } else {
+            std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
+                        backendDisplayName(state.activeBackend()));
+            printLegends(state);
           }
         }
       }
@@ -418,7 +439,8 @@ int runWindow(const EditorOptions& options) {
       while (!state.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.loadingScene || state.animation.playing ||
+        demand.busy = state.worker.busy() || state.quantities.worker.busy() || state.quantities.worker.ready() ||
+                      state.quantities.sweepRequested || state.loadingScene || state.animation.playing ||
                       state.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);

@@ -111,7 +111,12 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
         throw InputError(a, -1, "expected a face count in [12, 2000], got '" + v + "'", "--make-cage 200");
       o.makeCageFaces = static_cast<int>(faces);
     } else if (a == "--show") {
-      o.show = quantityIndex(value(), a);
+      o.show = parseShow(value(), a, o.showFieldVertex);
+    } else if (a == "--range") {
+      const std::string& v = value();
+      const std::size_t colon = v.find(':');
+      if (colon == std::string::npos) throw InputError(a, -1, "expected MIN:MAX, got '" + v + "'", "--range 0.5:2");
+      o.range = ColorRange{parseNumber(v.substr(0, colon), a), parseNumber(v.substr(colon + 1), a)};
     } else if (a == "--flat") {
       o.flatShading = true;
     } else if (a == "--backend") {
@@ -141,6 +146,13 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
     } catch (const InputError& e) {
       throw InputError("--nu", -1, e.problem(), e.hint());
     }
+  }
+  for (const ViewShow& view : o.show.views) {  // the typed range must suit every shown quantity's scale
+    const QuantityDescriptor& d = quantityDescriptor(view.quantity);
+    const std::string problem = o.range && view.quantity > 0 ? rangeProblem(*o.range, d.scale) : "";
+    if (!problem.empty())
+      throw InputError("--range", -1, std::string(problem) + " (for " + d.id + ")",
+                       "e.g. --range 0.5:2 for det J, --range 0:0.05 for a difference");
   }
   if (o.gamma && (!(*o.gamma >= 0) || std::isinf(*o.gamma)))
     throw InputError("--gamma", -1, "must be finite and >= 0", "e.g. --gamma 1");
@@ -172,10 +184,15 @@ std::string editorUsage() {
          "                            change against nu (in the window: the Sweep nu button)\n"
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
          "  --make-cage N             with --screenshot: File > Make cage... with N faces, shown once generated\n"
-         "  --show detj|distortion|foldover|area\n"
+         "  --show detj|distortion|foldover|area|difference|field:VERTEX[,...]\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"
-         "                            magenta) or the triangles' area ratio (per vertex: geometric mean, log scale)\n"
+         "                            magenta), the triangles' area ratio (per vertex: geometric mean, log scale),\n"
+         "                            the distance to another view (cage diameters) or the coordinate field\n"
+         "                            of cage vertex VERTEX (|T_i n_i|; Somigliana, BEM); a comma list gives\n"
+         "                            each view its own, e.g. detj,detj,difference\n"
+         "  --range MIN:MAX           a fixed colour range for the shown quantities (default: automatic, shared\n"
+         "                            by the views); a ratio's range must have MIN < 1 < MAX\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
          "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
          "                            (default: gpu on a hardware GPU, cpu otherwise)\n"

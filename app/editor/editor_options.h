@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "deformer.h"
+#include "view_quantity.h"
 
 namespace somicage::editor {
 
@@ -32,7 +33,9 @@ struct EditorOptions {
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
   int makeCageFaces = 0;                      // --make-cage N: open File > Make cage with N faces (screenshots)
-  int show = 0;                               // --show detj|distortion|foldover (view_quantity.h)
+  ShowSettings show;                          // --show detj|...|field:VERTEX, per view (view_quantity.h)
+  std::optional<ColorRange> range;            // --range MIN:MAX: a fixed range for the shown quantities
+  int showFieldVertex = -1;                   // --show field:VERTEX: the cage vertex selected for the field
   bool help = false;                          // -h / --help
 };
 

@@ -120,19 +120,26 @@ void Renderer::sync(AppState& state) {
 
 void Renderer::syncScalars(const AppState& state) {
   const std::vector<Method> methods = state.viewMethods();
-  const QuantityDescriptor& d = quantityDescriptors()[static_cast<std::size_t>(state.show)];
-  const ColorRange range = shownRange(state);
   for (std::size_t v = 0; v < methods.size() && v < meshes_.size(); ++v) {
     MeshSlot& slot = meshes_[v];
-    if (slot.quantityGeneration == state.quantities.generation() && slot.method == methods[v]) continue;
-    slot.quantityGeneration = state.quantities.generation();
-    const ViewMeasurement* m = state.show > 0 ? state.quantities.measurement(methods[v]) : nullptr;
+    const int quantity = state.quantities.show.view(v).quantity;
+    const QuantityDescriptor& d = quantityDescriptor(quantity);
+    const ColorRange range = quantity > 0 ? shownRange(state, quantity) : ColorRange{};
+    if (slot.quantityGeneration == state.quantities.generation && slot.method == methods[v] &&
+        slot.quantity == quantity && slot.range.lo == range.lo && slot.range.hi == range.hi)
+      continue;
+    slot.quantityGeneration = state.quantities.generation;
+    slot.quantity = quantity;
+    slot.range = range;
+    const ViewMeasurement* m = quantity > 0 ? state.quantities.measurement(v) : nullptr;
     if (!m || m->values.size() != state.scene->meshVertices.rows()) {
       slot.colorMap = -1;
       continue;
     }
+    const double noDetJ = std::numeric_limits<double>::quiet_NaN();
     Eigen::VectorXf t(m->values.size());
-    for (Eigen::Index i = 0; i < t.size(); ++i) t[i] = colorCoordinate(m->values[i], m->detJ[i], range, d.scale);
+    for (Eigen::Index i = 0; i < t.size(); ++i)
+      t[i] = colorCoordinate(m->values[i], m->detJ.size() ? m->detJ[i] : noDetJ, range, d.scale);
     slot.mesh->setScalars(t);
     slot.colorMap = d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
   }
@@ -164,7 +171,7 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
         framebufferHeight - static_cast<int>(std::lround(r.y * framebufferScale)) - rect.height;  // GL: bottom-left
     render::beginViewport(rect, &kViewBackground);
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
-    meshStyle.colorMap = state.show > 0 ? meshes_[v].colorMap : -1;
+    meshStyle.colorMap = state.quantities.show.view(v).quantity > 0 ? meshes_[v].colorMap : -1;
     if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);
     if (state.cageMaker.isOpen() && state.cageMaker.candidate()) {
       preview_.draw(matrices, previewStyle);  // in place of the scene's cage

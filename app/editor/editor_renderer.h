@@ -41,8 +41,10 @@ class Renderer {
     std::unique_ptr<render::GpuDeformer> gpu;
     std::shared_ptr<const CageDeformer> uploaded;
     bool onGpu = false;                        // the vertex buffers hold the GPU's result
-    std::uint64_t quantityGeneration = ~0ull;  // ViewQuantities::generation() of the uploaded scalars
-    int colorMap = -1;                         // MeshStyle::colorMap of the uploaded scalars
+    std::uint64_t quantityGeneration = ~0ull;  // ViewQuantities::generation of the uploaded scalars
+    int quantity = 0;                          // and their quantity and range
+    ColorRange range;
+    int colorMap = -1;  // MeshStyle::colorMap of the uploaded scalars
   };
   // Uploads the shown quantity's colour-map coordinates of each view (shared range) when they changed.
   void syncScalars(const AppState& state);

@@ -130,7 +130,7 @@ bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
 
 void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
   GizmoLayout g;
-  if (!selectionGizmo(state, r, g)) return;
+  if (!state.showCage || !selectionGizmo(state, r, g)) return;  // the handles' gizmo goes with the cage
   const auto at = [&](const Eigen::Vector2d& p) {
     return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
   };

@@ -14,10 +14,14 @@ namespace {
 void requireMemoryFor(const PrecomputeRequest& request) {
   const Scene& scene = *request.scene;
   MemoryEstimate estimate;
-  for (Method m : request.methods)
+  const std::size_t points = static_cast<std::size_t>(scene.meshVertices.rows());
+  for (Method m : request.methods) {
     estimate += estimatePrecomputeMemory(m, scene.dim(), scene.restCage.numVertices(), scene.restCage.numFaces(),
-                                         static_cast<std::size_t>(scene.meshVertices.rows()),
-                                         request.options.floatStorage, request.options.threads);
+                                         points, request.options.floatStorage, request.options.threads);
+    if (request.withGradients)
+      estimate.gradients += estimateGradientBytes(m, scene.dim(), scene.restCage.numVertices(),
+                                                  scene.restCage.numFaces(), points, request.options.floatStorage);
+  }
   requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
                 memoryHint(!request.options.floatStorage));
 }

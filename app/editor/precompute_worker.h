@@ -34,6 +34,7 @@ struct PrecomputeRequest {
   std::function<Scene()> loadScene;
   std::vector<Method> methods;  // deformers to build, in this order
   PrecomputeOptions options = interactiveOptions();
+  bool withGradients = false;  // a J-based quantity is shown: its gradients count in the memory check too
 };
 
 struct PrecomputeOutcome {

@@ -8,95 +8,55 @@
 #include <string>
 
 #include "mesh_renderer.h"
+#include "selection.h"
 
 namespace somicage::editor {
 
-void measureViews(AppState& state) {
-  if (!state.scene || state.interaction.mode != Interaction::Mode::Idle) return;
-  try {
-    state.quantities.update(state.deformers, state.viewMethods(), state.scene->meshVertices, state.scene->meshTriangles,
-                            state.pose, state.params, state.show, state.deformGeneration);
-  } catch (const std::exception& e) {
-    state.errors.push_back(std::string("measuring the pose failed: ") + e.what());
-    state.show = 0;
-  }
-}
-
-ColorRange shownRange(const AppState& state) {
-  std::vector<const ViewMeasurement*> views;
-  for (Method m : state.viewMethods()) views.push_back(state.quantities.measurement(m));
-  return sharedRange(views, quantityDescriptors()[static_cast<std::size_t>(state.show)].scale);
-}
-
 namespace {
 
-ImU32 toImColor(const Eigen::Vector3f& c) {
-  return IM_COL32(static_cast<int>(c[0] * 255), static_cast<int>(c[1] * 255), static_cast<int>(c[2] * 255), 255);
-}
-
-void drawLegend(const AppState& state, const ViewRect& view) {
-  const QuantityDescriptor& d = quantityDescriptors()[static_cast<std::size_t>(state.show)];
-  const ColorRange range = shownRange(state);
-  const int row = d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float w = 220, h = 14;
-  const float x0 = static_cast<float>(view.x + view.width) - w - 24, y0 = static_cast<float>(view.y + view.height) - 58;
-  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + w + 10, y0 + h + 36), IM_COL32(20, 20, 24, 190), 3.0f);
-  draw->AddText(ImVec2(x0, y0 - 20), IM_COL32(235, 235, 240, 255),
-                (std::string(d.name) + (d.scale == ColorScale::LogDiverging ? "  (log scale)" : "")).c_str());
-  const int steps = 64;
-  for (int i = 0; i < steps; ++i) {
-    const float a = x0 + w * static_cast<float>(i) / steps, b = x0 + w * static_cast<float>(i + 1) / steps;
-    draw->AddRectFilled(ImVec2(a, y0), ImVec2(b + 0.5f, y0 + h),
-                        toImColor(render::colorMapColor(row, (static_cast<float>(i) + 0.5f) / steps)));
-  }
-  char lo[32], mid[32], hi[32];
-  std::snprintf(lo, sizeof lo, "%.4g", range.lo);
-  std::snprintf(mid, sizeof mid, "%.4g", d.scale == ColorScale::LogDiverging ? 1.0 : 0.5 * (range.lo + range.hi));
-  std::snprintf(hi, sizeof hi, "%.4g", range.hi);
-  const ImU32 text = IM_COL32(235, 235, 240, 255);
-  draw->AddText(ImVec2(x0, y0 + h + 2), text, lo);
-  draw->AddText(ImVec2(x0 + w / 2 - ImGui::CalcTextSize(mid).x / 2, y0 + h + 2), text, mid);
-  draw->AddText(ImVec2(x0 + w - ImGui::CalcTextSize(hi).x, y0 + h + 2), text, hi);
-  draw->AddRectFilled(ImVec2(x0, y0 + h + 20), ImVec2(x0 + 12, y0 + h + 32), toImColor(render::kFoldoverColor));
-  draw->AddText(ImVec2(x0 + 18, y0 + h + 19), text, "fold-over (det J <= 0)");
-}
-
-}  // namespace
-
-void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
-  if (state.show <= 0) return;
-  ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const std::vector<Method> methods = state.viewMethods();
-  const float line = ImGui::GetTextLineHeightWithSpacing();
-  for (std::size_t v = 0; v < views.size() && v < methods.size(); ++v) {
-    const ViewMeasurement* m = state.quantities.measurement(methods[v]);
-    std::string text = "measuring...";
-    if (m) {
-      char buf[160];
-      std::snprintf(buf, sizeof buf, "volume %+.2f%%%s\nfold-overs %d\ndistortion p95 %.3f", 100 * m->volumeChange,
-                    m->closed ? "" : " (open, capped)", m->foldovers, m->distortionP95);
-      text = buf;
+// The selected cage element whose coordinate field is shown: in face mode the first face with every vertex
+// selected, else the first selected vertex.
+void selectedElement(const AppState& state, int& vertex, int& face) {
+  vertex = face = -1;
+  if (!state.scene) return;
+  if (state.elementMode == ElementMode::Face) {
+    const Eigen::MatrixXi& f = state.scene->restCage.faces;
+    for (Eigen::Index j = 0; j < f.rows() && face < 0; ++j) {
+      bool all = true;
+      for (Eigen::Index k = 0; k < f.cols(); ++k) all = all && state.selection.isSelected(f(j, k));
+      if (all) face = static_cast<int>(j);
     }
-    const ImVec2 pos(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8) + line + 2);
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    draw->AddRectFilled(ImVec2(pos.x - 4, pos.y - 2), ImVec2(pos.x + size.x + 4, pos.y + size.y + 2),
-                        IM_COL32(20, 20, 24, 170), 3.0f);
-    draw->AddText(pos, IM_COL32(235, 235, 240, 255), text.c_str());
+    if (face >= 0) return;
   }
-  if (!views.empty()) drawLegend(state, views.back());
+  const std::vector<int> selected = state.selection.indices();
+  if (!selected.empty()) vertex = selected.front();
 }
 
-void drawShowChoice(AppState& state) {
-  const std::vector<QuantityDescriptor>& d = quantityDescriptors();
-  if (ImGui::BeginCombo("show", d[static_cast<std::size_t>(state.show)].name)) {
-    for (std::size_t i = 0; i < d.size(); ++i)
-      if (ImGui::Selectable(d[i].name, static_cast<int>(i) == state.show)) state.show = static_cast<int>(i);
-    ImGui::EndCombo();
-  }
+double cageDiameter(const Scene& scene) {
+  const Eigen::MatrixXd& v = scene.restCage.vertices;
+  return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
 }
 
-namespace {
+void computeDifferences(AppState& state) {
+  const std::vector<Method> methods = state.viewMethods();
+  const ShowSettings& show = state.quantities.show;
+  state.quantities.measured.resize(methods.size());
+  for (std::size_t v = 0; v < methods.size(); ++v) {
+    if (quantityDescriptor(show.view(v).quantity).source != QuantitySource::Difference) continue;
+    const int w = show.otherView(v, methods.size());
+    state.quantities.measured[v].reset();
+    if (w < 0 || !hasDeformer(state, methods[v]) || !hasDeformer(state, methods[static_cast<std::size_t>(w)])) continue;
+    ensureCpuPoints(state, methods[v]);
+    ensureCpuPoints(state, methods[static_cast<std::size_t>(w)]);
+    ViewMeasurement m;
+    m.values =
+        pointDifference(displayedPoints(state, methods[v]),
+                        displayedPoints(state, methods[static_cast<std::size_t>(w)]), cageDiameter(*state.scene));
+    state.quantities.measured[v] = std::move(m);
+  }
+  state.quantities.differenceGeneration = state.deformGeneration;
+  ++state.quantities.generation;
+}
 
 // The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
 const std::shared_ptr<const CageDeformer>* nuSweepDeformer(const AppState& state) {
@@ -105,24 +65,375 @@ const std::shared_ptr<const CageDeformer>* nuSweepDeformer(const AppState& state
   return d == state.deformers.end() ? nullptr : &d->second;
 }
 
+void turnOff(AppState& state, const std::string& error) {
+  state.errors.push_back(error);
+  state.quantities.show.setAll(0);
+}
+
 }  // namespace
 
-void sweepNuNow(AppState& state) {
-  const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
-  if (!deformer) return;
-  try {
-    state.quantities.sweepNu(*deformer, state.scene->meshVertices, state.scene->meshTriangles, state.pose, state.params,
-                             nuSweepValues(-0.95, 0.49, 25), state.deformGeneration);
-  } catch (const std::exception& e) {
-    state.errors.push_back(std::string("nu sweep failed: ") + e.what());
+MeasureRequest measureRequest(const AppState& state) {
+  MeasureRequest r;
+  r.scene = state.scene;
+  r.pose = state.pose;
+  r.poseGeneration = state.deformGeneration;
+  int vertex = -1, face = -1;
+  selectedElement(state, vertex, face);
+  const std::vector<Method> methods = state.viewMethods();
+  for (std::size_t v = 0; v < methods.size(); ++v) {
+    MeasureView view;
+    view.quantity = state.quantities.show.view(v).quantity;
+    view.params = state.params;
+    const QuantitySource source = quantityDescriptor(view.quantity).source;
+    if (source == QuantitySource::Jacobian) {
+      auto d = state.deformers.find(methods[v]);
+      if (d != state.deformers.end()) view.deformer = d->second;
+    } else if (source == QuantitySource::Field && readsParameter(methods[v], kParamNu)) {  // T_i(nu): Somigliana, BEM
+      view.fieldVertex = vertex;
+      view.fieldFace = face;
+    }
+    r.views.push_back(std::move(view));
+  }
+  return r;
+}
+
+void measureViews(AppState& state) {
+  ViewQuantities& q = state.quantities;
+  if (!state.scene) return;
+  const std::size_t viewCount = state.viewMethods().size();
+  q.measured.resize(viewCount);
+  MeasureRequest request = measureRequest(state);
+  const MeasureKey key = measureKey(request);
+  if (std::optional<MeasureOutcome> outcome = q.worker.poll()) {
+    if (!outcome->error.empty()) {
+      turnOff(state, "measuring the pose failed: " + outcome->error);
+    } else if (outcome->cancelled) {
+      state.statusMessage = "measuring cancelled";
+    } else if (outcome->key.sweep) {
+      q.nuSweep = std::move(outcome->sweep);
+      q.nuSweepGeneration = outcome->key.poseGeneration;
+    } else if (outcome->key == key) {
+      for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
+        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference)
+          q.measured[v] = std::move(outcome->views[v]);
+      q.installed = key;
+      ++q.generation;
+    } else {
+      ++q.droppedStale;  // its pose (or scene, or choice) is gone: the current one is measured next
+    }
+  }
+  if (q.show.usesSource(QuantitySource::Difference, viewCount) && q.differenceGeneration != state.deformGeneration)
+    computeDifferences(state);
+  if (q.worker.busy()) return;
+  if (q.sweepRequested) {
+    q.sweepRequested = false;
+    if (const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state)) {
+      MeasureRequest sweep = request;
+      sweep.views.assign(1, MeasureView{*deformer, 0, state.params, -1, -1});
+      sweep.sweepView = 0;
+      sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
+      q.worker.start(std::move(sweep));
+      return;
+    }
+  }
+  if (!needsWorker(request)) {
+    if (q.installed != MeasureKey{}) {  // nothing uses the gradients or field terms any more: free them
+      q.worker.release();
+      q.installed = MeasureKey{};
+      for (std::size_t v = 0; v < viewCount; ++v)
+        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference) q.measured[v].reset();
+      ++q.generation;
+    }
+    return;
+  }
+  if (key != q.installed) q.worker.start(std::move(request));
+}
+
+void waitForMeasurements(AppState& state) {
+  for (int round = 0; round < 4; ++round) {
+    measureViews(state);
+    if (!state.quantities.worker.busy() && !state.quantities.sweepRequested) return;
+    state.quantities.worker.join();
   }
 }
+
+ColorRange shownRange(const AppState& state, int quantity) {
+  return quantityRange(state.quantities.show, quantity, state.quantities.measurements(state.viewMethods().size()));
+}
+
+namespace {
+
+ImU32 toImColor(const Eigen::Vector3f& c) {
+  return IM_COL32(static_cast<int>(c[0] * 255), static_cast<int>(c[1] * 255), static_cast<int>(c[2] * 255), 255);
+}
+
+const ImU32 kText = IM_COL32(235, 235, 240, 255);
+const char* const kUndefinedNote = "grey: undefined (outside the cage)";
+
+int colorMapRow(const QuantityDescriptor& d) {
+  return d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
+}
+
+void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
+  const QuantityDescriptor& d = quantityDescriptor(quantity);
+  const ColorRange range = shownRange(state, quantity);
+  const auto fixed = state.quantities.show.ranges.find(quantity);
+  const bool isFixed = fixed != state.quantities.show.ranges.end() && fixed->second.fixed;
+  const bool log = d.scale == ColorScale::LogDiverging;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float w = 220, h = 14;
+  const std::string title = std::string(d.name) + (log ? "  (log scale)" : "") + (isFixed ? "  fixed" : "");
+  const char* note = d.source == QuantitySource::Jacobian ? "    fold-over (det J <= 0)" : kUndefinedNote;
+  const float boxW = std::max({w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x});
+  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
+  const float y0 = static_cast<float>(view.y + view.height) - 58;
+  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + h + 36), IM_COL32(20, 20, 24, 190), 3.0f);
+  draw->AddText(ImVec2(x0, y0 - 20), kText, title.c_str());
+  const int steps = 64;
+  for (int i = 0; i < steps; ++i) {
+    const float a = x0 + w * static_cast<float>(i) / steps, b = x0 + w * static_cast<float>(i + 1) / steps;
+    draw->AddRectFilled(ImVec2(a, y0), ImVec2(b + 0.5f, y0 + h),
+                        toImColor(render::colorMapColor(colorMapRow(d), (static_cast<float>(i) + 0.5f) / steps)));
+  }
+  char lo[32], mid[32], hi[32];
+  std::snprintf(lo, sizeof lo, "%.4g", range.lo);
+  std::snprintf(mid, sizeof mid, "%.4g", log ? 1.0 : 0.5 * (range.lo + range.hi));
+  std::snprintf(hi, sizeof hi, "%.4g", range.hi);
+  draw->AddText(ImVec2(x0, y0 + h + 2), kText, lo);
+  draw->AddText(ImVec2(x0 + w / 2 - ImGui::CalcTextSize(mid).x / 2, y0 + h + 2), kText, mid);
+  draw->AddText(ImVec2(x0 + w - ImGui::CalcTextSize(hi).x, y0 + h + 2), kText, hi);
+  if (d.source == QuantitySource::Jacobian) {
+    draw->AddRectFilled(ImVec2(x0, y0 + h + 20), ImVec2(x0 + 12, y0 + h + 32), toImColor(render::kFoldoverColor));
+    draw->AddText(ImVec2(x0 + 18, y0 + h + 19), kText, "fold-over (det J <= 0)");
+  } else {
+    draw->AddText(ImVec2(x0, y0 + h + 19), IM_COL32(170, 170, 180, 255), kUndefinedNote);
+  }
+}
+
+void drawBoxedText(ImDrawList* draw, ImVec2 pos, const std::string& text) {
+  const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+  draw->AddRectFilled(ImVec2(pos.x - 4, pos.y - 2), ImVec2(pos.x + size.x + 4, pos.y + size.y + 2),
+                      IM_COL32(20, 20, 24, 170), 3.0f);
+  draw->AddText(pos, kText, text.c_str());
+}
+
+std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCount) {
+  const ViewShow& s = state.quantities.show.view(v);
+  const QuantityDescriptor& d = quantityDescriptor(s.quantity);
+  const ViewMeasurement* m = state.quantities.measurement(v);
+  char buf[200];
+  switch (d.source) {
+    case QuantitySource::None:
+      return "";
+    case QuantitySource::Jacobian:
+      if (!m) return "measuring...";
+      std::snprintf(buf, sizeof buf, "volume %+.2f%%%s\nfold-overs %d\ndistortion p95 %.3f", 100 * m->volumeChange,
+                    m->closed ? "" : " (open, capped)", m->foldovers, m->distortionP95);
+      return buf;
+    case QuantitySource::Difference: {
+      const int w = state.quantities.show.otherView(v, viewCount);
+      if (w < 0) return "difference: needs the compare view";
+      if (!m) return "measuring...";
+      std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
+                    state.viewMethods()[static_cast<std::size_t>(w)]->displayName, m->values.maxCoeff(),
+                    quantile(m->values, 0.5));
+      return buf;
+    }
+    case QuantitySource::Field: {
+      int vertex = -1, face = -1;
+      selectedElement(state, vertex, face);
+      if (!readsParameter(state.viewMethods()[v], kParamNu)) return "field: views of a method with nu only";
+      if (vertex < 0 && face < 0) return "field: select a cage vertex or face";
+      if (!m) return "measuring...";
+      std::snprintf(buf, sizeof buf, "field of cage %s %d at nu %.3g", vertex >= 0 ? "vertex" : "face",
+                    vertex >= 0 ? vertex : face, state.params.nu);
+      return buf;
+    }
+  }
+  return "";
+}
+
+// The mesh vertex of view v under the mouse (selection.h's pickPoint on the view's deformed points, 8 pixels), -1
+// when none.
+int hoveredVertex(const AppState& state, std::size_t v, const ViewRect& rect, const Eigen::Vector2d& mouse) {
+  const Eigen::MatrixXd& points = displayedPoints(state, state.viewMethods()[v]);
+  return pickPoint(projectPoints(state.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
+}
+
+// A 2D field's arrows (paper Fig. 3) at their rest positions, coloured by magnitude in the view's range; the longest
+// spans about one grid step.
+void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect) {
+  const ViewMeasurement* m = state.quantities.measurement(v);
+  if (!m || m->arrowPoints.rows() < 2) return;
+  const int quantity = state.quantities.show.view(v).quantity;
+  const ColorRange range = shownRange(state, quantity);
+  const Eigen::Matrix4d mvp = state.camera.projectionMatrix(rect.width / rect.height) * state.camera.viewMatrix();
+  auto screen = [&](const Eigen::Vector2d& p) {
+    const Eigen::Vector4d c = mvp * Eigen::Vector4d(p.x(), p.y(), 0.0, 1.0);
+    return ImVec2(static_cast<float>(rect.x + (c.x() / c.w() + 1) * 0.5 * rect.width),
+                  static_cast<float>(rect.y + (1 - c.y() / c.w()) * 0.5 * rect.height));
+  };
+  const double step = (m->arrowPoints.row(1) - m->arrowPoints.row(0)).norm();
+  const double longest = m->arrowVectors.rowwise().norm().maxCoeff();
+  if (!(longest > 0)) return;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  for (Eigen::Index k = 0; k < m->arrowPoints.rows(); ++k) {
+    const Eigen::Vector2d p = m->arrowPoints.row(k).transpose(), f = m->arrowVectors.row(k).transpose();
+    const double magnitude = f.norm();
+    const ImU32 color = toImColor(render::colorMapColor(
+        render::kViridisMap, std::max(0.0f, colorCoordinate(magnitude, 1.0, range, ColorScale::Viridis))));
+    const ImVec2 a = screen(p - 0.45 * step * f / longest), b = screen(p + 0.45 * step * f / longest);
+    const float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    const float ux = len > 0 ? dx / len : 0, uy = len > 0 ? dy / len : 0, head = std::min(6.0f, 0.4f * len);
+    const ImVec2 left(b.x - head * (ux + 0.5f * uy), b.y - head * (uy - 0.5f * ux));
+    const ImVec2 right(b.x - head * (ux - 0.5f * uy), b.y - head * (uy + 0.5f * ux));
+    for (int pass = 0; pass < 2; ++pass) {  // a dark outline first, so the arrows read over a coloured mesh
+      const ImU32 c = pass == 0 ? IM_COL32(10, 10, 14, 220) : color;
+      draw->AddLine(a, b, c, pass == 0 ? 4.0f : 2.0f);
+      if (len >= 3) draw->AddTriangleFilled(left, right, b, c);
+    }
+  }
+}
+
+void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
+  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return;
+  const ImVec2 mp = ImGui::GetIO().MousePos;
+  const Eigen::Vector2d mouse(mp.x, mp.y);
+  for (std::size_t v = 0; v < views.size() && v < state.viewMethods().size(); ++v) {
+    if (!views[v].contains(mouse)) continue;
+    const ViewMeasurement* m = state.quantities.measurement(v);
+    if (!m) return;
+    const int i = hoveredVertex(state, v, views[v], mouse);
+    if (i < 0 || i >= m->values.size()) return;
+    const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
+    char buf[200];
+    int n = std::isfinite(m->values[i]) ? std::snprintf(buf, sizeof buf, "%s %.6g", d.name, m->values[i])
+                                        : std::snprintf(buf, sizeof buf, "%s undefined", d.name);
+    if (m->detJ.size() && std::string(d.id) != "detj" && n > 0)  // what the other J quantities come from
+      n += std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "  (det J %.4g)", m->detJ[i]);
+    if (n > 0) std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "\nvertex %d", i);
+    drawBoxedText(ImGui::GetForegroundDrawList(), ImVec2(mp.x + 16, mp.y + 12), buf);
+    return;
+  }
+}
+
+}  // namespace
+
+void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
+  const std::size_t n = std::min(views.size(), state.viewMethods().size());
+  if (!state.quantities.show.anyShown(n)) return;
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const float line = ImGui::GetTextLineHeightWithSpacing();
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::string text = viewNumbers(state, v, n);
+    if (!text.empty())
+      drawBoxedText(draw, ImVec2(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8) + line + 2),
+                    text);
+  }
+  for (std::size_t v = 0; v < n; ++v) drawFieldArrows(state, v, views[v]);
+  for (std::size_t v = 0; v < n; ++v) {  // one legend per quantity, in the last view showing it
+    const int quantity = state.quantities.show.view(v).quantity;
+    bool last = quantity > 0;
+    for (std::size_t w = v + 1; w < n && last; ++w) last = state.quantities.show.view(w).quantity != quantity;
+    if (last) drawLegend(state, quantity, views[v]);
+  }
+  if (!state.hideUi && state.screenshotRequest.empty()) drawHoverValue(state, views);  // not in a capture
+}
+
+namespace {
+
+bool quantityCombo(const char* label, int& quantity) {
+  const std::vector<QuantityDescriptor>& d = quantityDescriptors();
+  bool changed = false;
+  if (ImGui::BeginCombo(label, d[static_cast<std::size_t>(quantity)].name)) {
+    for (std::size_t i = 0; i < d.size(); ++i)
+      if (ImGui::Selectable(d[i].name, static_cast<int>(i) == quantity)) {
+        changed = quantity != static_cast<int>(i);
+        quantity = static_cast<int>(i);
+      }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+void drawRangeSetting(AppState& state, int quantity) {
+  const QuantityDescriptor& d = quantityDescriptor(quantity);
+  auto it = state.quantities.show.ranges.find(quantity);
+  RangeSetting setting = it != state.quantities.show.ranges.end() ? it->second : RangeSetting{};
+  if (it == state.quantities.show.ranges.end()) setting.range = shownRange(state, quantity);
+  ImGui::PushID(quantity);
+  bool changed = ImGui::Checkbox("fixed range", &setting.fixed);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", d.id);
+  if (!setting.fixed) ImGui::BeginDisabled();
+  ImGui::SetNextItemWidth(90);
+  changed |= ImGui::InputDouble("min", &setting.range.lo, 0, 0, "%.4g");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  changed |= ImGui::InputDouble("max", &setting.range.hi, 0, 0, "%.4g");
+  if (!setting.fixed) ImGui::EndDisabled();
+  const std::string problem = setting.fixed ? rangeProblem(setting.range, d.scale) : "";
+  if (!problem.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s: automatic range used", problem.c_str());
+  if (changed) {
+    state.quantities.show.ranges[quantity] = setting;
+    ++state.quantities.generation;
+  }
+  ImGui::PopID();
+}
+
+}  // namespace
+
+void drawShowChoice(AppState& state) {
+  ShowSettings& show = state.quantities.show;
+  const std::vector<Method> methods = state.viewMethods();
+  for (std::size_t v = 0; v < methods.size(); ++v) {
+    int quantity = show.view(v).quantity;
+    const std::string label = methods.size() > 1 ? std::string(methods[v]->displayName) : "show";
+    ImGui::PushID(static_cast<int>(v));
+    ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Mean value ").x);
+    if (quantityCombo(label.c_str(), quantity)) show.setView(v, quantity, methods.size());
+    if (quantityDescriptor(quantity).source == QuantitySource::Difference && methods.size() > 1) {
+      int other = show.otherView(v, methods.size());
+      ImGui::SetNextItemWidth(140);
+      if (ImGui::BeginCombo("to", methods[static_cast<std::size_t>(other)]->displayName)) {
+        for (std::size_t w = 0; w < methods.size(); ++w)
+          if (w != v && ImGui::Selectable(methods[w]->displayName, static_cast<int>(w) == other)) {
+            show.setView(v, quantity, methods.size());
+            show.views[v].other = static_cast<int>(w);
+            state.quantities.differenceGeneration = ~0ull;
+          }
+        ImGui::EndCombo();
+      }
+    }
+    ImGui::PopID();
+  }
+  std::vector<int> shown;  // each quantity's range once
+  for (std::size_t v = 0; v < methods.size(); ++v) {
+    const int quantity = show.view(v).quantity;
+    if (quantity > 0 && std::find(shown.begin(), shown.end(), quantity) == shown.end()) shown.push_back(quantity);
+  }
+  for (int quantity : shown) drawRangeSetting(state, quantity);
+  MeasureWorker& worker = state.quantities.worker;
+  if (worker.busy()) {
+    const std::string stage = worker.stage();
+    ImGui::TextUnformatted(stage.empty() ? "measuring..." : stage.c_str());
+    ImGui::ProgressBar(static_cast<float>(worker.progress()), ImVec2(-60.0f, 0.0f));
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel##measure")) {
+      worker.cancel();
+      show.setAll(0);  // else the next frame would start it again
+      state.quantities.sweepRequested = false;
+    }
+  }
+}
+
+void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
 
 void drawNuPlot(AppState& state) {
   if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
-  const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep();
-  const bool stale = state.quantities.nuSweepGeneration() != state.deformGeneration;
+  const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
+  const bool stale = state.quantities.nuSweepGeneration != state.deformGeneration;
   ImGui::SameLine();
   ImGui::TextDisabled(sweep.empty() ? "volume change vs nu"
                       : stale       ? "(pose changed: sweep again)"
@@ -137,16 +448,28 @@ void drawNuPlot(AppState& state) {
   const auto [lo, hi] = std::minmax_element(change.begin(), change.end());
   const float pad = std::max(0.5f, 0.1f * (*hi - *lo));
   char overlay[64];
-  std::snprintf(overlay, sizeof overlay, "%+.1f%% .. %+.1f%%, max %d folds", *lo, *hi, folds);
+  std::snprintf(overlay, sizeof overlay, "%+.1f%% .. %+.1f%%", *lo, *hi);
   ImGui::PlotLines("##nuplot", change.data(), static_cast<int>(change.size()), 0, overlay, *lo - pad, *hi + pad,
                    ImVec2(ImGui::GetContentRegionAvail().x, 80));
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 foldColor = toImColor(render::kFoldoverColor);
+  // The fold-over count on its own axis, 0 at the bottom and the sweep's largest count at the top.
   const double nu0 = sweep.front().nu, nu1 = sweep.back().nu;
+  auto xOf = [&](double nu) { return a.x + static_cast<float>((nu - nu0) / (nu1 - nu0)) * (b.x - a.x); };
+  auto yOfFolds = [&](int f) {
+    return b.y - 3 - (folds > 0 ? static_cast<float>(f) / static_cast<float>(folds) : 0.0f) * (b.y - a.y - 6);
+  };
+  for (std::size_t k = 1; k < sweep.size(); ++k)
+    draw->AddLine(ImVec2(xOf(sweep[k - 1].nu), yOfFolds(sweep[k - 1].foldovers)),
+                  ImVec2(xOf(sweep[k].nu), yOfFolds(sweep[k].foldovers)), foldColor, 1.5f);
   if (std::isfinite(state.params.nu)) {  // the current nu
-    const float x = a.x + static_cast<float>((state.params.nu - nu0) / (nu1 - nu0)) * (b.x - a.x);
-    ImGui::GetWindowDrawList()->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
+    const float x = xOf(state.params.nu);
+    draw->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
   }
-  if (ImGui::IsItemHovered()) {
+  ImGui::TextColored(ImGui::GetStyleColorVec4(ImGuiCol_PlotLines), "- volume change %% (left scale)");
+  ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(foldColor), "- fold-overs (0 .. %d)", folds);
+  if (ImGui::IsMouseHoveringRect(a, b)) {
     const double f = std::clamp((ImGui::GetIO().MousePos.x - a.x) / (b.x - a.x), 0.0f, 1.0f);
     const double nu = nu0 + f * (nu1 - nu0);
     const std::size_t k = static_cast<std::size_t>(std::lround(f * static_cast<double>(sweep.size() - 1)));

@@ -1,5 +1,6 @@
-// The editor side of view_quantity.h: measuring the views when the pose settles, the Show choice, and what is drawn
-// over each view (its numbers under the label, and the legend of the shared colour range). ImGui, no GL.
+// The editor side of view_quantity.h: measuring the views on the worker (measure_worker.h), the Show choice per
+// view with its range, and what is drawn over each view (its numbers under the label, the legends, the value under
+// the cursor). ImGui, no GL.
 #pragma once
 
 #include <vector>
@@ -9,20 +10,26 @@
 
 namespace somicage::editor {
 
-// Measures the views for the shown quantity once the pose settles (no interaction running): the J evaluation costs
-// several frames, so it never runs per drag step. Errors go to state.errors and turn the quantity off.
+// What the worker should measure now (the views' deformers, quantities, the selected element, the pose).
+MeasureRequest measureRequest(const AppState& state);
+// Every frame: installs a finished outcome whose key is still current (drops a stale one), starts the worker on the
+// current pose when the installed measurements are not of it, frees the gradients when no view uses them, and
+// computes the Difference views. Errors go to state.errors and turn the quantities off. Never blocks.
 void measureViews(AppState& state);
-// The shared colour range of the shown quantity over the views (view_quantity.h: sharedRange).
-ColorRange shownRange(const AppState& state);
-// Volume change, fold-over count and p95 distortion under each view's label, and the legend in the last view.
+// Blocks until the views' measurements (and a requested sweep) are installed, or failed: the screenshot path.
+void waitForMeasurements(AppState& state);
+// The colour range of a quantity as drawn: fixed when typed, else shared by the views that show it.
+ColorRange shownRange(const AppState& state, int quantity);
+// Volume change, fold-over count and p95 distortion under each view's label, one legend per shown quantity (in the
+// last view that shows it) and, on hover, the value under the cursor.
 void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views);
-// The Show combo of the control panel.
+// The Show choices of the control panel (one per view in the compare view), the range, the worker's progress and
+// Cancel.
 void drawShowChoice(AppState& state);
-// Sweeps nu over (-0.95, 0.49) in 25 steps for the current pose of the Somigliana view (its gradients made for
-// the call when no J-based quantity is shown); errors go to state.errors.
+// Asks the worker for the nu sweep over (-0.95, 0.49) in 25 steps for the current pose of the Somigliana view.
 void sweepNuNow(AppState& state);
-// Somigliana: a "Sweep nu" button and the plot of volume change against nu for the current pose, the current nu
-// marked; a click on the plot sets nu (one undo step), hovering shows the value there.
+// Somigliana: a "Sweep nu" button and the plot of volume change (and fold-over count) against nu for the current
+// pose, the current nu marked; a click on the plot sets nu (one undo step), hovering shows the values there.
 void drawNuPlot(AppState& state);
 
 }  // namespace somicage::editor

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "errors.h"
@@ -35,24 +36,24 @@ Eigen::VectorXd foldovers(const DeformationAnalysis& a, const Eigen::MatrixXi&) 
   return a.points.detJ.unaryExpr([](double d) { return d > 0 ? 1.0 : d; });
 }
 
-std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {
-  std::vector<std::vector<int>> faces(static_cast<std::size_t>(triangles.rows()));
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
-    faces[static_cast<std::size_t>(f)] = {triangles(f, 0), triangles(f, 1), triangles(f, 2)};
-  return faces;
-}
-
 }  // namespace
 
 const std::vector<QuantityDescriptor>& quantityDescriptors() {
+  using S = QuantitySource;
   static const std::vector<QuantityDescriptor> descriptors{
-      {"shading", "shading only", ColorScale::Viridis, false, nullptr},
-      {"detj", "det J", ColorScale::LogDiverging, true, detJ},
-      {"distortion", "conformal distortion", ColorScale::Viridis, true, distortion},
-      {"foldover", "fold-overs", ColorScale::LogDiverging, true, foldovers},
-      {"area", "area ratio", ColorScale::LogDiverging, true, vertexAreaRatio},
+      {"shading", "shading only", ColorScale::Viridis, S::None, 0, nullptr},
+      {"detj", "det J", ColorScale::LogDiverging, S::Jacobian, 1, detJ},
+      {"distortion", "conformal distortion", ColorScale::Viridis, S::Jacobian, 1, distortion},
+      {"foldover", "fold-overs", ColorScale::LogDiverging, S::Jacobian, 1, foldovers},
+      {"area", "area ratio", ColorScale::LogDiverging, S::Jacobian, 1, vertexAreaRatio},
+      {"difference", "difference (cage diameters)", ColorScale::Viridis, S::Difference, 0, nullptr},
+      {"field", "coordinate field |T n|", ColorScale::Viridis, S::Field, 0, nullptr},
   };
   return descriptors;
+}
+
+const QuantityDescriptor& quantityDescriptor(int index) {
+  return quantityDescriptors()[static_cast<std::size_t>(index)];
 }
 
 int quantityIndex(const std::string& id, const std::string& option) {
@@ -65,88 +66,113 @@ int quantityIndex(const std::string& id, const std::string& option) {
   throw InputError(option, -1, "unknown quantity '" + id + "', expected " + ids, "--show detj");
 }
 
-ColorRange sharedRange(const std::vector<const ViewMeasurement*>& views, ColorScale scale) {
-  double hi = 1.0;
+ViewMeasurement jacobianMeasurement(const DeformationAnalysis& a, const Eigen::MatrixXi& triangles, int quantity) {
+  ViewMeasurement out;
+  out.detJ = a.points.detJ;
+  out.values = quantityDescriptor(quantity).values(a, triangles);
+  out.closed = a.volume.closed;
+  out.volumeChange = a.volume.change();
+  out.foldovers = a.points.foldovers;
+  out.distortionP95 = quantile(a.points.distortion, 0.95);
+  return out;
+}
+
+ColorRange sharedRange(const std::vector<const ViewMeasurement*>& views, const QuantityDescriptor& quantity) {
+  const bool log = quantity.scale == ColorScale::LogDiverging;
+  double hi = log ? 1.0 : quantity.autoLow;
   for (const ViewMeasurement* m : views) {
     for (Eigen::Index i = 0; m && i < m->values.size(); ++i) {
       const double v = m->values[i];
       if (!std::isfinite(v)) continue;
-      if (scale == ColorScale::Viridis)
+      if (!log)
         hi = std::max(hi, v);
       else if (v > 0)
         hi = std::max(hi, std::max(v, 1.0 / v));
     }
   }
-  if (scale == ColorScale::Viridis) return {1.0, std::max(hi, 1.0 + 1e-3)};
+  if (!log) return {quantity.autoLow, std::max(hi, quantity.autoLow + 1e-3)};
   hi = std::max(hi, 1.0 + 1e-3);
   return {1.0 / hi, hi};
+}
+
+std::string rangeProblem(const ColorRange& range, ColorScale scale) {
+  if (!std::isfinite(range.lo) || !std::isfinite(range.hi)) return "min and max must be numbers";
+  if (scale == ColorScale::LogDiverging && !(range.lo > 0 && range.lo < 1 && range.hi > 1))
+    return "a ratio's range must have 0 < min < 1 < max (the map is centred at 1)";
+  if (!(range.lo < range.hi)) return "min must be below max";
+  return "";
 }
 
 float colorCoordinate(double value, double detJ, const ColorRange& range, ColorScale scale) {
   if (detJ <= 0) return -1.0f;
   if (!std::isfinite(value)) return -2.0f;
-  const double t = scale == ColorScale::LogDiverging ? std::log(value / range.lo) / std::log(range.hi / range.lo)
-                                                     : (value - range.lo) / (range.hi - range.lo);
+  double t;
+  if (scale == ColorScale::LogDiverging)  // each side of 1 on its own log scale, so 1 stays at the centre
+    t = value < 1 ? 0.5 - 0.5 * std::log(value) / std::log(range.lo) : 0.5 + 0.5 * std::log(value) / std::log(range.hi);
+  else
+    t = (value - range.lo) / (range.hi - range.lo);
   return static_cast<float>(std::clamp(t, 0.0, 1.0));
 }
 
-void ViewQuantities::update(const std::map<Method, std::shared_ptr<const CageDeformer>>& deformers,
-                            const std::vector<Method>& methods, const Eigen::MatrixXd& restMesh,
-                            const Eigen::MatrixXi& triangles, const Eigen::MatrixXd& pose, const DeformParams& params,
-                            int quantity, std::uint64_t generation) {
-  if (quantity == 0 || !quantityDescriptors()[static_cast<std::size_t>(quantity)].usesJacobian) {
-    if (!entries_.empty()) ++generation_;
-    entries_.clear();  // the gradients are held only while a J-based quantity is shown
-    quantity_ = quantity;
-    return;
-  }
-  bool changed = generation != measured_ || quantity != quantity_;
-  for (Method m : methods) {
-    auto d = deformers.find(m);
-    if (d == deformers.end()) continue;
-    Entry& e = entries_[m];
-    if (e.deformer != d->second) {  // a new deformer (scene): new gradients
-      e.deformer = d->second;
-      e.gradients = std::make_unique<DeformationGradients>(*e.deformer, restMesh);
-      changed = true;
+void ShowSettings::setView(std::size_t v, int quantity, std::size_t viewCount) {
+  const ViewShow last = views.back();
+  views.resize(std::max(views.size(), std::max(viewCount, v + 1)), last);
+  views[v].quantity = quantity;
+}
+
+int ShowSettings::otherView(std::size_t v, std::size_t viewCount) const {
+  const int other = view(v).other;
+  if (other >= 0 && static_cast<std::size_t>(other) < viewCount && static_cast<std::size_t>(other) != v) return other;
+  for (std::size_t w = 0; w < viewCount; ++w)
+    if (w != v) return static_cast<int>(w);
+  return -1;
+}
+
+bool ShowSettings::anyShown(std::size_t viewCount) const {
+  for (std::size_t v = 0; v < viewCount; ++v)
+    if (view(v).quantity > 0) return true;
+  return false;
+}
+
+bool ShowSettings::usesSource(QuantitySource source, std::size_t viewCount) const {
+  for (std::size_t v = 0; v < viewCount; ++v)
+    if (quantityDescriptor(view(v).quantity).source == source) return true;
+  return false;
+}
+
+ShowSettings parseShow(const std::string& value, const std::string& option, int& fieldVertex) {
+  ShowSettings show;
+  show.views.clear();
+  fieldVertex = -1;
+  std::size_t start = 0;
+  while (start <= value.size()) {
+    const std::size_t end = std::min(value.find(',', start), value.size());
+    std::string id = value.substr(start, end - start);
+    if (id.rfind("field:", 0) == 0) {
+      const std::string index = id.substr(6);
+      char* stop = nullptr;
+      const long vertex = std::strtol(index.c_str(), &stop, 10);
+      if (index.empty() || *stop != '\0' || vertex < 0 || vertex > 1000000000)
+        throw InputError(option, -1, "expected a cage vertex index after 'field:', got '" + index + "'",
+                         "--show field:3");
+      fieldVertex = static_cast<int>(vertex);
+      id = "field";
     }
+    show.views.push_back(ViewShow{quantityIndex(id, option), -1});
+    start = end + 1;
   }
-  if (!changed) return;
-  const std::vector<std::vector<int>> faces = faceLists(triangles);
-  for (auto& [method, e] : entries_) {
-    if (!e.gradients) continue;
-    const DeformationAnalysis a = analyzeDeformation(*e.gradients, restMesh, faces, pose, params);
-    ViewMeasurement& out = e.measurement;
-    out.detJ = a.points.detJ;
-    out.values = quantityDescriptors()[static_cast<std::size_t>(quantity)].values(a, triangles);
-    out.closed = a.volume.closed;
-    out.volumeChange = a.volume.change();
-    out.foldovers = a.points.foldovers;
-    out.distortionP95 = quantile(a.points.distortion, 0.95);
-  }
-  measured_ = generation;
-  quantity_ = quantity;
-  ++generation_;
+  return show;
 }
 
-void ViewQuantities::sweepNu(const std::shared_ptr<const CageDeformer>& deformer, const Eigen::MatrixXd& restMesh,
-                             const Eigen::MatrixXi& triangles, const Eigen::MatrixXd& pose, const DeformParams& params,
-                             const std::vector<double>& nus, std::uint64_t generation) {
-  std::unique_ptr<DeformationGradients> own;
-  const DeformationGradients* gradients = nullptr;
-  for (const auto& [method, e] : entries_)
-    if (e.deformer == deformer && e.gradients) gradients = e.gradients.get();
-  if (!gradients) {
-    own = std::make_unique<DeformationGradients>(*deformer, restMesh);
-    gradients = own.get();
-  }
-  nuSweep_ = somicage::sweepNu(*gradients, restMesh, faceLists(triangles), pose, params, nus);
-  nuSweepGeneration_ = generation;
-}
-
-const ViewMeasurement* ViewQuantities::measurement(Method method) const {
-  auto it = entries_.find(method);
-  return it == entries_.end() || !it->second.gradients ? nullptr : &it->second.measurement;
+ColorRange quantityRange(const ShowSettings& show, int quantity, const std::vector<const ViewMeasurement*>& measured) {
+  const QuantityDescriptor& d = quantityDescriptor(quantity);
+  auto fixed = show.ranges.find(quantity);
+  if (fixed != show.ranges.end() && fixed->second.fixed && rangeProblem(fixed->second.range, d.scale).empty())
+    return fixed->second.range;
+  std::vector<const ViewMeasurement*> views;
+  for (std::size_t v = 0; v < measured.size(); ++v)
+    if (show.view(v).quantity == quantity) views.push_back(measured[v]);
+  return sharedRange(views, d);
 }
 
 }  // namespace somicage::editor

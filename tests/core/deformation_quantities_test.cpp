@@ -193,5 +193,29 @@ TEST(CoordinateFields, EqualTheCoordinateColumnsOfAnIndependentQuadrature) {
   }
 }
 
+// One element's streamed terms (the editor's field view) give the field of the stored coordinate matrix, 2D and 3D.
+TEST(CoordinateFields, OneElementsTermsGiveTheStoredMatrixsField) {
+  for (int dim : {2, 3}) {
+    const Cage cage = dim == 3 ? test::makeIcosphere(1) : test::makeStarPolygon(7);
+    const Eigen::MatrixXd points = dim == 3 ? test::randomBallPoints(7, 0.3, 4) : test::randomDiscPoints(7, 0.3, 4);
+    const SomiglianaCoordinates all = computeSomiglianaCoordinates(cage, points);
+    const int vertex = 3, face = 5;
+    for (double nu : {-0.5, 0.3, 0.45}) {
+      const ElementTerms v = integrateElementTerms(cage, points, ElementTerms::Kind::Vertex, vertex);
+      const ElementTerms f = integrateElementTerms(cage, points, ElementTerms::Kind::Face, face);
+      const Eigen::MatrixXd expected = vertexCoordinateField(all, cage, vertex, nu);
+      const Eigen::MatrixXd expectedFace = faceCoordinateField(all, face, nu);
+      EXPECT_LE((elementCoordinateField(v, nu) - expected).cwiseAbs().maxCoeff(),
+                1e-14 * expected.cwiseAbs().maxCoeff());
+      EXPECT_LE((elementCoordinateField(f, nu) - expectedFace).cwiseAbs().maxCoeff(),
+                1e-14 * expectedFace.cwiseAbs().maxCoeff());
+      EXPECT_EQ(v.winding, all.winding);
+    }
+  }
+  EXPECT_THROW(
+      integrateElementTerms(test::makeIcosphere(1), Eigen::MatrixXd::Zero(1, 3), ElementTerms::Kind::Face, 999),
+      InputError);
+}
+
 }  // namespace
 }  // namespace somicage

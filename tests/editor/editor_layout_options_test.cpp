@@ -90,9 +90,9 @@ TEST(EditorOptions, BadInputNamesTheOption) {
 
 TEST(EditorOptions, ShowNamesAQuantityDescriptor) {
   const EditorOptions o = parseEditorArgs({"--show", "detj", "--hide-cage"});
-  EXPECT_STREQ(quantityDescriptors()[static_cast<std::size_t>(o.show)].id, "detj");
-  EXPECT_TRUE(quantityDescriptors()[static_cast<std::size_t>(o.show)].usesJacobian);
+  EXPECT_STREQ(quantityDescriptor(o.show.view(0).quantity).id, "detj");
+  EXPECT_EQ(quantityDescriptor(o.show.view(2).quantity).source, QuantitySource::Jacobian);  // every view
   EXPECT_TRUE(o.hideCage);
-  EXPECT_EQ(parseEditorArgs({}).show, 0);  // shading only
+  EXPECT_EQ(parseEditorArgs({}).show.view(0).quantity, 0);  // shading only
   EXPECT_EQ(quantityDescriptors()[0].values, nullptr);
 }

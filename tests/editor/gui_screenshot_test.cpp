@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -279,4 +280,105 @@ TEST(GuiScreenshot, MakeCageShowsTheCandidateAroundTheMesh) {
   ASSERT_EQ(std::sscanf(log.c_str() + at, "make-cage: %d faces", &faces), 1) << log;
   EXPECT_GE(faces, 12);
   EXPECT_LE(faces, 40);
+}
+
+// ---- per-view Show, fixed range, difference and field views (issue 12) ----
+namespace {
+
+// The "v x y z" rows of an OBJ.
+std::vector<std::array<double, 3>> objVertices(const std::string& path) {
+  std::vector<std::array<double, 3>> v;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::array<double, 3> p{};
+    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &p[0], &p[1], &p[2]) == 3) v.push_back(p);
+  }
+  return v;
+}
+
+}  // namespace
+
+// The Green pane shows its distance to the Somigliana pane, the Somigliana pane shading only; the legend's top is
+// the largest distance of the two methods as `somicage deform` writes them, over the cage's diameter (2e-5: the
+// editor stores its coordinates in float).
+TEST(GuiScreenshot, DifferenceViewIsTheDistanceToTheOtherPaneInCageDiameters) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  const Image img = screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
+                                   " --compare somigliana,green --show shading,difference --hide-ui --hide-cage "
+                                   "--size 800x400",
+                               "difference");
+  const auto [lo, hi] = legendRange(readLog("difference"), "difference");
+  std::vector<std::vector<std::array<double, 3>>> deformed;
+  for (const char* method : {"somigliana", "green"}) {
+    const std::string out = (outputDir() / (std::string("difference_") + method + ".obj")).string();
+    ASSERT_EQ(runSomicage("deform --cage " + quote(f.cage) + " --posed " + quote(f.posed) + " --mesh " + quote(f.mesh) +
+                              " --out " + quote(out) + " --method " + method,
+                          std::string("difference_") + method),
+              0);
+    deformed.push_back(objVertices(out));
+  }
+  ASSERT_EQ(deformed[0].size(), deformed[1].size());
+  double largest = 0;
+  for (std::size_t i = 0; i < deformed[0].size(); ++i) {
+    double d2 = 0;
+    for (int k = 0; k < 3; ++k) d2 += std::pow(deformed[0][i][k] - deformed[1][i][k], 2);
+    largest = std::max(largest, std::sqrt(d2));
+  }
+  const double diameter = 2 * std::sqrt(3.0);  // the cube [-1, 1]^3
+  EXPECT_EQ(lo, 0.0);
+  EXPECT_GT(largest / diameter, 1e-3);  // the methods differ on this pose
+  EXPECT_NEAR(hi, largest / diameter, 2e-5);
+  // The left pane is shaded (warm), the right one coloured by viridis (blue to yellow: not warm).
+  EXPECT_GT(img.coverage(0, 400), 0.02);
+  EXPECT_LT(img.coverage(400, 800), 0.5 * img.coverage(0, 400));
+}
+
+TEST(GuiScreenshot, FixedRangeIsTheTypedOneAndABadOneIsRefused) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
+                 " --show detj --range 0.5:2 --hide-ui --size 320x240",
+             "fixed_range");
+  const auto [lo, hi] = legendRange(readLog("fixed_range"));
+  EXPECT_EQ(lo, 0.5);
+  EXPECT_EQ(hi, 2.0);
+  EXPECT_EQ(runSomicage("--show detj --range 1.5:3 --screenshot x.png", "bad_range"), 2);
+  EXPECT_NE(readLog("bad_range").find("--range"), std::string::npos) << readLog("bad_range");
+}
+
+// The field of a cage vertex: magnitudes from 0 (viridis), the mesh no longer in its shading colour; a vertex the
+// cage does not have is refused with the cage's count.
+TEST(GuiScreenshot, FieldViewOfACageVertex) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  const Image img = screenshot(quote(f.mesh) + " " + quote(f.cage) +
+                                   " --show field:3 --hide-ui --hide-cage "
+                                   "--size 320x240",
+                               "field");
+  const auto [lo, hi] = legendRange(readLog("field"), "field");
+  EXPECT_EQ(lo, 0.0);
+  // Sum_i T_i = I inside (Eq. 9) and a cube corner's T_i is a fraction of it: |T_3 n_3| is well inside (0, 1.5).
+  EXPECT_GT(hi, 0.01);
+  EXPECT_LT(hi, 1.5);
+  EXPECT_LT(img.coverage(), 0.02);
+  EXPECT_EQ(runSomicage(quote(f.mesh) + " " + quote(f.cage) + " --show field:99 --screenshot x.png", "bad_field"), 2);
+  EXPECT_NE(readLog("bad_field").find("the cage has 8 vertices"), std::string::npos) << readLog("bad_field");
+}
+
+// Paper Fig. 3 in 2D: the field of one polygon vertex as arrows over the inside at two nu, side by side (two
+// screenshots). The field changes with nu (Eq. 8a: alpha and beta), so the legends' tops differ.
+TEST(GuiScreenshot, FieldArrowsIn2DAtTwoNu) {
+  REQUIRE_DISPLAY();
+  double top[2] = {0, 0};
+  const char* nus[2] = {"-0.5", "0.45"};
+  for (int k = 0; k < 2; ++k) {
+    const std::string name = std::string("field2d_") + (k ? "b" : "a");
+    const Image img = screenshot(std::string("--demo 2d --show field:2 --hide-ui --size 640x480 --nu ") + nus[k], name);
+    EXPECT_GT(img.width, 0);
+    top[k] = legendRange(readLog(name), "field").second;
+    EXPECT_GT(top[k], 0.01) << readLog(name);
+  }
+  EXPECT_GT(std::abs(top[1] - top[0]), 0.05 * top[0]);
 }

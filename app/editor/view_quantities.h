@@ -1,0 +1,37 @@
+// The editor's quantity state: what each view shows (view_quantity.h), the worker that measures it
+// (measure_worker.h) and the measurements installed from it, one per view. No GL, no ImGui.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "measure_worker.h"
+#include "view_quantity.h"
+
+namespace somicage::editor {
+
+struct ViewQuantities {
+  ShowSettings show;
+  MeasureWorker worker;
+  std::vector<std::optional<ViewMeasurement>> measured;  // per view: the installed measurement, if any
+  MeasureKey installed;                                  // the key of the worker's measurements in `measured`
+  std::uint64_t differenceGeneration = ~0ull;            // the pose the Difference views were computed for
+  std::uint64_t generation = 0;                          // bumps when `measured` changes (the renderer re-uploads)
+  int droppedStale = 0;                                  // outcomes dropped because their key was no longer current
+
+  std::vector<NuSweepEntry> nuSweep;
+  std::uint64_t nuSweepGeneration = ~0ull;  // the pose the sweep was made for
+  bool sweepRequested = false;
+
+  const ViewMeasurement* measurement(std::size_t view) const {
+    return view < measured.size() && measured[view] ? &*measured[view] : nullptr;
+  }
+  std::vector<const ViewMeasurement*> measurements(std::size_t viewCount) const {
+    std::vector<const ViewMeasurement*> out;
+    for (std::size_t v = 0; v < viewCount; ++v) out.push_back(measurement(v));
+    return out;
+  }
+};
+
+}  // namespace somicage::editor

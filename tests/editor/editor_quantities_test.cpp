@@ -1,0 +1,284 @@
+// The views' quantities (view_quantity.h, measure_worker.h, quantity_overlay.h): colour ranges shared by the views
+// that show a quantity and typed ranges, the difference view against independently deformed points, the coordinate
+// field view against the coordinate columns, stale worker results dropped, the J bytes freed and counted.
+#include <gtest/gtest.h>
+
+#include <Eigen/LU>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <thread>
+
+#include "app_state.h"
+#include "background_job.h"
+#include "coordinate_fields.h"
+#include "errors.h"
+#include "methods/method_descriptors.h"
+#include "quantity_overlay.h"
+#include "scene.h"
+#include "somigliana_coordinates.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+ViewMeasurement withValues(std::initializer_list<double> values) {
+  ViewMeasurement m;
+  m.values = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(values.size()));
+  Eigen::Index i = 0;
+  for (double v : values) m.values[i++] = v;
+  return m;
+}
+
+// The demo scene of `dim` with every view's deformer installed.
+void loadDemo(AppState& state, int dim, bool compare) {
+  state.compare = compare;
+  requestDemo(state, dim);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  installOutcome(state, std::move(*out));
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_TRUE(updateDeformation(state));
+}
+
+// Lifts the right end of the 3D demo cage (a bend) and deforms.
+void bend(AppState& state, double lift) {
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i)
+    if (pose(i, 0) > 2.0) pose(i, 1) += lift;
+  setPose(state, pose);
+  ASSERT_TRUE(updateDeformation(state));
+}
+
+int quantity(const char* id) { return quantityIndex(id, "test"); }
+
+}  // namespace
+
+TEST(EditorQuantities, ViewsShowingAQuantityShareItsRangeAndATypedRangeReplacesIt) {
+  const ViewMeasurement a = withValues({0.5, 1.2}), b = withValues({1.1, 3.0}), c = withValues({1.0, 7.0});
+  ShowSettings show;
+  show.setView(0, quantity("detj"), 3);
+  show.setView(1, quantity("detj"), 3);
+  show.setView(2, quantity("distortion"), 3);
+  const std::vector<const ViewMeasurement*> views{&a, &b, &c};
+  // det J over views 0 and 1: the largest ratio away from 1 is 3 (view 1), so [1/3, 3]; view 2's 7 is not det J.
+  ColorRange r = quantityRange(show, quantity("detj"), views);
+  EXPECT_DOUBLE_EQ(r.lo, 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(r.hi, 3.0);
+  r = quantityRange(show, quantity("distortion"), views);
+  EXPECT_DOUBLE_EQ(r.lo, 1.0);
+  EXPECT_DOUBLE_EQ(r.hi, 7.0);
+  // A typed range replaces the shared one; one the scale cannot use (a ratio range not around 1) does not.
+  show.ranges[quantity("detj")] = RangeSetting{true, ColorRange{0.5, 4.0}};
+  r = quantityRange(show, quantity("detj"), views);
+  EXPECT_EQ(r.lo, 0.5);
+  EXPECT_EQ(r.hi, 4.0);
+  // Each side of 1 on its own log scale: 0.5 -> 0, 1 -> 1/2, 2 -> 1/2 + log 2 / (2 log 4) = 3/4, 4 -> 1.
+  EXPECT_NEAR(colorCoordinate(0.5, 1, r, ColorScale::LogDiverging), 0.0, 1e-7);
+  EXPECT_NEAR(colorCoordinate(1.0, 1, r, ColorScale::LogDiverging), 0.5, 1e-7);
+  EXPECT_NEAR(colorCoordinate(2.0, 1, r, ColorScale::LogDiverging), 0.75, 1e-7);
+  EXPECT_NEAR(colorCoordinate(4.0, 1, r, ColorScale::LogDiverging), 1.0, 1e-7);
+  EXPECT_EQ(colorCoordinate(2.0, -0.1, r, ColorScale::LogDiverging), -1.0f);  // a fold-over has its own colour
+  show.ranges[quantity("detj")].range = ColorRange{2.0, 4.0};
+  EXPECT_FALSE(rangeProblem(show.ranges[quantity("detj")].range, ColorScale::LogDiverging).empty());
+  r = quantityRange(show, quantity("detj"), views);
+  EXPECT_DOUBLE_EQ(r.hi, 3.0);  // the automatic range again
+  EXPECT_FALSE(rangeProblem(ColorRange{3, 1}, ColorScale::Viridis).empty());
+  EXPECT_TRUE(rangeProblem(ColorRange{0, 0.1}, ColorScale::Viridis).empty());
+}
+
+TEST(EditorQuantities, ShowParsesOnePerViewAndTheFieldVertex) {
+  int vertex = -1;
+  ShowSettings s = parseShow("detj,difference", "--show", vertex);
+  EXPECT_EQ(s.view(0).quantity, quantity("detj"));
+  EXPECT_EQ(s.view(1).quantity, quantity("difference"));
+  EXPECT_EQ(s.view(2).quantity, quantity("difference"));  // past the end: as the last
+  EXPECT_EQ(vertex, -1);
+  s = parseShow("field:12", "--show", vertex);
+  EXPECT_EQ(s.view(0).quantity, quantity("field"));
+  EXPECT_EQ(vertex, 12);
+  for (const char* bad : {"field:", "field:x", "field:-1", "detj,,area", "volume"}) {
+    try {
+      parseShow(bad, "--show", vertex);
+      ADD_FAILURE() << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "--show") << bad;
+    }
+  }
+}
+
+// The Somigliana view's difference to the Green view, against both methods deformed by deformers built here in
+// double precision, over the cage's bounding-box diagonal. 2e-5: the editor stores its coordinates in float.
+TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters) {
+  AppState state;
+  loadDemo(state, 3, true);
+  bend(state, 0.6);
+  state.quantities.show.setView(0, quantity("difference"), 3);
+  state.quantities.show.views[0].other = 1;  // Green
+  measureViews(state);
+  const ViewMeasurement* m = state.quantities.measurement(0);
+  ASSERT_NE(m, nullptr);
+  const Scene& scene = *state.scene;
+  const Eigen::MatrixXd a =
+      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+  const Eigen::MatrixXd b =
+      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+  Eigen::Vector3d lo, hi;
+  bounds3(scene.restCage.vertices, lo, hi);
+  const double diameter = (hi - lo).norm();
+  ASSERT_EQ(m->values.size(), a.rows());
+  double largest = 0;
+  for (Eigen::Index p = 0; p < a.rows(); ++p) {
+    const double expected = (a.row(p) - b.row(p)).norm() / diameter;
+    EXPECT_NEAR(m->values[p], expected, 2e-5) << "vertex " << p;
+    largest = std::max(largest, expected);
+  }
+  EXPECT_GT(largest, 1e-3);                             // the methods differ on a bend: the test sees something
+  EXPECT_EQ(state.quantities.measurement(1), nullptr);  // the other views show shading only
+  // Another pose recomputes it.
+  bend(state, -0.3);
+  measureViews(state);
+  const Eigen::MatrixXd a2 =
+      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+  const Eigen::MatrixXd b2 =
+      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
+  EXPECT_NEAR(state.quantities.measurement(0)->values[0], (a2.row(0) - b2.row(0)).norm() / diameter, 2e-5);
+}
+
+// The field of a selected cage vertex (and face) is |T_i(x) n_i| (|K_j(x) n_j|) of the full coordinate matrix.
+TEST(EditorQuantities, FieldViewIsTheNormOfTheSelectedElementsCoordinateColumns) {
+  AppState state;
+  loadDemo(state, 2, false);
+  state.params.nu = 0.25;
+  const int vertex = 4;
+  state.selection.setIndices({vertex});
+  state.quantities.show.setAll(quantity("field"));
+  measureViews(state);
+  EXPECT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());
+  state.quantities.worker.join();
+  measureViews(state);
+  const ViewMeasurement* m = state.quantities.measurement(0);
+  ASSERT_NE(m, nullptr);
+  const Scene& scene = *state.scene;
+  const SomiglianaCoordinates all = computeSomiglianaCoordinates(scene.restCage, scene.meshVertices);
+  const Eigen::MatrixXd field = vertexCoordinateField(all, scene.restCage, vertex, 0.25);
+  int inside = 0;
+  for (Eigen::Index p = 0; p < field.rows(); ++p) {
+    if (all.winding[p] < 0.5) {
+      EXPECT_TRUE(std::isnan(m->values[p]));
+      continue;
+    }
+    ++inside;
+    EXPECT_NEAR(m->values[p], field.row(p).norm(), 1e-12 * (1 + field.row(p).norm())) << "point " << p;
+  }
+  EXPECT_GT(inside, 100);
+  // Face mode with a whole face selected: that face's K_j n_j.
+  const int face = 2;
+  state.elementMode = ElementMode::Face;
+  state.selection.setIndices({scene.restCage.faces(face, 0), scene.restCage.faces(face, 1)});
+  measureViews(state);
+  state.quantities.worker.join();
+  measureViews(state);
+  const Eigen::MatrixXd faceField = faceCoordinateField(all, face, 0.25);
+  m = state.quantities.measurement(0);
+  ASSERT_NE(m, nullptr);
+  for (Eigen::Index p = 0; p < faceField.rows(); p += 7)
+    if (all.winding[p] >= 0.5) {
+      EXPECT_NEAR(m->values[p], faceField.row(p).norm(), 1e-12 * (1 + faceField.row(p).norm()));
+    }
+}
+
+// A result measured for a pose that is gone by the time it arrives is dropped, the current pose measured next; the
+// installed det J is the current pose's. Turning the quantity off frees the gradients.
+TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) {
+  AppState state;
+  loadDemo(state, 3, false);
+  bend(state, 0.4);
+  state.quantities.show.setAll(quantity("detj"));
+  measureViews(state);  // starts on the 0.4 bend
+  ASSERT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());
+  bend(state, 0.4);  // the pose moves on while it runs
+  state.quantities.worker.join();
+  measureViews(state);
+  EXPECT_EQ(state.quantities.droppedStale, 1);
+  EXPECT_EQ(state.quantities.measurement(0), nullptr);
+  ASSERT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());  // measuring the current pose
+  state.quantities.worker.join();
+  measureViews(state);
+  EXPECT_EQ(state.quantities.droppedStale, 1);
+  const ViewMeasurement* m = state.quantities.measurement(0);
+  ASSERT_NE(m, nullptr);
+  EXPECT_TRUE(state.quantities.installed == measureKey(measureRequest(state)));
+  // det J of the current pose (the 0.8 bend), not of the first one.
+  const Scene& scene = *state.scene;
+  const DeformationGradients gradients(*state.deformers.at(methods::somigliana()), scene.meshVertices);
+  Eigen::MatrixXd positions, jacobians;
+  gradients.evaluate(state.pose, state.params, positions, jacobians);
+  double largest = 0;
+  for (Eigen::Index p = 0; p < jacobians.rows(); ++p) {
+    const Eigen::Matrix<double, 1, 9> row = jacobians.row(p);
+    const Eigen::Matrix3d jt = Eigen::Map<const Eigen::Matrix3d>(row.data());  // row-major J read column-major: J^T
+    if (!std::isfinite(jt(0, 0))) continue;
+    EXPECT_NEAR(m->detJ[p], jt.determinant(), 1e-9 * std::abs(jt.determinant())) << "vertex " << p;
+    largest = std::max(largest, std::abs(std::log(jt.determinant())));
+  }
+  EXPECT_GT(largest, 0.05);  // the bend changes volumes: the test sees something
+  EXPECT_GT(state.quantities.worker.heldBytes(), 0u);
+  state.quantities.show.setAll(0);
+  measureViews(state);
+  EXPECT_EQ(state.quantities.worker.heldBytes(), 0u);
+  EXPECT_EQ(state.quantities.measurement(0), nullptr);
+}
+
+// The J bytes count in the memory check: with too little free memory the quantity is refused, with the estimate.
+TEST(EditorQuantities, GradientsThatWouldNotFitAreRefusedWithTheirSize) {
+  AppState state;
+  loadDemo(state, 3, false);
+  setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "100000", 1);
+  state.quantities.show.setAll(quantity("detj"));
+  measureViews(state);
+  state.quantities.worker.join();
+  measureViews(state);
+  unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors.front().find("measuring the pose failed"), std::string::npos) << state.errors.front();
+  EXPECT_NE(state.errors.front().find("free"), std::string::npos) << state.errors.front();
+  EXPECT_EQ(state.quantities.show.view(0).quantity, 0);  // turned off
+  EXPECT_EQ(state.quantities.measurement(0), nullptr);
+}
+
+// The worker pattern under the measurements: progress and stage are visible while a job runs, Cancel reaches it at
+// its next report, and a new start cancels the running job and drops its outcome.
+TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
+  BackgroundJob<std::string> job;
+  std::atomic<bool> running{false};
+  job.start([&](JobContext& context) {
+    context.setStage("spinning");
+    running = true;
+    while (context.report(0.25)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return std::string("stopped");
+  });
+  while (!running) std::this_thread::yield();
+  EXPECT_TRUE(job.busy());
+  EXPECT_EQ(job.stage(), "spinning");
+  EXPECT_FALSE(job.poll().has_value());  // nothing while it runs
+  job.cancel();
+  const std::optional<std::string> out = job.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_EQ(*out, "stopped");
+  EXPECT_EQ(job.progress(), 0.25);
+  EXPECT_FALSE(job.busy());
+
+  running = false;
+  job.start([&](JobContext& context) {
+    running = true;
+    while (context.report(0.5)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    return std::string("superseded");
+  });
+  while (!running) std::this_thread::yield();
+  job.start([](JobContext&) { return std::string("second"); });
+  EXPECT_EQ(job.wait().value_or(""), "second");  // the first one's outcome never shows
+  EXPECT_FALSE(job.poll().has_value());
+}
