@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh_material.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -36,6 +37,8 @@ struct MeshDocument {
   std::vector<std::vector<int>> faceUVs;
   Eigen::MatrixXd uvs;                    // #vt by 2
   std::vector<std::string> faceMaterial;  // per face: the `usemtl` name in effect ("" = none)
+  // Materials the file itself defines (assimp formats); OBJ's come from its .mtl libraries (documentMaterials).
+  std::vector<MeshMaterial> materials;
 };
 
 // Parses OBJ text into a document (geometry through parseObj). source names it in errors and resolves mtllib.

@@ -9,7 +9,7 @@
 // at exactly equal positions (in order of first appearance), which a cage read from STL needs.
 //
 // Written: .obj (writeObjDocument: lossless), .ply (binary, double positions and the polygons; nothing else)
-// and .glb (gltf_writer.h: triangles, UVs, materials by name). What a format cannot carry is named in the
+// and .glb (gltf_writer.h: triangles, UVs, materials with their colours and textures). What a format cannot carry is named in the
 // returned notes, never dropped silently.
 #pragma once
 
