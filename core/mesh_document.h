@@ -5,7 +5,8 @@
 // (OBJ: parseObj, the one OBJ parser; other formats: mesh_formats.h). An OBJ document also keeps every record of
 // the file in order: `vt`, `g`, `o`, `usemtl`, `mtllib`, `s`, `f` and `l` lines (face index triples included)
 // and comments are written back verbatim; `v` lines get the new positions (any extra tokens, e.g. vertex colours,
-// kept); `vn` lines get normals recomputed for the new positions (see recomputeNormals).
+// kept); `vn` lines get the deformed normals: transformed by the deformation's gradient (normal_transform.h) or
+// recomputed for the new positions (recomputeNormals).
 #pragma once
 
 #include <Eigen/Core>
@@ -53,7 +54,9 @@ Eigen::MatrixXd recomputeNormals(const MeshDocument& document, const Eigen::Matr
 // Writes the document as OBJ with the given positions (#V by 2 or 3; 2 columns: z = 0), %.17g, a final newline,
 // atomically. `mtllib` lines whose file lies next to the source are rewritten as a path relative to the output's
 // folder when the output goes elsewhere, so the materials (and the textures they name) still resolve.
+// normals: one per `vn` record (normalCount by 3, e.g. transformNormals); empty: recomputeNormals of positions.
 // A document without records is written as saveObj does.
-void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions);
+void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions,
+                      const Eigen::MatrixXd& normals = Eigen::MatrixXd());
 
 }  // namespace somicage

@@ -195,15 +195,15 @@ MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options)
 // ---- Writing ----
 
 std::vector<std::string> writeObj(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
-  writeObjDocument(path, document, positions);
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd& normals) {
+  writeObjDocument(path, document, positions, normals);
   return {};
 }
 
 void appendBytes(std::string& out, const void* data, size_t size) { out.append(static_cast<const char*>(data), size); }
 
 std::vector<std::string> writePly(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd&) {
   const std::vector<std::vector<int>>& faces = document.geometry.faces;
   for (const std::vector<int>& face : faces) {
     if (face.size() > 255) {
@@ -244,7 +244,7 @@ std::vector<std::string> writePly(const std::string& path, const MeshDocument& d
 }
 
 std::vector<std::string> writeGlb(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd&) {
   return writeGlbAnimation(path, document, {positions}, 24.0);
 }
 
@@ -252,7 +252,9 @@ std::vector<std::string> writeGlb(const std::string& path, const MeshDocument& d
 struct FormatDescriptor {
   const char* extension;
   MeshDocument (*read)(const std::string&, const ReadOptions&);
-  std::vector<std::string> (*write)(const std::string&, const MeshDocument&, const Eigen::MatrixXd&);
+  // path, document, positions, normals (one per `vn`; empty: recomputed; only OBJ carries them)
+  std::vector<std::string> (*write)(const std::string&, const MeshDocument&, const Eigen::MatrixXd&,
+                                    const Eigen::MatrixXd&);
 };
 
 const std::vector<FormatDescriptor>& formats() {
@@ -300,13 +302,13 @@ PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options) {
 }
 
 std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,
-                                           const Eigen::MatrixXd& positions) {
+                                           const Eigen::MatrixXd& positions, const Eigen::MatrixXd& normals) {
   const FormatDescriptor* format = findFormat(path);
   if (!format || !format->write) {
     throw InputError(path, -1, "cannot write meshes as '." + extensionOf(path) + "'",
                      "give an output file ending in one of " + writableExtensions());
   }
-  return format->write(path, document, positions);
+  return format->write(path, document, positions, normals);
 }
 
 PolygonMesh weldVertices(const PolygonMesh& mesh) {
