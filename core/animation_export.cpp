@@ -117,8 +117,9 @@ std::vector<std::string> writeAnimation(const std::string& out, const MeshDocume
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
                                         const ProgressCallback& progress, const std::vector<Eigen::MatrixXd>& normals) {
   if (endsWithGlb(out)) {
+    step(progress, 0.0);  // the last chance to stop: once the file is in place, it stays
     std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps);
-    step(progress, 1.0);
+    progress(1.0);
     return notes;
   }
   return writeObjSequence(out, document, frames, first, progress, normals);

@@ -21,6 +21,8 @@
 #include "editor_renderer.h"
 #include "errors.h"
 #include "event_queue.h"
+#include "export_jobs.h"
+#include "export_panel.h"
 #include "frame_pacing.h"
 #include "gl_context.h"
 #include "gpu_deformer.h"
@@ -176,6 +178,7 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
   feedInput(window, queue);
   pollWorker(state);
+  pollExport(state);
   if (!state.droppedPaths.empty()) {
     std::vector<std::string> dropped;
     dropped.swap(state.droppedPaths);
@@ -206,6 +209,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
       drawPoseLibraryPanel(state, top);
     }
     drawAnimationExportDialogs(state);
+    drawExportProgress(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
@@ -404,7 +408,7 @@ int runWindow(const EditorOptions& options) {
       while (!state.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.loadingScene || state.animation.playing ||
+        demand.busy = state.worker.busy() || state.exporter.busy() || state.loadingScene || state.animation.playing ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);
