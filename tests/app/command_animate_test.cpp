@@ -320,6 +320,56 @@ TEST(BlenderImport, TexturedGlbKeepsColoursImageAndUvs) {
   EXPECT_EQ(loops, 6);
 }
 
+// The OBJ sequence carries the mesh's normals by J: keyed at a quarter turn of the cube cage about z (which maps the
+// cube's vertices onto each other exactly, and which Somigliana coordinates reproduce), the last frame's normals
+// are R n / |n| to 1e-9 and the first frame's n / |n|; --recompute-normals gives the faces' normals instead.
+TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
+  ScratchDir dir;
+  const std::string mesh = dir.file("tet.obj");
+  std::ofstream(mesh) << "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\n"
+                         "vn 1 0.1 0.2\nvn 0.1 1 0\nvn 0 0.3 1\nvn -1 -1 -0.5\n"
+                         "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\nf 3//3 4//4 1//1\n";
+  const Eigen::MatrixXd rest = loadMesh(dataFile("cube_cage.obj")).vertices;
+  Eigen::Matrix3d R;
+  R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  const std::string session =
+      R"({"format": "somicage-session", "version": 2, "mesh": ")" + mesh + R"(", "cage": ")" +
+      dataFile("cube_cage.obj") + R"(", "method": "somigliana",
+      "params": {"blend": 0, "nu": 0, "gamma": 0, "tractionCorrection": true},
+      "poses": [{"name": "rest", "vertices": )" +
+      matrixJson(rest) + R"(}, {"name": "turned", "vertices": )" + matrixJson(rest * R.transpose()) +
+      R"(}], "timeline": {"fps": 24, "first": 0, "last": 2, "loop": true, "interpolation": "linear",
+      "keys": [{"frame": 0, "pose": "rest"}, {"frame": 2, "pose": "turned"}]}})";
+  std::ofstream(dir.file("s.json")) << session;
+  const auto normalsOf = [](const std::string& text) {
+    std::vector<Eigen::Vector3d> normals;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+      if (line.rfind("vn ", 0) != 0) continue;
+      std::istringstream numbers(line.substr(3));
+      Eigen::Vector3d n;
+      numbers >> n[0] >> n[1] >> n[2];
+      normals.push_back(n);
+    }
+    return normals;
+  };
+  const std::vector<Eigen::Vector3d> input = normalsOf(readFile(mesh));
+  RunResult r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq") + "/"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const std::vector<Eigen::Vector3d> first = normalsOf(readFile(dir.file("seq/tet_0000.obj")));
+  const std::vector<Eigen::Vector3d> last = normalsOf(readFile(dir.file("seq/tet_0002.obj")));
+  ASSERT_EQ(last.size(), 4u);
+  for (size_t n = 0; n < 4; ++n) {
+    EXPECT_LE((first[n] - input[n].normalized()).norm(), 1e-9) << "vn " << n << " at rest";
+    EXPECT_LE((last[n] - R * input[n].normalized()).norm(), 1e-9) << "vn " << n << " turned";
+  }
+  r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq2") + "/", "--recompute-normals"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const std::vector<Eigen::Vector3d> recomputed = normalsOf(readFile(dir.file("seq2/tet_0002.obj")));
+  EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
+}
+
 TEST(DeformLossless, TexturedObjAtRestKeepsEveryRecord) {
   ScratchDir dir;
   const std::string mesh = dir.file("tri.obj"), out = dir.file("out.obj");
