@@ -341,24 +341,11 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
       R"(}], "timeline": {"fps": 24, "first": 0, "last": 2, "loop": true, "interpolation": "linear",
       "keys": [{"frame": 0, "pose": "rest"}, {"frame": 2, "pose": "turned"}]}})";
   std::ofstream(dir.file("s.json")) << session;
-  const auto normalsOf = [](const std::string& text) {
-    std::vector<Eigen::Vector3d> normals;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-      if (line.rfind("vn ", 0) != 0) continue;
-      std::istringstream numbers(line.substr(3));
-      Eigen::Vector3d n;
-      numbers >> n[0] >> n[1] >> n[2];
-      normals.push_back(n);
-    }
-    return normals;
-  };
-  const std::vector<Eigen::Vector3d> input = normalsOf(readFile(mesh));
+  const std::vector<Eigen::Vector3d> input = objNormals(mesh);
   RunResult r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq") + "/"});
   ASSERT_EQ(r.exitCode, 0) << r;
-  const std::vector<Eigen::Vector3d> first = normalsOf(readFile(dir.file("seq/tet_0000.obj")));
-  const std::vector<Eigen::Vector3d> last = normalsOf(readFile(dir.file("seq/tet_0002.obj")));
+  const std::vector<Eigen::Vector3d> first = objNormals(dir.file("seq/tet_0000.obj"));
+  const std::vector<Eigen::Vector3d> last = objNormals(dir.file("seq/tet_0002.obj"));
   ASSERT_EQ(last.size(), 4u);
   for (size_t n = 0; n < 4; ++n) {
     EXPECT_LE((first[n] - input[n].normalized()).norm(), 1e-9) << "vn " << n << " at rest";
@@ -366,7 +353,7 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
   }
   r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq2") + "/", "--recompute-normals"});
   ASSERT_EQ(r.exitCode, 0) << r;
-  const std::vector<Eigen::Vector3d> recomputed = normalsOf(readFile(dir.file("seq2/tet_0002.obj")));
+  const std::vector<Eigen::Vector3d> recomputed = objNormals(dir.file("seq2/tet_0002.obj"));
   EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
 }
 

@@ -230,21 +230,6 @@ TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
   EXPECT_EQ(entries, std::vector<std::string>{"out.obj"});
 }
 
-// The vn lines of an OBJ file, in order.
-std::vector<Eigen::Vector3d> normalLines(const std::string& path) {
-  std::vector<Eigen::Vector3d> normals;
-  std::istringstream lines(readFile(path));
-  std::string line;
-  while (std::getline(lines, line)) {
-    if (line.rfind("vn ", 0) != 0) continue;
-    std::istringstream numbers(line.substr(3));
-    Eigen::Vector3d n;
-    numbers >> n[0] >> n[1] >> n[2];
-    normals.push_back(n);
-  }
-  return normals;
-}
-
 // An affine pose A of the cube cage under mean value coordinates (which reproduce affine maps): the mesh's own
 // normals come out as A^-T n, normalised; with --recompute-normals they are the corner-angle-weighted normals of the
 // deformed faces instead (computed here).
@@ -261,7 +246,7 @@ TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
 
   RunResult r = deform(dataFile("cube_cage.obj"), posed, mesh, out, {"--method", "mvc"});
   ASSERT_EQ(r.exitCode, 0) << r;
-  const std::vector<Eigen::Vector3d> input = normalLines(mesh), carried = normalLines(out);
+  const std::vector<Eigen::Vector3d> input = objNormals(mesh), carried = objNormals(out);
   ASSERT_EQ(carried.size(), 4u);
   for (size_t n = 0; n < 4; ++n) {
     const Eigen::Vector3d expected = (A.inverse().transpose() * input[n]).normalized();
@@ -280,7 +265,7 @@ TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
       sums[static_cast<size_t>(face[k])] += angle * (a - p).cross(b - p).normalized();
     }
   }
-  const std::vector<Eigen::Vector3d> recomputed = normalLines(out);
+  const std::vector<Eigen::Vector3d> recomputed = objNormals(out);
   for (size_t n = 0; n < 4; ++n) EXPECT_LE((recomputed[n] - sums[n].normalized()).norm(), 1e-9) << "vn " << n;
   EXPECT_GT((recomputed[0] - carried[0]).norm(), 0.05) << "the two differ on this mesh";
 }
