@@ -10,6 +10,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
+#include "cage.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -97,6 +98,35 @@ TEST(NormalTransform, AVertexWithoutAGradientGetsTheRecomputedNormal) {
   EXPECT_LE((posed.normals.normals.row(5) - recomputed.row(5)).norm(), 1e-15);
   EXPECT_LE((posed.normals.normals.row(4) - posed.document.normals.row(4).normalized()).norm(), 1e-9)
       << "a uniform scale leaves the other normals' directions";
+}
+
+// A 2D cage moves x and y and keeps z: J is the 2 by 2 gradient extended by J_zz = 1. A prism's side normals
+// (in the plane) become A^-T n of the planar affine map A, its top normal stays +z.
+TEST(NormalTransform, ATwoDimensionalMapKeepsZ) {
+  Eigen::MatrixXd square(4, 2);
+  square << -1, -1, 1, -1, 1, 1, -1, 1;
+  const Cage cage = makePolygonCage(square);
+  const MeshDocument document = parseObjDocument(
+      "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0\nv -0.5 -0.5 1\nv 0.5 -0.5 1\nv 0 0.5 1\n"
+      "vn 0 -1 0\nvn 1 0.5 0\nvn 0 0 1\n"
+      "f 1//1 2//1 5//1 4//1\nf 2//2 3//2 6//2 5//2\nf 4//3 5//3 6//3\n",
+      "prism.obj");
+  const Eigen::MatrixXd points = document.geometry.vertices.leftCols(2);
+  const std::unique_ptr<CageDeformer> deformer = makeDeformer(Method::MeanValue, cage, points);
+  Eigen::Matrix2d A;
+  A << 1.4, 0.3, -0.2, 0.7;
+  const Eigen::MatrixXd posed = cage.vertices * A.transpose();
+  const DeformationGradients gradients(*deformer, points);
+  Eigen::MatrixXd positions = document.geometry.vertices;
+  positions.leftCols(2) = deformer->deform(posed, DeformParams());
+  const TransformedNormals out = transformNormals(document, positions, gradients, posed, DeformParams());
+  EXPECT_EQ(out.recomputed, 0);
+  for (int n = 0; n < 2; ++n) {
+    Eigen::Vector3d expected = Eigen::Vector3d::Zero();
+    expected.head<2>() = (A.inverse().transpose() * document.normals.row(n).head<2>().transpose()).normalized();
+    EXPECT_LE((out.normals.row(n).transpose() - expected).norm(), 1e-9) << "side " << n;
+  }
+  EXPECT_LE((out.normals.row(2) - Eigen::RowVector3d(0, 0, 1)).norm(), 1e-12) << "the top stays up";
 }
 
 }  // namespace
