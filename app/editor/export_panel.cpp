@@ -11,7 +11,7 @@ void drawExportProgress(AppState& state) {
   ImGui::OpenPopup("Exporting");
   if (ImGui::BeginPopupModal("Exporting", nullptr,
                              ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings)) {
-    ImGui::Text("writing %s", state.exporter.target().c_str());
+    ImGui::Text("exporting %s", state.exporter.target().c_str());
     ImGui::ProgressBar(static_cast<float>(state.exporter.progress()), ImVec2(400, 0));
     if (ImGui::Button("Cancel")) state.exporter.cancel();
     ImGui::TextDisabled("nothing is written until the end; Cancel leaves no file");
