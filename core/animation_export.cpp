@@ -16,11 +16,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool endsWithGlb(std::string path) {
-  for (char& c : path) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return path.size() > 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-}
-
 void step(const ProgressCallback& progress, double fraction) {
   if (!progress(fraction)) throw Cancelled();
 }
@@ -75,6 +70,11 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
 
 }  // namespace
 
+bool writesGlb(std::string out) {
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out.size() > 4 && out.compare(out.size() - 4, 4, ".glb") == 0;
+}
+
 std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
                                                   const Timeline& timeline, const PoseLibrary& poses,
                                                   const DeformParams& base, const Eigen::MatrixXd& meshVertices,
@@ -116,7 +116,7 @@ std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& g
 std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
                                         const ProgressCallback& progress, const std::vector<Eigen::MatrixXd>& normals) {
-  if (endsWithGlb(out)) {
+  if (writesGlb(out)) {
     step(progress, 0.0);  // the last chance to stop: once the file is in place, it stays
     std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps);
     progress(1.0);

@@ -33,6 +33,9 @@ std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& g
                                                    const std::vector<Eigen::MatrixXd>& frames, int first,
                                                    const ProgressCallback& progress = noProgress);
 
+// Whether writeAnimation writes out as one GLB (a path ending in .glb, any case) rather than an OBJ sequence.
+bool writesGlb(std::string out);
+
 // Writes frames (frame k is timeline frame first + k) to out: a path ending in .glb gives one GLB at fps,
 // anything else is a folder for the OBJ sequence (it must not exist, or be empty). Returns the notes of what the
 // format could not carry. normals: per frame, the OBJ sequence's `vn` (empty: recomputed per frame; GLB carries

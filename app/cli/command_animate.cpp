@@ -105,8 +105,7 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   options.threads = threads;
   options.integration.threads = threads;
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
-  const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") &&
-                                 std::filesystem::path(outPath).extension() != ".glb";
+  const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath);
   requirePrecomputeMemory(kCommand, session.method, cage, static_cast<std::size_t>(points.rows()), options, meshPath,
                           normalsByGradient);
   std::unique_ptr<CageDeformer> deformer;

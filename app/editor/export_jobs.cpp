@@ -1,8 +1,5 @@
 #include "export_jobs.h"
 
-#include <cctype>
-#include <filesystem>
-
 #include "animation_export.h"
 #include "app_state.h"
 #include "errors.h"
@@ -35,16 +32,6 @@ bool gradientsFit(const CageDeformer& deformer, std::string* note) {
           formatBytes(bytes) + " (" + formatBytes(*available) + " free)";
   return false;
 }
-
-namespace {
-
-bool endsWithGlb(const std::string& path) {
-  std::string extension = std::filesystem::path(path).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".glb";
-}
-
-}  // namespace
 
 ExportWorker::Job makeMeshExportJob(AppState& state, const std::string& path) {
   ensureCpuPoints(state, state.method);
@@ -103,11 +90,11 @@ bool exportDeformedMesh(AppState& state, const std::string& path) {
 }
 
 ExportWorker::Job makeAnimationExportJob(AppState& state, AnimationExportJob::Kind kind, const std::string& out) {
-  if (kind == AnimationExportJob::Kind::Glb && !endsWithGlb(out)) {
+  if (kind == AnimationExportJob::Kind::Glb && !writesGlb(out)) {
     state.errors.push_back("Export animation: " + out + " does not end in .glb; give a file name like animation.glb");
     return {};
   }
-  if (kind == AnimationExportJob::Kind::ObjSequence && endsWithGlb(out)) {
+  if (kind == AnimationExportJob::Kind::ObjSequence && writesGlb(out)) {
     state.errors.push_back("Export animation: " + out + " ends in .glb; give a new folder for the OBJ sequence");
     return {};
   }
