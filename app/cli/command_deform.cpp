@@ -85,9 +85,12 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   options.threads = threads;
   options.integration.threads = threads;
   // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
-  const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals");
-  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath,
-                          normalsByGradient);
+  const std::size_t count = static_cast<std::size_t>(points.rows());
+  bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals");
+  if (normalsByGradient)
+    normalsByGradient = requirePrecomputeMemoryForNormals(kCommand, method, cage, count, options, meshPath);
+  else
+    requirePrecomputeMemory(kCommand, method, cage, count, options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {

@@ -52,6 +52,12 @@ Cage loadUsableCage(const std::string& path, const ReadOptions& read = {});
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
+// requirePrecomputeMemory for a run that would also like the gradients (normals carried by J, normal_transform.h):
+// returns true when they fit as well; when only the coordinates fit, says on stderr that the normals will be
+// recomputed and returns false. Throws as requirePrecomputeMemory when not even the coordinates fit.
+bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                                       const PrecomputeOptions& options, const std::string& meshPath);
+
 // Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
 // (core/mesh_placement.h): different units, usually.
 void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,

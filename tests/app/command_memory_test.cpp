@@ -4,6 +4,8 @@
 #include <cstdlib>
 
 #include "cli_test_support.h"
+#include "memory_estimate.h"
+#include "obj_io.h"
 
 namespace somicage {
 namespace {
@@ -66,6 +68,38 @@ TEST(CliMemory, AMalformedLimitIsABadInput) {
   EXPECT_EQ(r.exitCode, 2) << r;
   EXPECT_EQ(r.errLines(), 1) << r;
   EXPECT_NE(r.err.find("SOMICAGE_MEMORY_LIMIT_BYTES: '8 GB' is not a whole number of bytes"), std::string::npos) << r;
+}
+
+// A mesh with normals whose coordinates fit but whose gradients (for the normals carried by J) do not: deform still
+// runs, says the normals are recomputed, and writes the recomputed normals (equal to --recompute-normals' file).
+TEST(CliMemory, NormalsAreRecomputedWhenTheGradientsDoNotFit) {
+  ScratchDir dir;
+  const std::string mesh = dir.file("tet.obj");
+  std::ofstream(mesh) << "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\nvn 1 0.1 0.2\nvn 0.1 1 0\n"
+                         "vn 0 0.3 1\nvn -1 -1 -0.5\nf 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\n"
+                         "f 3//3 4//4 1//1\n";
+  MemoryEstimate without = estimatePrecomputeMemory(Method::Somigliana, 3, 8, 12, 4, false, 1);
+  MemoryEstimate with = without;
+  with.gradients = estimateGradientBytes(Method::Somigliana, 3, 8, 12, 4, false);
+  ASSERT_GT(with.total(), without.total() + 100);
+  const std::string posed = dir.file("posed.obj");
+  PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));
+  saveObj(posed, cage.vertices * 1.1, cage);
+  std::vector<std::string> args = {
+      "deform", "--cage", dataFile("cube_cage.obj"), "--posed", posed, "--mesh", mesh, "--threads", "1", "--out"};
+  std::vector<std::string> recomputeArgs = args;
+  recomputeArgs.insert(recomputeArgs.end(), {dir.file("recomputed.obj"), "--recompute-normals"});
+  const RunResult recomputed = runSomicage(recomputeArgs);
+  ASSERT_EQ(recomputed.exitCode, 0) << recomputed;
+  {
+    // Between the two totals, at the 85 % the check allows.
+    const MemoryLimit limit(std::to_string((without.total() + with.total()) / 2 * 100 / 85));
+    args.push_back(dir.file("out.obj"));
+    const RunResult r = runSomicage(args);
+    ASSERT_EQ(r.exitCode, 0) << r;
+    EXPECT_NE(r.err.find("the normals are recomputed from the deformed faces"), std::string::npos) << r;
+  }
+  EXPECT_EQ(readFile(dir.file("out.obj")), readFile(dir.file("recomputed.obj")));
 }
 
 }  // namespace
