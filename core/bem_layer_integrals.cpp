@@ -21,27 +21,34 @@ Eigen::MatrixXd assembleFaceKelvinlet(const double* t, int dim, double nu) {
   return c.k1 * t[0] * Eigen::MatrixXd::Identity(dim, dim) + c.k2 * M;
 }
 
+CoordinateLayout bemLayerLayout(int dim, int numVertices, int numFaces) {
+  return {numVertices, numFaces, vertexTermCount(dim), bemFaceTermCount(dim), 0};
+}
+
 Eigen::MatrixXd BemLayerIntegrals::vertexCoordinate(int p, int i, double nu) const {
-  return assembleVertexCoordinate(values.row(p).data() + vertexOffset(i), dim, nu);
+  double terms[vertexTermCount(3)];
+  gatherVertexTerms(layout, values.row(p).data(), i, terms);
+  return assembleVertexCoordinate(terms, dim, nu);
 }
 
 Eigen::MatrixXd BemLayerIntegrals::faceKelvinlet(int p, int j, double nu) const {
-  return assembleFaceKelvinlet(values.row(p).data() + faceOffset(j), dim, nu);
+  return assembleFaceKelvinlet(values.row(p).data() + layout.faceColumn(j, 0), dim, nu);
 }
 
 namespace {
 
 // Adds one triangle's integrals to a row (vertex terms as in somigliana_coordinates.h, face terms S, M).
-void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], double* face,
-                        double* row) {
-  addVertexTerms(I, n, corners, row);
+void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
+                        const CoordinateLayout& layout, double* face, double* row) {
+  addVertexTerms(I, n, corners, layout, row);
   const Eigen::Matrix3d& M = I.M;
   face[0] = I.S;
   face[1] = M(0, 0), face[2] = M(1, 1), face[3] = M(2, 2), face[4] = M(0, 1), face[5] = M(0, 2), face[6] = M(1, 2);
 }
 
-void accumulateEdge(const EdgeIntegrals& I, const int ends[2], double* face, double* row) {
-  addVertexTerms(I, ends, row);
+void accumulateEdge(const EdgeIntegrals& I, const int ends[2], const CoordinateLayout& layout, double* face,
+                    double* row) {
+  addVertexTerms(I, ends, layout, row);
   face[0] = I.S, face[1] = I.M(0, 0), face[2] = I.M(1, 1), face[3] = I.M(0, 1);
 }
 
@@ -55,9 +62,8 @@ BemLayerIntegrals integrateBemLayers(const Cage& cage, const Eigen::MatrixXd& po
 
   BemLayerIntegrals out;
   out.dim = dim;
-  out.numVertices = cage.numVertices();
-  out.numFaces = cage.numFaces();
-  out.values = RowMatrixXd::Zero(numPoints, out.columns());
+  out.layout = bemLayerLayout(dim, cage.numVertices(), cage.numFaces());
+  out.values = RowMatrixXd::Zero(numPoints, out.layout.mainColumns());
   out.winding.resize(numPoints);
   std::vector<TriangleFrame> frames;
   if (dim == 3)
@@ -71,7 +77,7 @@ BemLayerIntegrals integrateBemLayers(const Cage& cage, const Eigen::MatrixXd& po
         const int own = onFace.empty() ? -1 : onFace[static_cast<std::size_t>(p)];
         double angleSum = 0;
         for (int j = 0; j < cage.numFaces(); ++j) {
-          double* face = row + out.faceOffset(j);
+          double* face = row + out.layout.faceColumn(j, 0);
           if (dim == 3) {
             if (frames[j].degenerate) continue;
             const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
@@ -80,18 +86,18 @@ BemLayerIntegrals integrateBemLayers(const Cage& cage, const Eigen::MatrixXd& po
               integrateTriangleInteriorLimit(frames[j], points.row(p).transpose(), I);
             else
               integrateTriangle(frames[j], points.row(p).transpose(), I);
-            accumulateTriangle(I, frames[j].n, corners, face, row);
+            accumulateTriangle(I, frames[j].n, corners, out.layout, face, row);
             angleSum += I.solidAngle;
           } else {
             const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
             const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
-            if (p0 == p1) continue;  // zero-length edges contribute nothing
+            if (isDegenerateFace(cage, j)) continue;  // zero-length edges contribute nothing
             EdgeIntegrals I;
             if (j == own)
               integrateEdgeInteriorLimit(p0, p1, points.row(p).transpose(), I);
             else
               integrateEdge(p0, p1, points.row(p).transpose(), I);
-            accumulateEdge(I, ends, face, row);
+            accumulateEdge(I, ends, out.layout, face, row);
             angleSum += I.angle;
           }
         }

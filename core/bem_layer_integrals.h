@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cage.h"
+#include "coordinate_layout.h"
 #include "progress.h"
 #include "somigliana_coordinates.h"
 
@@ -19,17 +20,15 @@ namespace somicage {
 // Per-face term count: S, then M (3D: xx, yy, zz, xy, xz, yz; 2D: xx, yy, xy).
 constexpr int bemFaceTermCount(int dim) { return 1 + dim * (dim + 1) / 2; }
 
+// The integrals' columns (coordinate_layout.h): vertexTermCount(dim) per vertex, bemFaceTermCount(dim) per face, no
+// tail (the BEM method's C adds its own, bem_method.cpp).
+CoordinateLayout bemLayerLayout(int dim, int numVertices, int numFaces);
+
 struct BemLayerIntegrals {
   int dim = 3;
-  int numVertices = 0;
-  int numFaces = 0;
-  // #P by (numVertices * vertexTermCount(dim) + numFaces * bemFaceTermCount(dim)); vertex block first.
-  RowMatrixXd values;
+  CoordinateLayout layout;  // bemLayerLayout
+  RowMatrixXd values;       // #P by layout.mainColumns()
   Eigen::VectorXd winding;  // generalised winding number per point: 1 inside and in a face's interior limit
-
-  int vertexOffset(int i) const { return i * vertexTermCount(dim); }
-  int faceOffset(int j) const { return numVertices * vertexTermCount(dim) + j * bemFaceTermCount(dim); }
-  int columns() const { return faceOffset(numFaces); }
 
   // T_i(x_p) at nu (d by d), and K_j(x_p) = k1 S_j I + k2 M_j at nu (d by d).
   Eigen::MatrixXd vertexCoordinate(int p, int i, double nu) const;

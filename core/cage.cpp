@@ -1,6 +1,8 @@
 #include "cage.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
 
 #include "errors.h"
 
@@ -46,16 +48,46 @@ void assertCageAndPoints(const Cage& cage, const Eigen::MatrixXd& points) {
   SOMICAGE_ASSERT(cage.faces.cols() == dim, "3D faces are triangles, 2D faces are edges");
 }
 
-double signedFaceMeasure(const Cage& cage, int j, const Eigen::RowVectorXd& origin) {
-  if (cage.dim() == 3) {
-    const Eigen::Vector3d a = (cage.vertices.row(cage.faces(j, 0)) - origin).transpose();
-    const Eigen::Vector3d b = (cage.vertices.row(cage.faces(j, 1)) - origin).transpose();
-    const Eigen::Vector3d c = (cage.vertices.row(cage.faces(j, 2)) - origin).transpose();
-    return a.dot(b.cross(c)) / 6.0;
-  }
-  const Eigen::Vector2d a = (cage.vertices.row(cage.faces(j, 0)) - origin).transpose();
-  const Eigen::Vector2d b = (cage.vertices.row(cage.faces(j, 1)) - origin).transpose();
-  return 0.5 * (a.x() * b.y() - a.y() * b.x());
+double signedTetrahedronVolume(const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c) {
+  return (a - o).dot((b - o).cross(c - o)) / 6.0;
+}
+
+double signedTriangleArea(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
+  const Eigen::Vector2d u = b - a, w = c - a;
+  return 0.5 * (u.x() * w.y() - u.y() * w.x());
+}
+
+double signedFaceMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces, int j,
+                         const Eigen::RowVectorXd& origin) {
+  if (vertices.cols() == 3)
+    return signedTetrahedronVolume(origin.transpose(), vertices.row(faces(j, 0)).transpose(),
+                                   vertices.row(faces(j, 1)).transpose(), vertices.row(faces(j, 2)).transpose());
+  return signedTriangleArea(origin.transpose(), vertices.row(faces(j, 0)).transpose(),
+                            vertices.row(faces(j, 1)).transpose());
+}
+
+double signedMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces) {
+  if (vertices.rows() == 0) return 0.0;
+  const Eigen::RowVectorXd centre = vertices.colwise().mean();
+  double sum = 0.0;
+  for (int j = 0; j < faces.rows(); ++j) sum += signedFaceMeasure(vertices, faces, j, centre);
+  return sum;
+}
+
+bool isDegenerateTriangle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2) {
+  const double twiceArea = (p1 - p0).cross(p2 - p0).norm();
+  const double longest = std::max({(p1 - p0).squaredNorm(), (p2 - p0).squaredNorm(), (p2 - p1).squaredNorm()});
+  return !(twiceArea > kDegenerateFace * longest) || !std::isfinite(longest);
+}
+
+bool isDegenerateFace(const Cage& cage, int j) {
+  if (cage.dim() == 3)
+    return isDegenerateTriangle(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
+                                cage.vertices.row(cage.faces(j, 2)));
+  const Eigen::RowVectorXd e = cage.vertices.row(cage.faces(j, 1)) - cage.vertices.row(cage.faces(j, 0));
+  const double length = e.norm();
+  return !(length > 0) || !std::isfinite(length);
 }
 
 double cageDiameter(const Eigen::MatrixXd& vertices) {

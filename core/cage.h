@@ -25,10 +25,33 @@ Cage makePolygonCage(const Eigen::MatrixXd& loop);
 Eigen::MatrixXd faceNormals(const Cage& cage, const Eigen::MatrixXd& vertices);
 Eigen::VectorXd faceAreas(const Cage& cage, const Eigen::MatrixXd& vertices);
 
-// Face j's share of the cage's signed volume (3D) or area (2D), measured from origin (1 by d): the tetrahedron
-// (origin, face) or triangle (origin, edge). Summed over a closed cage it is the enclosed measure, positive when
-// the normals point out; an origin near the cage keeps the sum's cancellation small.
-double signedFaceMeasure(const Cage& cage, int j, const Eigen::RowVectorXd& origin);
+// The signed volume of the tetrahedron (o, a, b, c) and the signed area of the triangle (a, b, c): positive when
+// counter-clockwise seen from outside (3D: from the side b - a x c - a points to), the one term of every signed
+// volume and area below and in deformation_quantities.h / offset_surface.cpp.
+double signedTetrahedronVolume(const Eigen::Vector3d& o, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                               const Eigen::Vector3d& c);
+double signedTriangleArea(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
+
+// Face j's share of the signed volume (3D: triangles) or area (2D: edges) of faces over vertices, measured from
+// origin (1 by d): the tetrahedron (origin, face) or triangle (origin, edge). Summed over a closed surface it is
+// the enclosed measure, positive when the normals point out; an origin near the faces keeps the sum's
+// cancellation small. The one signed volume of the code base (validation, repair, the editor's demo meshes).
+double signedFaceMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces, int j,
+                         const Eigen::RowVectorXd& origin);
+inline double signedFaceMeasure(const Cage& cage, int j, const Eigen::RowVectorXd& origin) {
+  return signedFaceMeasure(cage.vertices, cage.faces, j, origin);
+}
+// The sum over all faces, about the vertices' centroid.
+double signedMeasure(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& faces);
+
+// Faces whose twice-area is at most this fraction of their longest edge squared have no usable normal.
+constexpr double kDegenerateFace = 1e-12;
+
+// The one test of a face with no usable normal, which every integrator skips: a triangle with twice its area at
+// most kDegenerateFace times its longest edge squared (or not finite), an edge of zero length (or not finite).
+// Validation (cage_validation.h) refuses such faces and, more strictly, faces small against the whole cage.
+bool isDegenerateTriangle(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1, const Eigen::Vector3d& p2);
+bool isDegenerateFace(const Cage& cage, int j);
 
 // Internal precondition of every precompute: a 2D or 3D cage whose faces have d corners, and points (#P by d) of
 // the same dimension. Input boundaries (obj_io, the CLI) report bad input before it gets here.

@@ -107,7 +107,7 @@ void measureGeometry(const Cage& cage, CageReport& report) {
       for (int l = k + 1; l < cage.faces.cols(); ++l) repeated = repeated || cage.faces(j, k) == cage.faces(j, l);
     }
     volume += signedFaceMeasure(cage, j, centre);
-    if (repeated || !(areas(j) > minMeasure)) report.degenerateFaces.push_back(j);
+    if (repeated || !(areas(j) > minMeasure) || isDegenerateFace(cage, j)) report.degenerateFaces.push_back(j);
   }
   report.signedVolume = volume;
 

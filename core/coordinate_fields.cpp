@@ -6,7 +6,7 @@
 namespace somicage {
 
 Eigen::MatrixXd vertexCoordinateField(const SomiglianaCoordinates& coords, const Cage& cage, int vertex, double nu) {
-  SOMICAGE_ASSERT(vertex >= 0 && vertex < coords.numVertices, "a cage vertex");
+  SOMICAGE_ASSERT(vertex >= 0 && vertex < coords.layout.numVertices, "a cage vertex");
   const Eigen::VectorXd n = vertexNormals(cage, cage.vertices).row(vertex).transpose();
   Eigen::MatrixXd field(coords.numPoints(), coords.dim);
   for (int p = 0; p < coords.numPoints(); ++p) field.row(p) = (coords.vertexCoordinate(p, vertex, nu) * n).transpose();
@@ -14,7 +14,7 @@ Eigen::MatrixXd vertexCoordinateField(const SomiglianaCoordinates& coords, const
 }
 
 Eigen::MatrixXd faceCoordinateField(const SomiglianaCoordinates& coords, int face, double nu) {
-  SOMICAGE_ASSERT(face >= 0 && face < coords.numFaces, "a cage face");
+  SOMICAGE_ASSERT(face >= 0 && face < coords.layout.numFaces, "a cage face");
   Eigen::MatrixXd field(coords.numPoints(), coords.dim);
   for (int p = 0; p < coords.numPoints(); ++p) field.row(p) = coords.faceCoordinateTimesNormal(p, face, nu).transpose();
   return field;

@@ -69,22 +69,21 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
   } else {
     EdgeIntegralsOf<DualOf<2>> I;
     for (int j = 0; j < cage.numFaces(); ++j) {
+      if (isDegenerateFace(cage, j)) continue;
       const Eigen::Vector2d p0 = cage.vertices.row(cage.faces(j, 0)), p1 = cage.vertices.row(cage.faces(j, 1));
-      if (p0 == p1) continue;
       integrateEdgeOf(p0, p1, x, I);
       perFace(j, I);
     }
   }
 }
 
-// Rows [vertex terms | faceTerms per face]: the vertex terms of somigliana_coordinates.h and, per face,
-// writeFace(face, integrals, n) for the face block.
+// Rows laid out as `layout` (vertexTermCount(Dim) terms per vertex, no tail): the vertex terms of
+// somigliana_coordinates.h and, per face, writeFace(face, integrals, n) for the face block.
 template <int Dim, typename WriteFace>
 void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                         int faceTerms, WriteFace writeFace, const GradientRowSink& sink) {
+                         const CoordinateLayout& layout, WriteFace writeFace, const GradientRowSink& sink) {
   const RowMatrixXd normals = faceNormals(cage, cage.vertices);  // row-major: rows as pointers
-  const int vertexColumns = cage.numVertices() * vertexTermCount(Dim);
-  const int columns = vertexColumns + cage.numFaces() * faceTerms;
+  const int columns = layout.mainColumns(), stride = layout.numVertices;
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
   forEachPointInBlocks(
       static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
@@ -94,23 +93,25 @@ void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
         DualOf<Dim> x[Dim];
         seedPoint<Dim>(points, p, x);
         DualOf<Dim>* row = buffers.row.data();
-        // The accumulation of somigliana_coordinates.cpp (accumulateTriangle / accumulateEdge), in dual numbers.
+        // The accumulation of somigliana_coordinates.cpp (addVertexTerms), in dual numbers.
         integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
           const double* n = normals.row(j).data();
           for (int k = 0; k < Dim; ++k) {
-            DualOf<Dim>* t = row + cage.faces(j, k) * vertexTermCount(Dim);
+            DualOf<Dim>* t = row + layout.vertexColumn(cage.faces(j, k), 0);
             t[0] += I.D[k];
             if constexpr (Dim == 3) {
               const auto& V = I.V[k];
               const auto& B = I.B[k];
-              t[1] += V[1] * n[2] - V[2] * n[1], t[2] += V[2] * n[0] - V[0] * n[2], t[3] += V[0] * n[1] - V[1] * n[0];
-              t[4] += B[0][0], t[5] += B[1][1], t[6] += B[2][2], t[7] += B[0][1], t[8] += B[0][2], t[9] += B[1][2];
+              t[stride] += V[1] * n[2] - V[2] * n[1], t[2 * stride] += V[2] * n[0] - V[0] * n[2];
+              t[3 * stride] += V[0] * n[1] - V[1] * n[0];
+              t[4 * stride] += B[0][0], t[5 * stride] += B[1][1], t[6 * stride] += B[2][2];
+              t[7 * stride] += B[0][1], t[8 * stride] += B[0][2], t[9 * stride] += B[1][2];
             } else {
-              t[1] += I.A[k];
-              t[2] += I.B[k][0][0], t[3] += I.B[k][1][1], t[4] += I.B[k][0][1];
+              t[stride] += I.A[k];
+              t[2 * stride] += I.B[k][0][0], t[3 * stride] += I.B[k][1][1], t[4 * stride] += I.B[k][0][1];
             }
           }
-          writeFace(row + vertexColumns + j * faceTerms, I, n);
+          writeFace(row + layout.faceColumn(j, 0), I, n);
         });
         buffers.emit(p, sink);
       });
@@ -125,7 +126,8 @@ void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
   };
-  vertexTermGradients<Dim>(cage, points, threads, progress, faceTermCount(Dim), writeFace, sink);
+  const CoordinateLayout layout = somiglianaLayout(Dim, cage.numVertices(), cage.numFaces());
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
 }
 
 // The boundary element's face terms S_j and the full moment M_j (bem_layer_integrals.h).
@@ -139,14 +141,16 @@ void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int thre
     else
       f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[0][1];
   };
-  vertexTermGradients<Dim>(cage, points, threads, progress, bemFaceTermCount(Dim), writeFace, sink);
+  const CoordinateLayout layout = bemLayerLayout(Dim, cage.numVertices(), cage.numFaces());
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
 }
 
 template <int Dim>
 void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
                     const GradientRowSink& sink) {
-  const double scale = 1 / (Dim == 3 ? 4 * M_PI : 2 * M_PI);  // green_coordinates.h
-  const int numVertices = cage.numVertices(), columns = numVertices + cage.numFaces();
+  const double scale = 1 / (Dim == 3 ? 4 * M_PI : 2 * M_PI);                    // green_coordinates.h
+  const CoordinateLayout layout{cage.numVertices(), cage.numFaces(), 1, 1, 0};  // [phi | psi]
+  const int columns = layout.mainColumns();
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
   forEachPointInBlocks(
       static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
@@ -157,8 +161,8 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
         seedPoint<Dim>(points, p, x);
         DualOf<Dim>* row = buffers.row.data();
         integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
-          for (int k = 0; k < Dim; ++k) row[cage.faces(j, k)] += scale * I.D[k];
-          row[numVertices + j] = scale * I.S;
+          for (int k = 0; k < Dim; ++k) row[layout.vertexColumn(cage.faces(j, k), 0)] += scale * I.D[k];
+          row[layout.faceColumn(j, 0)] = scale * I.S;
         });
         buffers.emit(p, sink);
       });

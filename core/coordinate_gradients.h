@@ -15,7 +15,7 @@ namespace somicage {
 // method's coordinates. Called from OpenMP worker threads, once per point; the buffers are reused after it returns.
 using GradientRowSink = std::function<void(int point, const double* const* rows)>;
 
-// Somigliana: rows in the layout of SomiglianaCoordinates::values (somigliana_coordinates.h), always from the
+// Somigliana: rows in the layout of SomiglianaCoordinates::values (somiglianaLayout's main columns), always from the
 // closed form (also for a deformer whose coordinates came from the Gauss baseline).
 void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                                   const ProgressCallback& progress, const GradientRowSink& sink);
@@ -25,7 +25,8 @@ void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& point
 void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                              const ProgressCallback& progress, const GradientRowSink& sink);
 
-// BEM: rows in the layout of BemLayerIntegrals::values (bem_layer_integrals.h) for points off the cage.
+// BEM: rows in the layout of BemLayerIntegrals::values (bemLayerLayout, bem_layer_integrals.h) for points off the
+// cage.
 void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                                 const ProgressCallback& progress, const GradientRowSink& sink);
 

@@ -9,6 +9,7 @@
 #include <map>
 #include <utility>
 
+#include "cage.h"
 #include "errors.h"
 
 namespace somicage {
@@ -26,12 +27,11 @@ void forEachFanTriangle(const std::vector<int>& face, Triangle triangle) {
 // Area of a polygon (fan from its first corner): signed in 2D, |sum of the triangles' vector areas| in 3D.
 double faceArea(const std::vector<int>& face, const Eigen::MatrixXd& V) {
   if (V.cols() == 2) {
-    double twice = 0;
+    double area = 0;
     forEachFanTriangle(face, [&](int a, int b, int c) {
-      const Eigen::Vector2d u = V.row(b) - V.row(a), w = V.row(c) - V.row(a);
-      twice += u.x() * w.y() - u.y() * w.x();
+      area += signedTriangleArea(V.row(a).transpose(), V.row(b).transpose(), V.row(c).transpose());
     });
-    return 0.5 * twice;
+    return area;
   }
   Eigen::Vector3d twice = Eigen::Vector3d::Zero();
   forEachFanTriangle(face, [&](int a, int b, int c) {
@@ -151,13 +151,13 @@ double signedMeshMeasure(const std::vector<std::vector<int>>& faces, const Eigen
     for (const std::vector<int>& face : faces) area += faceArea(face, V);
     return area;
   }
-  double sixTimes = 0;
+  const Eigen::Vector3d o = origin.size() == 3 ? Eigen::Vector3d(origin.transpose()) : Eigen::Vector3d::Zero();
+  double volume = 0;
   for (const std::vector<int>& face : faces)
     forEachFanTriangle(face, [&](int a, int b, int c) {
-      const Eigen::Vector3d pa = V.row(a) - origin, pb = V.row(b) - origin, pc = V.row(c) - origin;
-      sixTimes += pa.dot(pb.cross(pc));
+      volume += signedTetrahedronVolume(o, V.row(a).transpose(), V.row(b).transpose(), V.row(c).transpose());
     });
-  return sixTimes / 6;
+  return volume;
 }
 
 EnclosedMeasure enclosedMeasure(const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& rest,

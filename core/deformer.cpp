@@ -3,35 +3,9 @@
 #include <cmath>
 #include <string>
 
-#include "bem_deformer.h"
 #include "errors.h"
-#include "green_coordinates.h"
-#include "mean_value_coordinates.h"
-#include "somigliana_deformer.h"
 
 namespace somicage {
-
-std::string methodName(Method method) {
-  switch (method) {
-    case Method::Somigliana:
-      return "somigliana";
-    case Method::Green:
-      return "green";
-    case Method::MeanValue:
-      return "mvc";
-    case Method::Bem:
-      return "bem";
-  }
-  return "unknown";
-}
-
-Method parseMethod(const std::string& name) {
-  if (name == "somigliana") return Method::Somigliana;
-  if (name == "green") return Method::Green;
-  if (name == "mvc") return Method::MeanValue;
-  if (name == "bem") return Method::Bem;
-  throw InputError("--method", -1, "unknown method '" + name + "'", "use somigliana, green, mvc or bem");
-}
 
 void validateDeformParams(const DeformParams& params) {
   if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= -1 || params.nu >= 0.5)))
@@ -52,18 +26,7 @@ void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformPara
 
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                            const PrecomputeOptions& options, const ProgressCallback& progress) {
-  switch (method) {
-    case Method::Somigliana:
-      return makeSomiglianaDeformer(restCage, points, options, progress);
-    case Method::Green:
-      return makeGreenDeformer(restCage, points, options, progress);
-    case Method::MeanValue:
-      return makeMeanValueDeformer(restCage, points, options, progress);
-    case Method::Bem:
-      return makeBemDeformer(restCage, points, options, progress);
-  }
-  SOMICAGE_ASSERT(false, "every method has a factory");
-  return nullptr;
+  return method->precompute(restCage, points, options, progress);
 }
 
 }  // namespace somicage

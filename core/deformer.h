@@ -11,15 +11,11 @@
 #include "cage.h"
 #include "exterior_points.h"
 #include "frame_evaluation.h"
+#include "integration_options.h"
+#include "method.h"
 #include "progress.h"
-#include "somigliana_coordinates.h"
 
 namespace somicage {
-
-enum class Method { Somigliana, Green, MeanValue, Bem };
-
-std::string methodName(Method method);        // "somigliana", "green", "mvc", "bem"
-Method parseMethod(const std::string& name);  // throws InputError on an unknown name
 
 // Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
 struct DeformParams {
@@ -27,7 +23,7 @@ struct DeformParams {
   double nu = 0.0;                 // Poisson ratio in (-1, 0.5), or +-infinity
   double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
-  bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_deformer.h)
+  bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_method.cpp)
 };
 
 // Throws InputError naming the parameter when a value is out of range or NaN.
@@ -37,6 +33,9 @@ struct PrecomputeOptions {
   IntegrationOptions integration;  // Somigliana only
   int threads = 0;                 // 0 = the OpenMP default, for the precompute and every frame
   bool floatStorage = false;       // store the coordinate matrix in float (see frame_evaluation.h)
+  // Integrates the rows of the methods that integrate row by row (Somigliana): empty = the CPU's; a device's
+  // (cuda_backend.h: cudaRowIntegrator) may be injected. The rows are written into C by the method either way.
+  RowIntegrator rowIntegrator;
 };
 
 // Per-point facts established by the precompute (#P each; empty where a method does not provide them).
@@ -91,7 +90,8 @@ class CageDeformer {
   PrecomputeDiagnostics diagnostics_;
 };
 
-// Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.
+// Precomputes the coordinates of points (#P by d) in the rest cage with the method's descriptor (method.h).
+// Throws Cancelled if progress says stop.
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                            const PrecomputeOptions& options = {},
                                            const ProgressCallback& progress = noProgress);

@@ -15,8 +15,6 @@ namespace somicage {
 
 namespace {
 
-// Faces whose twice-area is below this fraction of their longest edge squared have no normal (as in Green's).
-constexpr double kDegenerateFace = 1e-12;
 // Barycentric coordinates below this count as zero, so that a point on an edge or a vertex gets that feature's
 // pseudo-normal, whichever face reports it first.
 constexpr double kOnFeature = 1e-12;
@@ -103,19 +101,14 @@ CageProximity::CageProximity(const Cage& cage) : cage_(cage), skip_(cage.numFace
     return std::make_pair(std::min(a, b), std::max(a, b));
   };
   for (int j = 0; j < cage.numFaces(); ++j) {
+    skip_[j] = isDegenerateFace(cage, j);
+    if (skip_[j]) continue;
     if (d == 2) {
-      const Eigen::RowVectorXd e = cage.vertices.row(cage.faces(j, 1)) - cage.vertices.row(cage.faces(j, 0));
-      skip_[j] = !(e.norm() > 0);
-      if (skip_[j]) continue;
       for (int k = 0; k < 2; ++k) vertexNormals_.row(cage.faces(j, k)) += faceNormals_.row(j);
       continue;
     }
     Eigen::Vector3d p[3];
-    double longest = 0;
     for (int k = 0; k < 3; ++k) p[k] = cage.vertices.row(cage.faces(j, k));
-    for (int k = 0; k < 3; ++k) longest = std::max(longest, (p[(k + 1) % 3] - p[k]).squaredNorm());
-    skip_[j] = !((p[1] - p[0]).cross(p[2] - p[0]).norm() > kDegenerateFace * longest);
-    if (skip_[j]) continue;
     const Eigen::Vector3d n = faceNormals_.row(j);
     for (int k = 0; k < 3; ++k) {
       vertexNormals_.row(cage.faces(j, k)) += cornerAngle(p[k], p[(k + 1) % 3], p[(k + 2) % 3]) * n.transpose();

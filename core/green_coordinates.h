@@ -1,4 +1,7 @@
-// Green coordinates (Lipman, Levin, Cohen-Or 2008, "Green Coordinates"), 2D and 3D, as a CageDeformer.
+// Green coordinates (Lipman, Levin, Cohen-Or 2008, "Green Coordinates"), 2D and 3D; the deformer over them is the
+// method core/methods/green_method.cpp, which stores C = [phi | psi | x | 1] and evaluates every frame as one
+// product C W (frame_evaluation.h) with W = [v~_i ; s_j n~_j ; (s R)^T ; t^T]. Points outside the cage
+// (sum_i phi_i = 0 there), on it, or with unreliable coordinates follow the exterior rule of exterior_points.h.
 //
 // Conventions are those of docs/method.md: outward face normals n_j, r = y - x for a boundary point y and the
 // query point x, phi_i^f the hat function of vertex i on face f, psi_j the indicator of face j.
@@ -25,10 +28,10 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
 
-#include "deformer.h"
-#include "somigliana_coordinates.h"
+#include "cage.h"
+#include "coordinate_layout.h"  // RowMatrixXd
+#include "progress.h"
 
 namespace somicage {
 
@@ -44,12 +47,5 @@ GreenCoordinates computeGreenCoordinates(const Cage& cage, const Eigen::MatrixXd
 
 // The face scales s_j of a posed cage (#F, see above); 1 for every face at rest, 0 for a degenerate rest face.
 Eigen::VectorXd greenFaceScales(const Cage& restCage, const Eigen::MatrixXd& posedVertices);
-
-// The deformer: precomputes the coordinates; every frame is then one product C W (frame_evaluation.h) with
-// C = [phi | psi] (#P by #V + #F) and W = [v~_i ; s_j n~_j] (#V + #F by d). It ignores everything in DeformParams.
-// Points outside the cage (sum_i phi_i = 0 there), on it, or with unreliable coordinates follow the exterior rule
-// of exterior_points.h.
-std::unique_ptr<CageDeformer> makeGreenDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
-                                                const PrecomputeOptions& options, const ProgressCallback& progress);
 
 }  // namespace somicage

@@ -15,11 +15,10 @@ namespace somicage {
 
 namespace {
 
-constexpr double kSnapToVertex = 1e-14;    // times the cage diameter
-constexpr double kDegenerateFace = 1e-12;  // twice-area / longest edge^2 below which a face is skipped
-constexpr double kOnEdge2d = 1e-14;        // |sin alpha| below which a point with cos alpha < 0 is on the edge
-constexpr double kOnFace3d = 1e-12;        // |height| / (distance to the nearest corner) below which x is on the face
-constexpr double kNearPlane3d = 1e-3;      // |det[u0 u1 u2]| below which x' outside a face uses nearPlaneWeights
+constexpr double kSnapToVertex = 1e-14;  // times the cage diameter
+constexpr double kOnEdge2d = 1e-14;      // |sin alpha| below which a point with cos alpha < 0 is on the edge
+constexpr double kOnFace3d = 1e-12;      // |height| / (distance to the nearest corner) below which x is on the face
+constexpr double kNearPlane3d = 1e-3;    // |det[u0 u1 u2]| below which x' outside a face uses nearPlaneWeights
 
 // ---------------------------------------------------------------------------------------------------------------
 // 2D (Hormann & Floater 2006)
@@ -195,55 +194,6 @@ void meanValue3d(const Cage& cage, const std::vector<MeanValueFace>& faces, cons
     for (int i = 0; i < numVertices; ++i) w[i] /= total;
 }
 
-// ---------------------------------------------------------------------------------------------------------------
-// Deformer
-// ---------------------------------------------------------------------------------------------------------------
-
-// C = the normalised weights (#P by #V); W = v~.
-FrameCoordinates meanValueFrameCoordinates(RowMatrixXd weights, bool floatStorage) {
-  const int columns = static_cast<int>(weights.cols());
-  return makeFrameCoordinates(std::move(weights), columns, floatStorage);
-}
-
-class MeanValueDeformer : public CageDeformer {
- public:
-  MeanValueDeformer(const Cage& restCage, RowMatrixXd weights, const PrecomputeOptions& options)
-      : CageDeformer(meanValueFrameCoordinates(std::move(weights), options.floatStorage), options.threads),
-        rest_(restCage),
-        numVertices_(restCage.numVertices()),
-        dim_(restCage.dim()) {}
-
-  Method method() const override { return Method::MeanValue; }
-  int dim() const override { return dim_; }
-
-  // C's rows are the coordinates themselves; they are defined everywhere, so every row has its gradient.
-  std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
-                                                    const ProgressCallback& progress) const override {
-    std::vector<RowMatrixXd> gradients(dim_);
-    for (auto& g : gradients) g.resize(points.rows(), numVertices_);
-    integrateMeanValueGradients(rest_, points, threads_, progress, [&](int p, const double* const* rows) {
-      for (int a = 0; a < dim_; ++a) std::copy(rows[a], rows[a] + numVertices_, gradients[a].row(p).data());
-    });
-    std::vector<FrameCoordinates> frames;
-    for (auto& g : gradients) frames.push_back(meanValueFrameCoordinates(std::move(g), coordinates_.isFloat()));
-    return frames;
-  }
-
-  FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams&) const override {
-    SOMICAGE_ASSERT(posedVertices.rows() == numVertices_ && posedVertices.cols() == dim_,
-                    "the posed cage has the rest cage's vertex count and dimension");
-    FrameWeights W;
-    W.outputs = dim_;
-    W.main = posedVertices;
-    W.tail.resize(0, dim_);
-    return W;
-  }
-
- private:
-  Cage rest_;
-  int numVertices_, dim_;
-};
-
 }  // namespace
 
 namespace {
@@ -258,10 +208,8 @@ std::vector<MeanValueFace> meanValueFaces(const Cage& cage) {
     for (int k = 0; k < 3; ++k) f.corner[k] = cage.faces(j, k), p[k] = cage.vertices.row(f.corner[k]);
     const Eigen::Vector3d normal = (p[1] - p[0]).cross(p[2] - p[0]);
     f.twiceArea = normal.norm();
-    double longest = 0;
-    for (int k = 0; k < 3; ++k) longest = std::max(longest, (p[(k + 1) % 3] - p[k]).norm());
     // A face of zero area covers no solid angle and contributes nothing.
-    if (!(f.twiceArea > kDegenerateFace * longest * longest)) continue;
+    if (isDegenerateTriangle(p[0], p[1], p[2])) continue;
     f.n = normal / f.twiceArea;
     for (int k = 0; k < 3; ++k) {
       f.length[k] = (p[(k + 1) % 3] - p[k]).norm();
@@ -347,13 +295,6 @@ void integrateMeanValueGradients(const Cage& cage, const Eigen::MatrixXd& points
     meanValueGradients<3>(cage, points, threads, progress, sink);
   else
     meanValueGradients<2>(cage, points, threads, progress, sink);
-}
-
-std::unique_ptr<CageDeformer> makeMeanValueDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
-                                                    const PrecomputeOptions& options,
-                                                    const ProgressCallback& progress) {
-  RowMatrixXd weights = computeMeanValueCoordinates(restCage, points, options.threads, progress);
-  return std::make_unique<MeanValueDeformer>(restCage, std::move(weights), options);
 }
 
 }  // namespace somicage

@@ -1,4 +1,5 @@
-// Mean value coordinates as a CageDeformer:
+// Mean value coordinates (the deformer over them is the method core/methods/mvc_method.cpp: C = the coordinates,
+// W = the posed vertices):
 //   2D: Floater 2003, in the signed form of Hormann & Floater 2006 ("Mean value coordinates for arbitrary planar
 //       polygons"), valid for any simple polygon (non-convex included) and any point of the plane;
 //   3D: Ju, Schaefer & Warren 2005 ("Mean value coordinates for closed triangular meshes"), their robust
@@ -24,11 +25,11 @@
 #pragma once
 
 #include <Eigen/Core>
-#include <memory>
 
+#include "cage.h"
 #include "coordinate_gradients.h"
-#include "deformer.h"
-#include "somigliana_coordinates.h"
+#include "coordinate_layout.h"  // RowMatrixXd
+#include "progress.h"
 
 namespace somicage {
 
@@ -41,10 +42,5 @@ RowMatrixXd computeMeanValueCoordinates(const Cage& cage, const Eigen::MatrixXd&
 // rows of #V numbers (coordinate_gradients.h).
 void integrateMeanValueGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                                  const ProgressCallback& progress, const GradientRowSink& sink);
-
-// The deformer: precomputes the coordinates; every frame is then one product C W (frame_evaluation.h) with
-// C = the coordinates (#P by #V) and W = the posed vertices (#V by d). It ignores DeformParams.
-std::unique_ptr<CageDeformer> makeMeanValueDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
-                                                    const PrecomputeOptions& options, const ProgressCallback& progress);
 
 }  // namespace somicage

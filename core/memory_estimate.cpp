@@ -8,43 +8,11 @@
 #include <cstdlib>
 #include <fstream>
 
-#include "bem_layer_integrals.h"
 #include "errors.h"
-#include "somigliana_coordinates.h"
 
 namespace somicage {
 
 namespace {
-
-// K_main and K_tail of each method's C (somigliana_deformer.cpp, green_coordinates.cpp, mean_value_coordinates.cpp).
-std::size_t mainColumns(Method method, int dim, int cageVertices, int cageFaces) {
-  const std::size_t V = static_cast<std::size_t>(cageVertices), F = static_cast<std::size_t>(cageFaces);
-  switch (method) {
-    case Method::Somigliana:
-      return V * vertexTermCount(dim) + F * faceTermCount(dim);
-    case Method::Green:
-      return V + F;
-    case Method::MeanValue:
-      return V;
-    case Method::Bem:
-      return V * vertexTermCount(dim) + F * bemFaceTermCount(dim) + dim + 1;  // integrals, [x | 1]
-  }
-  return 0;
-}
-
-std::size_t tailColumns(Method method, int dim) {
-  switch (method) {
-    case Method::Somigliana:
-      return vertexTermCount(dim) + dim + 1;  // per-point sums of the terms, [x | 1]
-    case Method::Green:
-      return dim + 1;  // [x | 1]
-    case Method::MeanValue:
-      return 0;
-    case Method::Bem:
-      return dim + 1;  // [x | 1]
-  }
-  return 0;
-}
 
 // The first whole number in a line of /proc/meminfo or a cgroup file; nullopt when there is none.
 std::optional<std::size_t> readNumber(const std::string& text) {
@@ -86,8 +54,7 @@ std::optional<std::size_t> cgroupHeadroom() {
 
 std::size_t estimateCoordinateBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
                                     bool floatStorage) {
-  const std::size_t columns = mainColumns(method, dim, cageVertices, cageFaces) + tailColumns(method, dim);
-  return points * columns * (floatStorage ? sizeof(float) : sizeof(double));
+  return method->layout(dim, cageVertices, cageFaces).bytes(points, floatStorage);
 }
 
 MemoryEstimate& MemoryEstimate::operator+=(const MemoryEstimate& other) {
@@ -100,35 +67,11 @@ MemoryEstimate& MemoryEstimate::operator+=(const MemoryEstimate& other) {
 
 MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
                                         bool floatStorage, int threads) {
+  const CoordinateLayout layout = method->layout(dim, cageVertices, cageFaces);
   MemoryEstimate e;
   e.points = points;
-  e.coordinates = estimateCoordinateBytes(method, dim, cageVertices, cageFaces, points, floatStorage);
-  const std::size_t doubleCoordinates = estimateCoordinateBytes(method, dim, cageVertices, cageFaces, points, false);
-  const std::size_t rowBuffers = static_cast<std::size_t>(threads > 0 ? threads : omp_get_max_threads()) *
-                                 mainColumns(method, dim, cageVertices, cageFaces) * sizeof(double);
-  switch (method) {
-    case Method::Somigliana:
-      // Rows go straight into C; the diagnostics keep a winding number and a residual per point.
-      e.working = rowBuffers + 2 * points * sizeof(double);
-      break;
-    case Method::Green:
-      // phi and psi in double stay alive while C is assembled in double (and then converted to float).
-      e.working = points * mainColumns(method, dim, cageVertices, cageFaces) * sizeof(double) +
-                  (floatStorage ? doubleCoordinates : 0) + points * sizeof(double);
-      break;
-    case Method::MeanValue:
-      // The weights are computed in double; float storage converts them while they are still alive.
-      e.working = floatStorage ? doubleCoordinates : 0;
-      break;
-    case Method::Bem: {
-      // The integrals in double while C is assembled, and the boundary matrix with its LU and data operator.
-      const std::size_t n = static_cast<std::size_t>(dim) * (static_cast<std::size_t>(cageFaces) + 1);
-      e.working = points * mainColumns(method, dim, cageVertices, cageFaces) * sizeof(double) +
-                  (floatStorage ? doubleCoordinates : 0) + points * sizeof(double) +
-                  (3 * n + static_cast<std::size_t>(dim * cageVertices)) * n * sizeof(double);
-      break;
-    }
-  }
+  e.coordinates = layout.bytes(points, floatStorage);
+  e.working = method->workingBytes(layout, dim, points, floatStorage, threads > 0 ? threads : omp_get_max_threads());
   e.output = 2 * points * static_cast<std::size_t>(dim) * sizeof(double);
   return e;
 }

@@ -11,8 +11,8 @@
 namespace somicage {
 
 // Bytes of the coordinate matrix C (frame_evaluation.h) that makeDeformer(method, ...) stores for `points` points:
-// #P rows of K_main + K_tail columns, in float or double. Equals deformer->frameCoordinates().bytes() for P points.
-// Should a deformer store extra rows for points outside the cage, this is a lower bound by those rows.
+// #P rows of the method's layout (coordinate_layout.h), in float or double. Equals deformer->frameCoordinates().bytes()
+// for P points. Should a deformer store extra rows for points outside the cage, this is a lower bound by those rows.
 std::size_t estimateCoordinateBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
                                     bool floatStorage);
 

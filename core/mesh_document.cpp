@@ -15,29 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// The lines of the text, split as parseObj splits them (LF, CRLF or a lone CR), without the end of line.
-std::vector<std::string_view> linesOf(std::string_view text) {
-  std::vector<std::string_view> lines;
-  size_t pos = 0;
-  while (pos < text.size()) {
-    const size_t end = text.find_first_of("\r\n", pos);
-    if (end == std::string_view::npos) {
-      lines.push_back(text.substr(pos));
-      break;
-    }
-    lines.push_back(text.substr(pos, end - pos));
-    pos = end + 1;
-    if (text[end] == '\r' && pos < text.size() && text[pos] == '\n') ++pos;
-  }
-  return lines;
-}
-
-// The record keyword of a line the way parseObj recognises `v`, `f` and `l`: the first token when a blank follows.
-std::string_view keywordOf(std::string_view line) {
-  const size_t end = line.find_first_of(" \t");
-  return end == std::string_view::npos ? std::string_view() : line.substr(0, end);
-}
-
 // Index part k (1 = texture, 2 = normal) of a face corner `v/t/n` as a 0-based index, -1 when absent.
 int cornerIndex(std::string_view corner, int part, int count, const std::string& source, long line) {
   for (int k = 0; k < part; ++k) {
@@ -111,52 +88,42 @@ std::string relocatedMaterialLibraries(std::string_view line, const std::string&
 MeshDocument parseObjDocument(const std::string& text, const std::string& source) {
   MeshDocument document;
   document.sourcePath = source;
-  document.geometry = parseObj(text, source);
-
-  std::string_view body(text);
-  if (body.substr(0, 3) == "\xEF\xBB\xBF") body.remove_prefix(3);
   std::vector<Eigen::RowVector3d> normals, uvs;
   std::string material;
   int vertexCount = 0;
-  long lineNumber = 0;
-  for (const std::string_view rawLine : linesOf(body)) {
-    ++lineNumber;
-    std::string_view line = rawLine;
-    while (!line.empty() && isBlank(line.front())) line.remove_prefix(1);
-    const std::string_view keyword = keywordOf(line);
-    ObjRecord record;
-    record.text = std::string(rawLine);
-    if (keyword == "v") {
-      const std::vector<std::string_view> tokens = splitTokens(line);
-      record.kind = ObjRecord::Kind::Position;
-      record.index = vertexCount++;
-      record.text.clear();
-      for (size_t k = 4; k < tokens.size(); ++k) record.text += ' ' + std::string(tokens[k]);
-    } else if (keyword == "vn") {
-      record.kind = ObjRecord::Kind::Normal;
-      record.index = static_cast<int>(normals.size());
-      normals.push_back(numbersOf(splitTokens(line), 3, source, lineNumber));
-    } else if (keyword == "vt") {
-      uvs.push_back(numbersOf(splitTokens(line), 2, source, lineNumber));
-    } else if (keyword == "usemtl") {
-      const std::vector<std::string_view> tokens = splitTokens(line);
-      material = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
-    } else if (keyword == "f") {
-      std::vector<int> faceNormals, faceUVs;
-      const std::vector<std::string_view> tokens = splitTokens(line);
-      for (size_t k = 1; k < tokens.size(); ++k) {
-        faceUVs.push_back(cornerIndex(tokens[k], 1, static_cast<int>(uvs.size()), source, lineNumber));
-        faceNormals.push_back(cornerIndex(tokens[k], 2, static_cast<int>(normals.size()), source, lineNumber));
-      }
-      document.faceNormals.push_back(std::move(faceNormals));
-      document.faceUVs.push_back(std::move(faceUVs));
-      document.faceMaterial.push_back(material);
-    }
-    document.records.push_back(std::move(record));
-  }
-  SOMICAGE_ASSERT(
-      vertexCount == document.geometry.numVertices() && document.faceNormals.size() == document.geometry.faces.size(),
-      "the OBJ document and parseObj disagree on the records of " + source);
+  // The records, in parseObj's one pass (it reads the positions, faces and lines itself).
+  document.geometry = parseObj(
+      text, source, [&](long lineNumber, std::string_view rawLine, std::string_view line, std::string_view keyword) {
+        ObjRecord record;
+        record.text = std::string(rawLine);
+        if (keyword == "v") {
+          const std::vector<std::string_view> tokens = splitTokens(line);
+          record.kind = ObjRecord::Kind::Position;
+          record.index = vertexCount++;
+          record.text.clear();
+          for (size_t k = 4; k < tokens.size(); ++k) record.text += ' ' + std::string(tokens[k]);
+        } else if (keyword == "vn") {
+          record.kind = ObjRecord::Kind::Normal;
+          record.index = static_cast<int>(normals.size());
+          normals.push_back(numbersOf(splitTokens(line), 3, source, lineNumber));
+        } else if (keyword == "vt") {
+          uvs.push_back(numbersOf(splitTokens(line), 2, source, lineNumber));
+        } else if (keyword == "usemtl") {
+          const std::vector<std::string_view> tokens = splitTokens(line);
+          material = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
+        } else if (keyword == "f") {
+          std::vector<int> faceNormals, faceUVs;
+          const std::vector<std::string_view> tokens = splitTokens(line);
+          for (size_t k = 1; k < tokens.size(); ++k) {
+            faceUVs.push_back(cornerIndex(tokens[k], 1, static_cast<int>(uvs.size()), source, lineNumber));
+            faceNormals.push_back(cornerIndex(tokens[k], 2, static_cast<int>(normals.size()), source, lineNumber));
+          }
+          document.faceNormals.push_back(std::move(faceNormals));
+          document.faceUVs.push_back(std::move(faceUVs));
+          document.faceMaterial.push_back(material);
+        }
+        document.records.push_back(std::move(record));
+      });
   document.normalCount = static_cast<int>(normals.size());
   document.normals.resize(document.normalCount, 3);
   for (int n = 0; n < document.normalCount; ++n) document.normals.row(n) = normals[static_cast<size_t>(n)];
@@ -234,7 +201,7 @@ void writeObjDocument(const std::string& path, const MeshDocument& document, con
         out += ' ';
         appendNumber(out, normals(record.index, c));
       }
-    } else if (keywordOf(record.text) == "mtllib") {
+    } else if (objKeyword(record.text) == "mtllib") {
       out += relocatedMaterialLibraries(record.text, document.sourcePath, path);
     } else {
       out += record.text;

@@ -3,10 +3,10 @@
 //
 // The geometry (positions, faces, polylines) is what the engine deforms; it comes from the format's reader
 // (OBJ: parseObj, the one OBJ parser; other formats: mesh_formats.h). An OBJ document also keeps every record of
-// the file in order: `vt`, `g`, `o`, `usemtl`, `mtllib`, `s`, `f` and `l` lines (face index triples included)
-// and comments are written back verbatim; `v` lines get the new positions (any extra tokens, e.g. vertex colours,
-// kept); `vn` lines get the deformed normals: transformed by the deformation's gradient (normal_transform.h) or
-// recomputed for the new positions (recomputeNormals).
+// the file in order, collected in parseObj's one pass (ObjLineVisitor): `vt`, `g`, `o`, `usemtl`, `mtllib`, `s`, `f`
+// and `l` lines (face index triples included) and comments are written back verbatim; `v` lines get the new positions
+// (any extra tokens, e.g. vertex colours, kept); `vn` lines get the deformed normals: transformed by the deformation's
+// gradient (normal_transform.h) or recomputed for the new positions (recomputeNormals).
 #pragma once
 
 #include <Eigen/Core>

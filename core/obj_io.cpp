@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <sys/stat.h>
-#include <tiny_obj_loader.h>
 #include <unistd.h>
 
 #include <Eigen/Geometry>
@@ -35,6 +34,11 @@ std::vector<std::string_view> splitTokens(std::string_view s) {
     if (i > start) tokens.push_back(s.substr(start, i - start));
   }
   return tokens;
+}
+
+std::string_view objKeyword(std::string_view line) {
+  const size_t end = line.find_first_of(" \t");
+  return end == std::string_view::npos ? std::string_view() : line.substr(0, end);
 }
 
 namespace {
@@ -72,8 +76,7 @@ std::string readTextFile(const std::string& path) {
   return text;
 }
 
-// Splits text into lines the way tinyobjloader does (LF, CRLF or a lone CR ends a line), so that our line
-// numbers and element counts match its own.
+// Splits text into lines: LF, CRLF or a lone CR ends a line.
 class LineCursor {
  public:
   explicit LineCursor(std::string_view text) : text_(text) {}
@@ -111,7 +114,8 @@ long lineAt(std::string_view text, size_t offset) {
 
 enum class NumberStatus { Ok, NotANumber, OutOfRange, NotFinite };
 
-// Correctly rounded and locale-independent (tinyobjloader's own parser is neither, and reads "nan" as 0).
+// Correctly rounded and locale-independent (tinyobjloader's parser is neither, and reads "nan" as 0: why the file
+// is parsed here, in one pass, rather than by it).
 NumberStatus parseCoordinate(std::string_view token, double& value) {
   if (!token.empty() && token[0] == '+') {
     token.remove_prefix(1);
@@ -136,15 +140,21 @@ bool parseVertexIndex(std::string_view token, long long& index) {
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
-// What our own pass over the file collects: vertex positions (parsed here, see parseCoordinate), the line of
-// every face (tinyobjloader reads the faces themselves) and the `l` polylines (parsed here: tinyobjloader
-// 2.0.0rc10 drops line groups before a `g` and repeats them after a `usemtl`).
+// What the one pass over the file collects: vertex positions (see parseCoordinate), faces and `l` polylines
+// (tinyobjloader 2.0.0rc10 drops line groups before a `g` and repeats them after a `usemtl`), each element with
+// its line.
 struct ObjScan {
-  std::vector<double> coordinates;  // 3 per vertex
+  std::vector<double> coordinates;            // 3 per vertex
+  std::vector<std::vector<long long>> faces;  // resolved 0-based indices, range checked later
   std::vector<long> faceLines;
-  std::vector<std::vector<long long>> lines;  // resolved 0-based indices, range checked later
+  std::vector<std::vector<long long>> lines;  // the same for `l` elements
   std::vector<long> lineLines;
 };
+
+// A 1-based index, or a negative one relative to the vertices read so far, as a 0-based index.
+long long resolveIndex(long long index, const ObjScan& scan) {
+  return index > 0 ? index - 1 : static_cast<long long>(scan.coordinates.size() / 3) + index;
+}
 
 void scanVertex(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
   const long index = static_cast<long>(scan.coordinates.size() / 3);
@@ -182,6 +192,7 @@ void scanVertex(const std::string& source, long lineNumber, std::string_view res
 void scanFace(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
   const std::string element = "face " + std::to_string(scan.faceLines.size());
   const std::vector<std::string_view> tokens = splitTokens(rest);
+  std::vector<long long> indices;
   for (const std::string_view token : tokens) {
     long long index = 0;
     if (!parseVertexIndex(token, index)) {
@@ -196,6 +207,7 @@ void scanFace(const std::string& source, long lineNumber, std::string_view rest,
       throw InputError(source, lineNumber, element + ": vertex index " + quoted(token) + " is out of range",
                        "the file does not have that many vertices");
     }
+    indices.push_back(resolveIndex(index, scan));
   }
   if (tokens.size() < 3) {
     throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",
@@ -205,12 +217,12 @@ void scanFace(const std::string& source, long lineNumber, std::string_view rest,
     throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",
                      "faces of up to 255 vertices are supported: split this polygon");
   }
+  scan.faces.push_back(std::move(indices));
   scan.faceLines.push_back(lineNumber);
 }
 
 void scanLine(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
   const std::string element = "line element " + std::to_string(scan.lines.size());
-  const long long vertexCount = static_cast<long long>(scan.coordinates.size() / 3);
   std::vector<long long> indices;
   for (const std::string_view token : splitTokens(rest)) {
     long long index = 0;
@@ -218,7 +230,7 @@ void scanLine(const std::string& source, long lineNumber, std::string_view rest,
       throw InputError(source, lineNumber, element + ": " + quoted(token) + " is not a vertex index",
                        "write polylines as `l i j ...` with 1-based vertex indices");
     }
-    indices.push_back(index > 0 ? index - 1 : vertexCount + index);
+    indices.push_back(resolveIndex(index, scan));
   }
   if (indices.size() < 2) {
     throw InputError(source, lineNumber, element + " has " + std::to_string(indices.size()) + " vertices",
@@ -228,33 +240,23 @@ void scanLine(const std::string& source, long lineNumber, std::string_view rest,
   scan.lineLines.push_back(lineNumber);
 }
 
-ObjScan scanObj(std::string_view text, const std::string& source) {
+ObjScan scanObj(std::string_view text, const std::string& source, const ObjLineVisitor& visitor) {
   ObjScan scan;
   LineCursor cursor(text);
-  std::string_view line;
-  while (cursor.next(line)) {
-    size_t start = 0;
-    while (start < line.size() && isBlank(line[start])) ++start;
-    line.remove_prefix(start);
-    if (line.size() < 2 || !isBlank(line[1])) continue;  // blank, comment, or another record
-    const std::string_view rest = line.substr(2);
-    if (line[0] == 'v') scanVertex(source, cursor.lineNumber(), rest, scan);
-    if (line[0] == 'f') scanFace(source, cursor.lineNumber(), rest, scan);
-    if (line[0] == 'l') scanLine(source, cursor.lineNumber(), rest, scan);
+  std::string_view raw;
+  while (cursor.next(raw)) {
+    std::string_view line = raw;
+    while (!line.empty() && isBlank(line.front())) line.remove_prefix(1);
+    const std::string_view keyword = objKeyword(line);
+    if (keyword.size() == 1) {  // else blank, a comment, or another record
+      const std::string_view rest = line.substr(2);
+      if (keyword[0] == 'v') scanVertex(source, cursor.lineNumber(), rest, scan);
+      if (keyword[0] == 'f') scanFace(source, cursor.lineNumber(), rest, scan);
+      if (keyword[0] == 'l') scanLine(source, cursor.lineNumber(), rest, scan);
+    }
+    if (visitor) visitor(cursor.lineNumber(), raw, line, keyword);
   }
   return scan;
-}
-
-long lineNumberIn(const std::string& message) {
-  const size_t at = message.find("line ");
-  if (at == std::string::npos) return -1;
-  return std::strtol(message.c_str() + at + 5, nullptr, 10);
-}
-
-std::string firstLineOf(const std::string& message) {
-  std::string first = message.substr(0, message.find('\n'));
-  while (!first.empty() && (first.back() == '.' || first.back() == ' ')) first.pop_back();
-  return first;
 }
 
 std::string outOfRangeMessage(const std::string& element, long long index, int vertexCount) {
@@ -517,18 +519,18 @@ void appendIndexList(std::string& out, char record, const std::vector<int>& indi
 // Public functions
 // ---------------------------------------------------------------------------------------------------------------
 
-PolygonMesh parseObj(const std::string& rawText, const std::string& source) {
+PolygonMesh parseObj(const std::string& rawText, const std::string& source, const ObjLineVisitor& visitor) {
   std::string_view text(rawText);
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
   if (text.empty()) {
     throw InputError(source, -1, "the file is empty", "an OBJ file lists vertices as `v x y z` lines");
   }
-  // tinyobjloader reads each line as a C string: a NUL byte would end it there, and its faces would differ from ours.
+  // A NUL byte means a binary file, whatever the rest looks like.
   if (const size_t nul = text.find('\0'); nul != std::string_view::npos) {
     throw InputError(source, lineAt(text, nul), "the file contains a NUL byte: it is not a text OBJ file",
                      "export the model again as a text .obj file");
   }
-  const ObjScan scan = scanObj(text, source);
+  const ObjScan scan = scanObj(text, source, visitor);
   const int vertexCount = static_cast<int>(scan.coordinates.size() / 3);
   if (vertexCount == 0) {
     throw InputError(source, -1, "the file has no vertices", "an OBJ file lists vertices as `v x y z` lines");
@@ -538,58 +540,23 @@ PolygonMesh parseObj(const std::string& rawText, const std::string& source) {
   mesh.vertices = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>>(scan.coordinates.data(),
                                                                                               vertexCount, 3);
 
-  // Faces: tinyobjloader, without triangulation, checked against our scan.
-  tinyobj::ObjReaderConfig config;
-  config.triangulate = false;
-  config.vertex_color = false;
-  tinyobj::ObjReader reader;
-  const bool parsed = reader.ParseFromString(std::string(text), std::string(), config);
-  if (!parsed || !reader.Error().empty()) {
-    const std::string error = reader.Error().empty() ? "tinyobjloader could not parse the file" : reader.Error();
-    throw InputError(source, lineNumberIn(error), firstLineOf(error), "fix the OBJ syntax on that line");
-  }
-  SOMICAGE_ASSERT(reader.GetAttrib().vertices.size() == scan.coordinates.size(),
-                  "tinyobjloader and the OBJ scan disagree on the vertex count of " + source);
-  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-    size_t offset = 0;
-    for (const unsigned char count : shape.mesh.num_face_vertices) {
-      std::vector<int> face(count);
-      for (size_t k = 0; k < count; ++k) face[k] = shape.mesh.indices[offset + k].vertex_index;
-      offset += count;
-      mesh.faces.push_back(std::move(face));
+  // Elements refer to vertices by index: each must exist.
+  auto resolve = [&](const std::vector<long long>& element, const std::string& name, long line) {
+    std::vector<int> out;
+    for (const long long i : element) {
+      if (i < 0 || i >= vertexCount) {
+        throw InputError(source, line, outOfRangeMessage(name, i, vertexCount),
+                         "OBJ vertex indices run from 1 to the vertex count; negative ones count back");
+      }
+      out.push_back(static_cast<int>(i));
     }
-  }
-  SOMICAGE_ASSERT(mesh.faces.size() == scan.faceLines.size(),
-                  "tinyobjloader and the OBJ scan disagree on the face count of " + source);
+    return out;
+  };
+  for (size_t f = 0; f < scan.faces.size(); ++f)
+    mesh.faces.push_back(resolve(scan.faces[f], "face " + std::to_string(f), scan.faceLines[f]));
   mesh.faceSourceLines = scan.faceLines;
-
-  // tinyobjloader only warns about out-of-range indices, and with the last line of the file: name the face.
-  for (size_t f = 0; f < mesh.faces.size(); ++f) {
-    for (const int i : mesh.faces[f]) {
-      if (i < 0 || i >= vertexCount) {
-        throw InputError(source, scan.faceLines[f], outOfRangeMessage("face " + std::to_string(f), i, vertexCount),
-                         "OBJ vertex indices run from 1 to the vertex count; negative ones count back");
-      }
-    }
-  }
-  if (reader.Warning().find("Vertex indices out of bounds") != std::string::npos) {
-    const std::string warning = reader.Warning().substr(reader.Warning().find("Vertex indices out of bounds"));
-    throw InputError(source, lineNumberIn(warning), firstLineOf(warning),
-                     "OBJ vertex indices run from 1 to the vertex count");
-  }
-
-  for (size_t k = 0; k < scan.lines.size(); ++k) {
-    std::vector<int> line;
-    for (const long long i : scan.lines[k]) {
-      if (i < 0 || i >= vertexCount) {
-        throw InputError(source, scan.lineLines[k],
-                         outOfRangeMessage("line element " + std::to_string(k), i, vertexCount),
-                         "OBJ vertex indices run from 1 to the vertex count; negative ones count back");
-      }
-      line.push_back(static_cast<int>(i));
-    }
-    mesh.lines.push_back(std::move(line));
-  }
+  for (size_t k = 0; k < scan.lines.size(); ++k)
+    mesh.lines.push_back(resolve(scan.lines[k], "line element " + std::to_string(k), scan.lineLines[k]));
   mesh.lineSourceLines = scan.lineLines;
   return mesh;
 }
@@ -665,13 +632,17 @@ Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage)
   return posedVerticesFromMesh(loadMesh(path), restCage, path);
 }
 
-Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source) {
-  if (mesh.numVertices() != restCage.numVertices()) {
+void requirePosedVertexCount(const Cage& restCage, long vertices, const std::string& source) {
+  if (vertices != restCage.numVertices()) {
     throw InputError(source, -1,
-                     "the posed cage has " + std::to_string(mesh.numVertices()) + " vertices, the rest cage has " +
+                     "the posed cage has " + std::to_string(vertices) + " vertices, the rest cage has " +
                          std::to_string(restCage.numVertices()),
                      "a pose lists the rest cage's vertices, in the same order");
   }
+}
+
+Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source) {
+  requirePosedVertexCount(restCage, mesh.numVertices(), source);
   return restCage.dim() == 3 ? mesh.vertices : Eigen::MatrixXd(mesh.vertices.leftCols(2));
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,9 +38,18 @@ struct PolygonMesh {
 // OBJ separates tokens by spaces and tabs; every reader of OBJ lines splits them with these.
 bool isBlank(char c);
 std::vector<std::string_view> splitTokens(std::string_view line);
+// The record keyword of a line without leading blanks, as the parser reads it: its first token when a blank follows
+// ("v", "vn", "usemtl"), else empty.
+std::string_view objKeyword(std::string_view line);
+
+// Sees every line of an OBJ text in the parser's one pass, in order, after the parser has read the line's own `v`,
+// `f` or `l` record: its 1-based number, the line as written (no end of line), the line without leading blanks and
+// its keyword (the first token when a blank follows it, else empty). How mesh_document.h keeps the other records.
+using ObjLineVisitor =
+    std::function<void(long lineNumber, std::string_view rawLine, std::string_view line, std::string_view keyword)>;
 
 // Parses OBJ text. source names the text in error messages (normally the file path).
-PolygonMesh parseObj(const std::string& text, const std::string& source);
+PolygonMesh parseObj(const std::string& text, const std::string& source, const ObjLineVisitor& visitor = {});
 
 // Reads any OBJ file (mesh, polygon soup or point set).
 PolygonMesh loadMesh(const std::string& path);
@@ -66,6 +76,8 @@ Cage loadCage(const std::string& path);
 // The vertices of a posed cage (#V by d, d = restCage.dim(); a 2D cage takes x, y). The file must have the
 // rest cage's vertex count, in the same order; its faces are not compared (a pose may list them in another order).
 Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage);
+// Throws InputError naming source unless a pose has the rest cage's vertex count.
+void requirePosedVertexCount(const Cage& restCage, long vertices, const std::string& source);
 // The same from a parsed mesh; source names it in error messages.
 Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source);
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "cage.h"
 #include "errors.h"
 
 namespace somicage {
@@ -67,8 +68,11 @@ std::vector<int> triangleComponents(const VdbMesh& mesh, int& count) {
 }
 
 double signedVolumeTerm(const VdbMesh& mesh, const openvdb::Vec3I& t) {
-  const openvdb::Vec3d a = mesh.points[t[0]], b = mesh.points[t[1]], c = mesh.points[t[2]];
-  return a.dot(b.cross(c)) / 6.0;
+  const auto corner = [&](int k) {
+    const openvdb::Vec3d p = mesh.points[t[k]];
+    return Eigen::Vector3d(p.x(), p.y(), p.z());
+  };
+  return signedTetrahedronVolume(Eigen::Vector3d::Zero(), corner(0), corner(1), corner(2));
 }
 
 // OpenVDB orients the surface of {distance <= offset} with normals pointing to larger distances: the outer shell of

@@ -21,7 +21,7 @@ Timeline timelineFromJson(const JsonValue& value, const std::string& source);
 // What an animation needs from a session file: the files, the method and parameters, the poses and the keys.
 struct AnimationSource {
   std::string meshPath, cagePath;
-  Method method = Method::Somigliana;
+  Method method;  // the registry's first (Somigliana) when the session names none
   DeformParams params;
   PoseLibrary poses;
   Timeline timeline;

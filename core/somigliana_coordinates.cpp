@@ -39,27 +39,37 @@ Eigen::MatrixXd assembleVertexCoordinate(const double* t, int dim, double nu) {
   return c.alpha * (t[0] * Eigen::Matrix2d::Identity() + A) + c.beta * B;
 }
 
+CoordinateLayout somiglianaLayout(int dim, int numVertices, int numFaces) {
+  return {numVertices, numFaces, vertexTermCount(dim), faceTermCount(dim), vertexTermCount(dim) + dim + 1};
+}
+
+void gatherVertexTerms(const CoordinateLayout& layout, const double* row, int i, double* terms) {
+  for (int k = 0; k < layout.vertexTerms; ++k) terms[k] = row[layout.vertexColumn(i, k)];
+}
+
 double unityResidualOfSums(const double* termSums, int dim) {
   return (assembleVertexCoordinate(termSums, dim, 0.0) - Eigen::MatrixXd::Identity(dim, dim)).cwiseAbs().maxCoeff();
 }
 
 Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinate(int p, int i, double nu) const {
-  return assembleVertexCoordinate(values.row(p).data() + vertexOffset(i), dim, nu);
+  double terms[vertexTermCount(3)];
+  gatherVertexTerms(layout, values.row(p).data(), i, terms);
+  return assembleVertexCoordinate(terms, dim, nu);
 }
 
 Eigen::VectorXd SomiglianaCoordinates::faceCoordinateTimesNormal(int p, int j, double nu) const {
   const NuCoefficients c = nuCoefficients(dim, nu);
-  const double* t = values.row(p).data() + faceOffset(j);
+  const double* t = values.row(p).data() + layout.faceColumn(j, 0);
   const Eigen::Map<const Eigen::VectorXd> q(t + 1, dim);
   return c.k1 * t[0] * restNormals.row(j).transpose() + c.k2 * q;
 }
 
 Eigen::MatrixXd SomiglianaCoordinates::vertexCoordinateSum(int p, double nu) const {
-  // T_i is linear in its terms: sum the terms, then assemble once.
-  Eigen::VectorXd sums = Eigen::VectorXd::Zero(vertexTermCount(dim));
-  for (int i = 0; i < numVertices; ++i)
-    sums += values.row(p).segment(vertexOffset(i), vertexTermCount(dim)).transpose();
-  return assembleVertexCoordinate(sums.data(), dim, nu);
+  // T_i is linear in its terms: sum the terms (each a contiguous range of the row), then assemble once.
+  double sums[vertexTermCount(3)] = {0};
+  for (int k = 0; k < layout.vertexTerms; ++k)
+    for (int i = 0; i < layout.numVertices; ++i) sums[k] += values(p, layout.vertexColumn(i, k));
+  return assembleVertexCoordinate(sums, dim, nu);
 }
 
 Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
@@ -74,46 +84,46 @@ Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords) {
 // Integration
 // ---------------------------------------------------------------------------------------------------------------
 
-namespace {
-
-}  // namespace
-
-void addVertexTerms(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], double* row) {
+void addVertexTerms(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
+                    const CoordinateLayout& layout, double* row) {
+  const int stride = layout.numVertices;
   for (int k = 0; k < 3; ++k) {
-    double* t = row + corners[k] * vertexTermCount(3);
+    double* t = row + layout.vertexColumn(corners[k], 0);
     const Eigen::Vector3d omega = I.V[k].cross(n);  // (n V^T - V n^T) w = (V x n) x w
     const Eigen::Matrix3d& B = I.B[k];
     t[0] += I.D[k];
-    t[1] += omega.x(), t[2] += omega.y(), t[3] += omega.z();
-    t[4] += B(0, 0), t[5] += B(1, 1), t[6] += B(2, 2), t[7] += B(0, 1), t[8] += B(0, 2), t[9] += B(1, 2);
+    t[stride] += omega.x(), t[2 * stride] += omega.y(), t[3 * stride] += omega.z();
+    t[4 * stride] += B(0, 0), t[5 * stride] += B(1, 1), t[6 * stride] += B(2, 2);
+    t[7 * stride] += B(0, 1), t[8 * stride] += B(0, 2), t[9 * stride] += B(1, 2);
   }
 }
 
-void addVertexTerms(const EdgeIntegrals& I, const int ends[2], double* row) {
+void addVertexTerms(const EdgeIntegrals& I, const int ends[2], const CoordinateLayout& layout, double* row) {
+  const int stride = layout.numVertices;
   for (int k = 0; k < 2; ++k) {
-    double* t = row + ends[k] * vertexTermCount(2);
+    double* t = row + layout.vertexColumn(ends[k], 0);
     t[0] += I.D[k];
-    t[1] += I.A[k];
-    t[2] += I.B[k](0, 0), t[3] += I.B[k](1, 1), t[4] += I.B[k](0, 1);
+    t[stride] += I.A[k];
+    t[2 * stride] += I.B[k](0, 0), t[3 * stride] += I.B[k](1, 1), t[4 * stride] += I.B[k](0, 1);
   }
 }
 
 namespace {
 
-// Adds one triangle's integrals to the row of point x (3D layout, see vertexTermCount).
-void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3], int faceOffset,
-                        double* row, double& solidAngleSum) {
-  addVertexTerms(I, n, corners, row);
-  double* f = row + faceOffset;
+// Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; in the layout of C).
+void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
+                        const CoordinateLayout& layout, int face, double* row, double& solidAngleSum) {
+  addVertexTerms(I, n, corners, layout, row);
+  double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector3d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y(), f[3] += q.z();
   solidAngleSum += I.solidAngle;
 }
 
-void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int ends[2], int faceOffset, double* row,
-                    double& angleSum) {
-  addVertexTerms(I, ends, row);
-  double* f = row + faceOffset;
+void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int ends[2], const CoordinateLayout& layout,
+                    int face, double* row, double& angleSum) {
+  addVertexTerms(I, ends, layout, row);
+  double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector2d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y();
   angleSum += I.angle;
@@ -128,8 +138,8 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
 
   const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
   const int numPoints = static_cast<int>(points.rows());
-  const int vertexColumns = cage.numVertices() * vertexTermCount(dim);
-  const int columns = vertexColumns + cage.numFaces() * faceTermCount(dim);
+  const CoordinateLayout layout = somiglianaLayout(dim, cage.numVertices(), cage.numFaces());
+  const int columns = layout.mainColumns();
   std::vector<TriangleFrame> frames;
   if (dim == 3) {
     frames.reserve(cage.numFaces());
@@ -139,42 +149,42 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
   }
   const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
   auto rowBuffer = [columns] { return std::vector<double>(columns); };
-  forEachPointInBlocks(
-      numPoints, cage.numFaces(), options.threads, progress, rowBuffer, [&](std::vector<double>& buffer, int p) {
-        std::fill(buffer.begin(), buffer.end(), 0.0);
-        double* row = buffer.data();
-        double angleSum = 0, winding;
-        if (dim == 3) {
-          const Eigen::Vector3d x = points.row(p);
-          TriangleIntegrals I;
-          for (int j = 0; j < cage.numFaces(); ++j) {
-            if (frames[j].degenerate) continue;
-            const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
-            if (gauss)
-              integrateTriangleGauss(cage.vertices.row(corners[0]), cage.vertices.row(corners[1]),
-                                     cage.vertices.row(corners[2]), x, options.gaussPointsPerSide, I);
-            else
-              integrateTriangle(frames[j], x, I);
-            accumulateTriangle(I, frames[j].n, corners, vertexColumns + j * faceTermCount(3), row, angleSum);
-          }
-          winding = -angleSum / (4 * M_PI);
-        } else {
-          const Eigen::Vector2d x = points.row(p);
-          EdgeIntegrals I;
-          for (int j = 0; j < cage.numFaces(); ++j) {
-            const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
-            const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
-            if (p0 == p1) continue;  // zero-length edges contribute nothing
-            if (gauss)
-              integrateEdgeGauss(p0, p1, x, 1, options.gaussPointsPerSide, I);
-            else
-              integrateEdge(p0, p1, x, I);
-            accumulateEdge(I, normals.row(j), ends, vertexColumns + j * faceTermCount(2), row, angleSum);
-          }
-          winding = -angleSum / (2 * M_PI);
-        }
-        sink(p, row, winding);
-      });
+  forEachPointInBlocks(numPoints, cage.numFaces(), options.threads, progress, rowBuffer,
+                       [&](std::vector<double>& buffer, int p) {
+                         std::fill(buffer.begin(), buffer.end(), 0.0);
+                         double* row = buffer.data();
+                         double angleSum = 0, winding;
+                         if (dim == 3) {
+                           const Eigen::Vector3d x = points.row(p);
+                           TriangleIntegrals I;
+                           for (int j = 0; j < cage.numFaces(); ++j) {
+                             if (frames[j].degenerate) continue;
+                             const int corners[3] = {cage.faces(j, 0), cage.faces(j, 1), cage.faces(j, 2)};
+                             if (gauss)
+                               integrateTriangleGauss(cage.vertices.row(corners[0]), cage.vertices.row(corners[1]),
+                                                      cage.vertices.row(corners[2]), x, options.gaussPointsPerSide, I);
+                             else
+                               integrateTriangle(frames[j], x, I);
+                             accumulateTriangle(I, frames[j].n, corners, layout, j, row, angleSum);
+                           }
+                           winding = -angleSum / (4 * M_PI);
+                         } else {
+                           const Eigen::Vector2d x = points.row(p);
+                           EdgeIntegrals I;
+                           for (int j = 0; j < cage.numFaces(); ++j) {
+                             const int ends[2] = {cage.faces(j, 0), cage.faces(j, 1)};
+                             const Eigen::Vector2d p0 = cage.vertices.row(ends[0]), p1 = cage.vertices.row(ends[1]);
+                             if (isDegenerateFace(cage, j)) continue;  // zero-length edges contribute nothing
+                             if (gauss)
+                               integrateEdgeGauss(p0, p1, x, 1, options.gaussPointsPerSide, I);
+                             else
+                               integrateEdge(p0, p1, x, I);
+                             accumulateEdge(I, normals.row(j), ends, layout, j, row, angleSum);
+                           }
+                           winding = -angleSum / (2 * M_PI);
+                         }
+                         sink(p, row, winding);
+                       });
 }
 
 SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
@@ -182,10 +192,9 @@ SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen
                                                    const ProgressCallback& progress) {
   SomiglianaCoordinates coords;
   coords.dim = cage.dim();
-  coords.numVertices = cage.numVertices();
-  coords.numFaces = cage.numFaces();
+  coords.layout = somiglianaLayout(cage.dim(), cage.numVertices(), cage.numFaces());
   coords.restNormals = faceNormals(cage, cage.vertices);
-  const int columns = coords.numVertices * vertexTermCount(coords.dim) + coords.numFaces * faceTermCount(coords.dim);
+  const int columns = coords.layout.mainColumns();
   coords.values.resize(points.rows(), columns);
   coords.winding.resize(points.rows());
   integrateSomiglianaCoordinates(cage, points, options, progress, [&](int p, const double* row, double winding) {

@@ -14,23 +14,15 @@
 #include <functional>
 
 #include "cage.h"
+#include "coordinate_layout.h"
 #include "edge_integrals.h"
+#include "integration_options.h"
 #include "progress.h"
 #include "triangle_integrals.h"
 
 namespace somicage {
 
-using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
-
-// How the triangle integrals are evaluated (3D). The closed form is exact; Gauss is the paper's baseline.
-struct IntegrationOptions {
-  enum class Rule { ClosedForm, Gauss };
-  Rule rule = Rule::ClosedForm;
-  int gaussPointsPerSide = 50;  // N: 3 N^2 points per triangle (the paper uses N = 50, 7500 points)
-  int threads = 0;              // OpenMP threads; 0 = the OpenMP default
-};
-
-// Per-vertex and per-face term counts in a row of SomiglianaCoordinates::values.
+// Per-vertex and per-face term counts in a row of C (coordinate_layout.h).
 //   3D vertex (10): D, omega (3) with A w = omega x w, B (xx, yy, zz, xy, xz, yz);  face (4): S, q (3).
 //   2D vertex (5):  D, A01 (A = [[0, A01], [-A01, 0]]), B (xx, yy, xy);             face (3): S, q (2).
 constexpr int vertexTermCount(int dim) { return 1 + dim * dim; }
@@ -47,11 +39,17 @@ Eigen::MatrixXd assembleVertexCoordinate(const double* terms, int dim, double nu
 // max |sum_i T_i - I| at nu = 0, from the sums over i of the vertex terms (vertexTermCount(dim) numbers).
 double unityResidualOfSums(const double* termSums, int dim);
 
+// The Somigliana layout of C: these terms per vertex and per face, then the tail the deformer adds to every row:
+// the per-point sums over the vertices of the vertex terms, [x | 1] (somigliana_method.cpp).
+CoordinateLayout somiglianaLayout(int dim, int numVertices, int numFaces);
+
+// The terms of vertex i gathered from a row laid out as C (vertexTermCount(dim) numbers into terms).
+void gatherVertexTerms(const CoordinateLayout& layout, const double* row, int i, double* terms);
+
 struct SomiglianaCoordinates {
   int dim = 3;
-  int numVertices = 0;
-  int numFaces = 0;
-  // #P by (numVertices * vertexTermCount(dim) + numFaces * faceTermCount(dim)); vertex block first.
+  CoordinateLayout layout;  // somiglianaLayout
+  // #P by layout.mainColumns(), in the layout of C.
   RowMatrixXd values;
   // Unit outward normals n_j of the rest cage (#F by d), which K_j is applied to.
   Eigen::MatrixXd restNormals;
@@ -59,8 +57,6 @@ struct SomiglianaCoordinates {
   Eigen::VectorXd winding;
 
   int numPoints() const { return static_cast<int>(values.rows()); }
-  int vertexOffset(int i) const { return i * vertexTermCount(dim); }
-  int faceOffset(int j) const { return numVertices * vertexTermCount(dim) + j * faceTermCount(dim); }
 
   // Eq. 8a at nu: T_i(x_p), d by d.
   Eigen::MatrixXd vertexCoordinate(int p, int i, double nu) const;
@@ -70,10 +66,12 @@ struct SomiglianaCoordinates {
   Eigen::MatrixXd vertexCoordinateSum(int p, double nu) const;
 };
 
-// Adds one triangle's (3D) or edge's (2D) integrals to the vertex terms of a point's row (layout above): the
-// corners' hat-function integrals, with the antisymmetric part as omega = V x n. Face terms are the caller's.
-void addVertexTerms(const TriangleIntegrals& integrals, const Eigen::Vector3d& n, const int corners[3], double* row);
-void addVertexTerms(const EdgeIntegrals& integrals, const int ends[2], double* row);
+// Adds one triangle's (3D) or edge's (2D) integrals to the vertex terms of a point's row laid out as `layout`
+// (vertexTermCount(dim) terms per vertex, as above): the corners' hat-function integrals, with the antisymmetric
+// part as omega = V x n. Face terms are the caller's (Somigliana's and BEM's differ).
+void addVertexTerms(const TriangleIntegrals& integrals, const Eigen::Vector3d& n, const int corners[3],
+                    const CoordinateLayout& layout, double* row);
+void addVertexTerms(const EdgeIntegrals& integrals, const int ends[2], const CoordinateLayout& layout, double* row);
 
 // Integrates the coordinates of every point (#P by d) against the cage. Points on the cage are singular.
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.
@@ -81,16 +79,10 @@ SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen
                                                    const IntegrationOptions& options = {},
                                                    const ProgressCallback& progress = noProgress);
 
-// Receives each point's row of nu-independent terms (the layout of SomiglianaCoordinates::values, `columns`
-// numbers) and its winding number. Called from OpenMP worker threads, once per point: it may write per-point
-// storage without locking. The row buffer is reused after the call returns.
-using CoordinateRowSink = std::function<void(int point, const double* row, double winding)>;
-
-// The integration behind computeSomiglianaCoordinates, streaming rows to a sink instead of storing them (so a
-// deformer can build its own storage without a second copy of the coordinates).
-void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points,
-                                    const IntegrationOptions& options, const ProgressCallback& progress,
-                                    const CoordinateRowSink& sink);
+// The integration behind computeSomiglianaCoordinates on the CPU (a RowIntegrator), streaming rows to a sink
+// instead of storing them (so a deformer can build its own storage without a second copy of the coordinates).
+void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
+                                    const ProgressCallback& progress, const CoordinateRowSink& sink);
 
 // Partition-of-unity residual of each point: the largest entry of |sum_i T_i(x) - I| at nu = 0 (#P).
 Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords);

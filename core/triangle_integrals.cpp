@@ -5,7 +5,8 @@
 #include <Eigen/Geometry>  // cross
 #include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "cage.h"
 
 namespace somicage {
 
@@ -36,10 +37,7 @@ TriangleFrame makeTriangleFrame(const Eigen::Vector3d& p0, const Eigen::Vector3d
   const Eigen::Vector3d e1 = p1 - p0, e2 = p2 - p0;
   const Eigen::Vector3d cross = e1.cross(e2);
   const double twiceArea = cross.norm();
-  const double longest = std::max({e1.squaredNorm(), e2.squaredNorm(), (p2 - p1).squaredNorm()});
-  // The cross product is only known to about eps |e1| |e2|, so below that the normal is noise: treat as zero area.
-  f.degenerate = !(twiceArea > 16 * std::numeric_limits<double>::epsilon() * longest) || !std::isfinite(twiceArea) ||
-                 !std::isfinite(longest);
+  f.degenerate = isDegenerateTriangle(p0, p1, p2);
   if (f.degenerate) {
     f.u.setZero(), f.v.setZero(), f.n.setZero();
     for (int i = 0; i < 3; ++i) {

@@ -68,7 +68,8 @@ void defineDeformer(py::module_& module) {
           py::arg("blend") = py::none(), py::arg("traction_fix") = true, py::arg("corotational") = false,
           "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed "
           "(V, d). nu: Poisson ratio in (-1, 0.5) or +-inf; gamma >= 0: bulging; variant: global or local; blend in "
-          "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation before "
+          "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation "
+          "before "
           "the linear-elastic solve. Green and mvc ignore all but posed; bem reads nu and corotational.")
       .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })
       .def_property_readonly("dim", &PythonDeformer::dim)
@@ -91,7 +92,9 @@ void defineDeformer(py::module_& module) {
 
 PYBIND11_MODULE(_somicage, module) {
   using namespace somicage;
-  module.doc() = "Cage deformation with Somigliana, Green and mean value coordinates (SomiCage's engine).";
+  module.doc() =
+      "Cage deformation with Somigliana coordinates and the other methods of somicage.methods() (SomiCage's "
+      "engine).";
   module.attr("__version__") = SOMICAGE_VERSION;
   registerErrors(module);
   defineCage(module);
@@ -101,11 +104,10 @@ PYBIND11_MODULE(_somicage, module) {
       "methods",
       [] {
         std::vector<std::string> names;
-        for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue, Method::Bem})
-          names.push_back(methodName(method));
+        for (Method method : allMethods()) names.push_back(methodName(method));
         return names;
       },
-      "The method names Deformer takes.");
+      "The method names Deformer takes (the engine's registry, core/method.h).");
   module.def(
       "load_mesh",
       [](const std::string& path) {

@@ -4,6 +4,7 @@
 
 #include "cage_repair.h"
 #include "cage_validation.h"
+#include "engine.h"
 #include "errors.h"
 #include "numpy_arrays.h"
 #include "python_errors.h"
@@ -29,12 +30,12 @@ Cage cageFromArrays(const py::handle& vertices, const py::handle& faces) {
 }
 
 PythonCage makeUsableCage(Cage cage, std::string source) {
-  CageRepair repair = repairCage(cage);
-  const CageReport report = validateCage(repair.cage);
-  PythonCage result{std::move(repair.cage), std::move(source), std::move(repair.fixes), describeCageWarnings(report)};
-  for (const std::string& fix : result.repairs) warn("note: " + result.source + ": " + fix);
-  for (const std::string& warning : result.warnings) warn(result.source + ": " + warning);
-  requireValidCage(report, result.source);
+  PythonCage result;
+  result.source = std::move(source);
+  result.cage = prepareCage(std::move(cage), result.source, [&](const Notice& notice) {
+    (notice.kind == Notice::Kind::Repair ? result.repairs : result.warnings).push_back(notice.text);
+    warn(describeNotice(notice));
+  });
   return result;
 }
 

@@ -22,8 +22,8 @@ struct PythonCage {
 // faces is None, the vertices as a counter-clockwise loop. Shapes are checked; nothing else.
 Cage cageFromArrays(const pybind11::handle& vertices, const pybind11::handle& faces);
 
-// Repairs, validates (throws InputError naming source when still invalid) and emits the repairs and warnings as
-// somicage.SomiCageWarning.
+// The engine's prepareCage (engine.h: repair, validate, notices, refusal naming source), with each notice emitted
+// as a somicage.SomiCageWarning in the command line's words.
 PythonCage makeUsableCage(Cage cage, std::string source);
 
 // validateCage on the cage as given, the repairs deform would apply, and whether it is usable then; the keys and

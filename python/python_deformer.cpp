@@ -1,10 +1,8 @@
 #include "python_deformer.h"
 
+#include "engine.h"
 #include "errors.h"
-#include "memory_estimate.h"
-#include "mesh_placement.h"
 #include "numpy_arrays.h"
-#include "obj_io.h"
 #include "python_errors.h"
 #include "python_progress.h"
 
@@ -43,17 +41,13 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
   options.threads = threads;
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
-  const MemoryEstimate estimate =
-      estimatePrecomputeMemory(chosen, dim, restCage_.numVertices(), restCage_.numFaces(),
-                               static_cast<std::size_t>(restPoints.rows()), floatStorage, threads);
-  requireMemory(estimate, availableMemoryBytes(), "points", memoryHint(!floatStorage));
-  if (const auto placement = describeMeshPlacement(measureMeshPlacement(restCage_, restPoints), "points", cage.source))
-    warn(*placement);
+  const Eigen::MatrixXd placed =
+      meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;
-    deformer_ = makeDeformer(chosen, restCage_, restPoints, options, bridge.callback());
+    deformer_ = precompute(chosen, restCage_, placed, options, "points", bridge.callback());
   } catch (const Cancelled&) {
     bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it
     throw;
@@ -66,12 +60,7 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
 }
 
 Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDeformOptions& options) const {
-  const int dim = restCage_.dim();
-  PolygonMesh pose;  // through posedVerticesFromMesh: the command line's check and message for the vertex count
-  const Eigen::MatrixXd given = inCageDimension(matrixFromArray(posed, "posed", 0), dim, "posed");
-  pose.vertices = Eigen::MatrixXd::Zero(given.rows(), 3);
-  pose.vertices.leftCols(dim) = given;
-  const Eigen::MatrixXd posedVertices = posedVerticesFromMesh(pose, restCage_, "posed");
+  const Eigen::MatrixXd posedVertices = inCageDimension(matrixFromArray(posed, "posed", 0), restCage_.dim(), "posed");
 
   DeformParams params;
   if (options.variant != "global" && options.variant != "local")
@@ -81,10 +70,9 @@ Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDefo
   params.gamma = options.gamma;
   params.tractionCorrection = options.tractionFix;
   params.corotational = options.corotational;
-  validateDeformParams(params);
 
-  py::gil_scoped_release release;
-  return deformer_->deform(posedVertices, params);
+  py::gil_scoped_release release;  // the checks of deformPoints throw InputError, which needs no GIL
+  return deformPoints(*deformer_, restCage_, posedVertices, params, "posed", "points");
 }
 
 }  // namespace somicage

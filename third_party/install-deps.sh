@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libeigen3-dev libtinyobjloader-dev libgtest-dev  # core and tests
+  libeigen3-dev libgtest-dev  # core and tests
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenvdb-dev libtbb-dev libimath-dev  # cage generation
   libassimp-dev libtinygltf-dev  # mesh formats (PLY, STL, OFF, glTF, FBX in; GLB out)
   libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor

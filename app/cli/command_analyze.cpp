@@ -112,11 +112,10 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   setThreadCount(threads);
   const std::string meshPath = args.text("--mesh");
 
-  const Cage cage = loadUsableCage(args.text("--cage"));
+  const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
   const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage);
   const PolygonMesh mesh = loadMesh(meshPath);
-  const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
-  warnAboutMeshPlacement(cage, points, meshPath, args.text("--cage"));
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
   noteIgnoredParameters(kCommand, args, method);
 
   PrecomputeOptions options;
@@ -136,7 +135,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const DeformationAnalysis a = analyzeDeformation(*gradients, points, mesh.faces, posed, params);
   std::vector<NuSweepEntry> sweep;
   if (!nus.empty()) {
-    if (method != Method::Somigliana)
+    if (!readsParameter(method, kParamNu))
       std::cerr << kCommand << ": note: " << methodName(method) << " does not depend on nu; the sweep is flat\n";
     ProgressReporter progress("sweeping nu");
     sweep = sweepNu(*gradients, points, mesh.faces, posed, params, nus, progress.callback());

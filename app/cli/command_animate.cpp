@@ -98,9 +98,9 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
 
   const std::string cagePath = resolveNextTo(sessionPath, session.cagePath);
   const std::string meshPath = resolveNextTo(sessionPath, session.meshPath);
-  const Cage cage = loadUsableCage(cagePath);
+  const Cage cage = loadUsableCage(cagePath, printNotice);
   const MeshDocument document = loadMeshDocument(meshPath);
-  const Eigen::MatrixXd points = meshPoints(document.geometry, cage.dim());
+  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, printNotice);
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;

@@ -10,7 +10,6 @@
 #include <numeric>
 #include <random>
 
-#include "bem_deformer.h"
 #include "bem_system.h"
 #include "cli/arg_parser.h"
 #include "cli/cli.h"
@@ -21,9 +20,9 @@
 #include "cuda/cuda_backend.h"
 #include "deformation_quantities.h"
 #include "jacobian.h"
+#include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
-#include "somigliana_deformer.h"
 
 namespace somicage {
 
@@ -138,9 +137,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
   const bool json = options.has("--json");
   setThreadCount(threads);
 
-  const Cage cage = loadUsableCage(options.text("--cage"));
-  const Eigen::MatrixXd points = meshPoints(loadMesh(options.text("--mesh")), cage.dim());
-  warnAboutMeshPlacement(cage, points, options.text("--mesh"), options.text("--cage"));
+  const Cage cage = loadUsableCage(options.text("--cage"), printNotice);
+  const Eigen::MatrixXd points = meshPointsFor(cage, loadMesh(options.text("--mesh")).vertices, options.text("--mesh"),
+                                               options.text("--cage"), printNotice);
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
   PrecomputeOptions precompute;
@@ -149,7 +148,8 @@ int runBenchCommand(const std::vector<std::string>& args) {
   precompute.integration.threads = threads;
 
   // Precompute as the editor does: exact integrals, stored in float.
-  requirePrecomputeMemory(kCommand, Method::Somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
+  const Method somigliana = methods::somigliana();
+  requirePrecomputeMemory(kCommand, somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
                           options.text("--mesh"));
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
@@ -157,7 +157,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
     deformer.reset();
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
-    deformer = makeSomiglianaDeformer(cage, points, precompute, progress.callback());
+    deformer = makeDeformer(somigliana, cage, points, precompute, progress.callback());
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;
@@ -266,16 +266,18 @@ int runBenchCommand(const std::vector<std::string>& args) {
     }
   }
   const double bemFactorMs = median(factorTimes);
-  {
-    deformer.reset();
-    requirePrecomputeMemory(kCommand, Method::Bem, cage, static_cast<std::size_t>(points.rows()), precompute,
+  // Every other registered method's frame (deform_ms.cpu_NAME), at the same nu where it reads one.
+  deformer.reset();
+  for (Method method : allMethods()) {
+    if (method == somigliana) continue;
+    requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), precompute,
                             options.text("--mesh"));
-    ProgressReporter progress("precompute bem");
-    const std::unique_ptr<CageDeformer> bem = makeBemDeformer(cage, points, precompute, progress.callback());
+    ProgressReporter progress("precompute " + methodName(method));
+    const std::unique_ptr<CageDeformer> other = makeDeformer(method, cage, points, precompute, progress.callback());
     progress.finish();
-    DeformParams bemParams;
-    bemParams.nu = 0.3;
-    deformMs.emplace_back("cpu_bem", timeFrames(*bem, posed, bemParams, frames, false));
+    DeformParams params;
+    params.nu = 0.3;
+    deformMs.emplace_back("cpu_" + methodName(method), timeFrames(*other, posed, params, frames, false));
   }
 
   if (json) {
@@ -312,7 +314,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
   std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",
               quadrature, 3 * quadrature * quadrature, K, speedup, baselineUnity);
   for (const auto& [name, ms] : deformMs) {
-    const bool cpu = name.rfind("cpu", 0) == 0 && name != "cpu_bem";  // the Somigliana coordinates' bandwidth
+    const bool cpu = name == "cpu_global" || name == "cpu_local";  // the Somigliana coordinates' bandwidth
     std::printf("deform %-10s %.2f ms", name.c_str(), ms);
     if (cpu)
       std::printf("  (%.1f GB/s reading the coordinates; copy bandwidth %.1f GB/s)", coordBytes / ms * 1e-6,

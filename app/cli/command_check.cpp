@@ -12,8 +12,8 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
-#include "obj_io.h"
 #include "deformer.h"
+#include "obj_io.h"
 #include "somigliana_coordinates.h"
 
 namespace somicage {
@@ -78,22 +78,22 @@ UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points
 }
 
 // Each method's identity reproduction at rest: max |x~ - x| / cage diameter over the inside points (all points for
-// mean value coordinates, which are defined everywhere). Somigliana and Green reproduce the identity up to their
-// integration error; mean value coordinates exactly.
+// a method that reproduces outside the cage too: mean value coordinates, which are defined everywhere). Somigliana and
+// Green reproduce the identity up to their integration error; mean value coordinates exactly.
 std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, const Eigen::MatrixXd& points,
                                                               const Eigen::VectorXd& winding, int threads) {
   std::vector<std::pair<std::string, double>> errors;
   const double diameter = cageDiameter(cage.vertices);
   PrecomputeOptions options;
   options.threads = threads;
-  for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue}) {
+  for (Method method : allMethods()) {
     ProgressReporter progress("reproduction with " + methodName(method));
     const auto deformer = makeDeformer(method, cage, points, options, progress.callback());
     progress.finish();
     const Eigen::VectorXd moved = (deformer->deform(cage.vertices, {}) - points).rowwise().norm();
     double worst = 0;
     for (Eigen::Index p = 0; p < points.rows(); ++p)
-      if (method == Method::MeanValue || winding(p) >= 0.5) worst = std::max(worst, moved(p) / diameter);
+      if (method->reproducesOutside || winding(p) >= 0.5) worst = std::max(worst, moved(p) / diameter);
     errors.emplace_back(methodName(method), worst);
   }
   return errors;
@@ -267,8 +267,7 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   std::vector<std::pair<std::string, double>> reproduction;
   // Integrating needs valid indices and faces with a normal; other defects still give numbers worth seeing.
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
-    const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
-    warnAboutMeshPlacement(cage, points, meshPath, cagePath);
+    const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
     Eigen::VectorXd winding;
     unity = checkPartitionOfUnity(repaired.cage, points, threads, winding);
     reproduction = checkReproduction(repaired.cage, points, winding, threads);

@@ -1,6 +1,6 @@
-// somicage deform: the batch form of what the editor does on every frame, through the same core calls
-// (loadUsableCage, makeDeformer, CageDeformer::deform, writeMeshDocument: everything of the mesh but its positions
-// is written back as it came, with normals carried by the gradient J or recomputed).
+// somicage deform: the batch form of what the editor does on every frame, through the same engine facade
+// (engine.h: loadUsableCage, meshPointsFor, precompute, deformPoints), then writeMeshDocument: everything of the
+// mesh but its positions is written back as it came, with normals carried by the gradient J or recomputed.
 #include <iostream>
 #include <sstream>
 
@@ -9,6 +9,7 @@
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
 #include "deformer.h"
+#include "engine.h"
 #include "errors.h"
 #include "mesh_formats.h"
 #include "normal_transform.h"
@@ -72,12 +73,11 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   // Inputs.
   ReadOptions read;
   read.weld = args.has("--weld");
-  const Cage cage = loadUsableCage(cagePath, read);
+  const Cage cage = loadUsableCage(cagePath, printNotice, read);
   const Eigen::MatrixXd posed = posedVerticesFromMesh(loadAnyMesh(posedPath, read), cage, posedPath);
   const MeshDocument document = loadMeshDocument(meshPath, read);
   const PolygonMesh& mesh = document.geometry;
-  const Eigen::MatrixXd points = meshPoints(mesh, cage.dim());
-  warnAboutMeshPlacement(cage, points, meshPath, cagePath);
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
   noteIgnoredParameters(kCommand, args, method);
 
   // Precompute once, deform once.
@@ -95,7 +95,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer = makeDeformer(method, cage, points, options, progress.callback());
+    deformer = precompute(method, cage, points, options, meshPath, progress.callback());
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
   const int exterior = deformer->diagnostics().exteriorCount();
@@ -105,23 +105,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
               << "into the deformation inside (docs/engine.md, \"Points outside the cage\")\n";
   }
   const CliClock::time_point deformStart = CliClock::now();
-  const Eigen::MatrixXd deformed = deformer->deform(posed, params);
+  const Eigen::MatrixXd deformed = deformPoints(*deformer, cage, posed, params, posedPath, meshPath);
   const double deformSeconds = secondsSince(deformStart);
-
-  Eigen::Index bad = 0, firstBad = -1;
-  for (Eigen::Index p = 0; p < deformed.rows(); ++p) {
-    if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;
-  }
-  if (bad > 0) {
-    std::ostringstream where;
-    where << points.row(firstBad);
-    throw InputError(meshPath, -1,
-                     std::to_string(bad) + " of " + std::to_string(deformed.rows()) +
-                         " points could not be deformed; the first is vertex " + std::to_string(firstBad) + " at (" +
-                         where.str() + ")",
-                     "nothing was written; this is a bug (every point gets a finite position, docs/engine.md): "
-                     "please report it with the input files");
-  }
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
   result.leftCols(cage.dim()) = deformed;
@@ -141,12 +126,16 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   std::ostringstream summary;
   summary << kCommand << ": " << cage.dim() << "D " << methodName(method);
-  if (method == Method::Somigliana) {
-    summary << " (blend " << formatNumber(params.blend) << ", nu " << formatNumber(params.nu) << ", gamma "
-            << formatNumber(params.gamma) << (params.tractionCorrection ? "" : ", no traction fix") << ")";
-  }
-  if (method == Method::Bem)
-    summary << " (nu " << formatNumber(params.nu) << (params.corotational ? ", corotational" : "") << ")";
+  std::string used;  // the parameters the method reads
+  const auto add = [&](DeformParameter p, const std::string& text) {
+    if (readsParameter(method, p) && !text.empty()) used += (used.empty() ? "" : ", ") + text;
+  };
+  add(kParamBlend, "blend " + formatNumber(params.blend));
+  add(kParamNu, "nu " + formatNumber(params.nu));
+  add(kParamGamma, "gamma " + formatNumber(params.gamma));
+  add(kParamTractionFix, params.tractionCorrection ? "" : "no traction fix");
+  add(kParamCorotational, params.corotational ? "corotational" : "");
+  if (!used.empty()) summary << " (" << used << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
           << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath

@@ -5,12 +5,8 @@
 #include <cstdio>
 #include <iostream>
 
-#include "bem_system.h"
-#include "cage_repair.h"
-#include "cage_validation.h"
 #include "errors.h"
 #include "memory_estimate.h"
-#include "mesh_placement.h"
 
 namespace somicage {
 
@@ -36,34 +32,46 @@ void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
-Cage loadUsableCage(const std::string& path, const ReadOptions& read) {
-  CageRepair repair = repairCage(cageFromMesh(loadAnyMesh(path, read), path));
-  for (const std::string& fix : repair.fixes) std::cerr << "somicage: note: " << path << ": " << fix << "\n";
-  const CageReport report = validateCage(repair.cage);
-  for (const std::string& warning : describeCageWarnings(report))
-    std::cerr << "somicage: warning: " << path << ": " << warning << "\n";
-  requireValidCage(report, path);
-  return std::move(repair.cage);
-}
+void printNotice(const Notice& notice) { std::cerr << "somicage: " << describeNotice(notice) << "\n"; }
 
 Method methodOption(const ArgParser& args) {
   try {
-    return parseMethod(args.text("--method", "somigliana"));
+    return parseMethod(args.text("--method", methodName(Method())));
   } catch (const InputError& e) {
     throw InputError("--method", -1, e.problem(), e.hint());
   }
 }
 
+namespace {
+
+// The options that set a DeformParameter (method.h), for the notes on ignored options.
+struct ParameterOption {
+  const char* option;
+  DeformParameter parameter;
+};
+constexpr ParameterOption kParameterOptions[] = {
+    {"--variant", kParamBlend},
+    {"--blend", kParamBlend},
+    {"--nu", kParamNu},
+    {"--gamma", kParamGamma},
+    {"--no-traction-fix", kParamTractionFix},
+    {"--corotational", kParamCorotational},
+};
+
+}  // namespace
+
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
+  const auto forMethods = [](DeformParameter p) { return "; " + methodsReading(p); };
   before.insert(before.end(),
                 {
-                    {"--method", "NAME", "somigliana (default), green, mvc or bem (the linear-elastic reference)"},
-                    {"--variant", "NAME", "global (default, blend 0) or local (blend 1); somigliana only"},
+                    {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
+                    {"--variant", "NAME", "global (default, blend 0) or local (blend 1)" + forMethods(kParamBlend)},
                     {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0); somigliana and bem"},
-                    {"--gamma", "G", "bulging scale >= 0 (default 0); somigliana only"},
-                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15; somigliana only"},
-                    {"--corotational", "", "remove the cage's best-fit rotation before the linear solve; bem only"},
+                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0)" + forMethods(kParamNu)},
+                    {"--gamma", "G", "bulging scale >= 0 (default 0)" + forMethods(kParamGamma)},
+                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
+                    {"--corotational", "",
+                     "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
                 });
   before.insert(before.end(), after.begin(), after.end());
   return before;
@@ -78,9 +86,8 @@ DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   params.tractionCorrection = !args.has("--no-traction-fix");
   params.corotational = args.has("--corotational");
   try {
-    if (method == Method::Bem) validateBemPoissonRatio(params.nu);  // says why nu = 0.5 is refused
-    validateDeformParams(params);
-  } catch (const InputError& e) {  // validateDeformParams names the parameter ("nu"); here it is the option
+    method->validateParams(params);
+  } catch (const InputError& e) {  // the method names the parameter ("nu"); here it is the option
     const std::string source = e.source().rfind("--", 0) == 0 ? e.source() : "--" + e.source();
     throw InputError(source, -1, e.problem(), e.hint());
   }
@@ -88,24 +95,19 @@ DeformParams deformParamsOptions(const ArgParser& args, Method method) {
 }
 
 void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method) {
-  if (method != Method::Somigliana && (args.has("--variant") || args.has("--blend") || args.has("--gamma") ||
-                                       args.has("--no-traction-fix") || (method != Method::Bem && args.has("--nu")))) {
-    std::cerr << command << ": note: --variant, --blend, --nu, --gamma and --no-traction-fix apply to somigliana "
-              << "only (--nu also to bem); " << methodName(method) << " ignores them\n";
-  }
-  if (method != Method::Bem && args.has("--corotational"))
-    std::cerr << command << ": note: --corotational applies to bem only; " << methodName(method) << " ignores it\n";
+  std::string ignored;
+  for (const ParameterOption& o : kParameterOptions)
+    if (args.has(o.option) && !readsParameter(method, o.parameter))
+      ignored += (ignored.empty() ? "" : ", ") + std::string(o.option) + " (" + methodsReading(o.parameter) + ")";
+  if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
 }
 
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath, bool withGradients) {
-  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(), points,
-                                                     options.floatStorage, options.threads);
-  if (withGradients)
-    estimate.gradients =
-        estimateGradientBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(), points, options.floatStorage);
+  // No command offers another storage.
+  const MemoryEstimate estimate =
+      requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), withGradients);
   const std::optional<std::size_t> available = availableMemoryBytes();
-  requireMemory(estimate, available, meshPath, memoryHint(false));  // neither command offers another storage
   // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
   const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
   if (big)
@@ -126,13 +128,5 @@ bool requirePrecomputeMemoryForNormals(const std::string& command, Method method
     return false;
   }
 }
-
-void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
-                            const std::string& cagePath) {
-  if (const auto warning = describeMeshPlacement(measureMeshPlacement(cage, points), meshPath, cagePath))
-    std::cerr << "somicage: warning: " << *warning << "\n";
-}
-
-Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim) { return mesh.vertices.leftCols(dim); }
 
 }  // namespace somicage

@@ -7,6 +7,7 @@
 
 #include "cli/arg_parser.h"
 #include "deformer.h"
+#include "engine.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
 
@@ -30,20 +31,18 @@ Method methodOption(const ArgParser& args);
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
 
 // --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
-// (InputError names the option; bem also refuses nu = 0.5 with its reason).
+// (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
 
-// Prints a note on stderr when options are given to a method that ignores them (Somigliana-only ones; --nu is
-// bem's as well; --corotational is bem's only).
+// Prints a note on stderr when options are given to a method that ignores them (MethodDescriptor::parameters).
 void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
 
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
-// The cage the commands deform: read in any format of mesh_formats.h, then repairCage (cage_repair.h), then
-// validateCage. Each repair is printed on stderr as "somicage: note: PATH: ...", each warning (3D self-intersections)
-// as "somicage: warning: PATH: ...". Throws InputError naming the file when the repaired cage is still not valid.
-Cage loadUsableCage(const std::string& path, const ReadOptions& read = {});
+// Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
+// PATH: ..." for a warning. The commands load through the engine facade with it.
+void printNotice(const Notice& notice);
 
 // Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
 // (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
@@ -57,13 +56,5 @@ void requirePrecomputeMemory(const std::string& command, Method method, const Ca
 // recomputed and returns false. Throws as requirePrecomputeMemory when not even the coordinates fit.
 bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& meshPath);
-
-// Prints "somicage: warning: ..." on stderr when the mesh is far larger or smaller than the cage, or beside it
-// (core/mesh_placement.h): different units, usually.
-void warnAboutMeshPlacement(const Cage& cage, const Eigen::MatrixXd& points, const std::string& meshPath,
-                            const std::string& cagePath);
-
-// The points a cage of dimension dim deforms: the mesh's x, y, z (3D) or x, y (2D), #V by dim.
-Eigen::MatrixXd meshPoints(const PolygonMesh& mesh, int dim);
 
 }  // namespace somicage

@@ -21,44 +21,33 @@ std::vector<Method> AppState::viewMethods() const {
   return {method};
 }
 
-const char* methodDisplayName(Method method) {
-  switch (method) {
-    case Method::Somigliana:
-      return "Somigliana";
-    case Method::Green:
-      return "Green";
-    case Method::MeanValue:
-      return "Mean value";
-    case Method::Bem:
-      return "BEM";
-  }
-  return "?";
-}
-
 std::string viewLabel(const AppState& state, Method method) {
-  std::string label = methodDisplayName(method);
+  std::string label = method->displayName;
   char buf[160];
-  if (method == Method::Somigliana) {
+  if (readsParameter(method, kParamNu)) {
     const double nu = state.params.nu;
-    char nuText[32];
     if (std::isinf(nu)) {
-      std::snprintf(nuText, sizeof nuText, "%sinf", nu < 0 ? "-" : "");
+      std::snprintf(buf, sizeof buf, "  nu=%sinf", nu < 0 ? "-" : "");
     } else {
-      std::snprintf(nuText, sizeof nuText, "%.2f", nu);
+      std::snprintf(buf, sizeof buf, "  nu=%.2f", nu);
     }
-    const char* variant = state.params.blend <= 0.0 ? "global" : state.params.blend >= 1.0 ? "local" : "blend";
-    std::snprintf(buf, sizeof buf, "  nu=%s  gamma=%.2f  %s", nuText, state.params.gamma, variant);
     label += buf;
-    if (variant[0] == 'b') {
-      std::snprintf(buf, sizeof buf, " %.2f", state.params.blend);
+  }
+  if (readsParameter(method, kParamGamma)) {
+    std::snprintf(buf, sizeof buf, "  gamma=%.2f", state.params.gamma);
+    label += buf;
+  }
+  if (readsParameter(method, kParamBlend)) {
+    const double blend = state.params.blend;
+    if (blend <= 0.0 || blend >= 1.0) {
+      label += blend <= 0.0 ? "  global" : "  local";
+    } else {
+      std::snprintf(buf, sizeof buf, "  blend %.2f", blend);
       label += buf;
     }
-    if (!state.params.tractionCorrection) label += "  no traction fix";
   }
-  if (method == Method::Bem) {
-    std::snprintf(buf, sizeof buf, "  nu=%.2f%s", state.params.nu, state.params.corotational ? "  corotational" : "");
-    label += std::isinf(state.params.nu) ? std::string("  nu=inf") : std::string(buf);
-  }
+  if (readsParameter(method, kParamTractionFix) && !state.params.tractionCorrection) label += "  no traction fix";
+  if (readsParameter(method, kParamCorotational) && state.params.corotational) label += "  corotational";
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;
 }
@@ -146,7 +135,8 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
-        state.pose = posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
+        state.pose =
+            posedVerticesFromMesh(loadAnyMesh(state.pendingPosedPath), state.scene->restCage, state.pendingPosedPath);
         posedLoaded = true;
       } catch (const std::exception& e) {
         state.errors.push_back(e.what());

@@ -71,10 +71,10 @@ struct AppState {
   ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
 
   // ---- method and parameters ----
-  Method method = Method::Somigliana;
+  Method method;  // the registry's first (method.h)
   DeformParams params;
   bool compare = false;
-  std::vector<Method> compareMethods{Method::Somigliana, Method::Green, Method::MeanValue};
+  std::vector<Method> compareMethods = defaultCompareMethods();
 
   // ---- deformation ----
   DeformerSet deformers;                       // for `scene`
@@ -232,6 +232,5 @@ void openRecent(AppState& state, const RecentEntry& entry);
 
 // "Somigliana  nu=0.30 gamma=1.00 global" etc.
 std::string viewLabel(const AppState& state, Method method);
-const char* methodDisplayName(Method method);
 
 }  // namespace somicage::editor

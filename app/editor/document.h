@@ -16,7 +16,7 @@ namespace somicage::editor {
 
 struct Document {
   Eigen::MatrixXd pose;  // #V by d posed cage vertices
-  Method method = Method::Somigliana;
+  Method method;  // the registry's first (method.h)
   DeformParams params;
   PoseLibrary poses;  // the pose library and the timeline (pose_keys.h)
   Timeline timeline;

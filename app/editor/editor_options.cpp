@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "errors.h"
+#include "session.h"  // kMaxCompareViews
 #include "view_quantity.h"
 
 namespace somicage::editor {
@@ -59,12 +60,12 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
         try {
           o.compare.push_back(parseMethod(name));
         } catch (const InputError&) {
-          throw InputError(a, -1, "unknown method '" + name + "'", "use a comma list of somigliana, green, mvc");
+          throw InputError(a, -1, "unknown method '" + name + "'", "use a comma list of " + methodNameList());
         }
         if (comma == std::string::npos) break;
         start = comma + 1;
       }
-      if (o.compare.size() < 2 || o.compare.size() > 3)
+      if (o.compare.size() < 2 || o.compare.size() > kMaxCompareViews)
         throw InputError(a, -1, "compare needs 2 or 3 methods", "e.g. --compare somigliana,green,mvc");
     } else if (a == "--screenshot") {
       o.screenshotPath = value();
@@ -148,7 +149,9 @@ std::string editorUsage() {
          "With no files the built-in demo opens.\n"
          "  --demo 2d|3d              which demo (default 3d)\n"
          "  --session FILE.json       open a saved session\n"
-         "  --method NAME             somigliana (default), green, mvc or bem\n"
+         "  --method NAME             " +
+         methodNameList() + " (default " + methodName(Method()) +
+         ")\n"
          "  --nu X                    Poisson ratio in (-1, 0.5), or inf / -inf\n"
          "  --gamma X                 bulging scale >= 0\n"
          "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"

@@ -35,7 +35,7 @@ class Renderer {
   struct MeshSlot {
     std::unique_ptr<render::MeshRenderer> mesh;
     std::uint64_t sceneGeneration = ~0ull, deformGeneration = ~0ull;
-    Method method = Method::Somigliana;
+    Method method;
     bool showedDeformed = false;
     // GPU backend: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
     std::unique_ptr<render::GpuDeformer> gpu;

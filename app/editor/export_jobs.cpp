@@ -83,7 +83,7 @@ bool exportDeformedMesh(AppState& state, const std::string& path) {
     return false;
   }
   state.exporter.start(path,
-                       "exported the deformed mesh (" + std::string(methodDisplayName(state.method)) + ") to " + path,
+                       "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path,
                        makeMeshExportJob(state, path));
   state.statusMessage = "exporting the deformed mesh to " + path;
   return true;

@@ -131,11 +131,15 @@ void drawControlPanel(AppState& state) {
   tooltip("Open a mesh and its cage (.obj), with an optional posed cage (Ctrl+O)");
 
   sectionHeader("Method");
-  int method = static_cast<int>(state.method);
-  const char* methods[] = {"Somigliana", "Green", "Mean value (MVC)", "BEM (linear elasticity)"};
-  if (ImGui::Combo("method", &method, methods, 4)) {
-    setMethod(state, static_cast<Method>(method));
-    commitEdit(state, "Method");
+  const std::vector<Method>& all = allMethods();
+  if (ImGui::BeginCombo("method", state.method->displayName)) {
+    for (Method m : all) {
+      if (ImGui::Selectable(m->displayName, m == state.method)) {
+        setMethod(state, m);
+        commitEdit(state, "Method");
+      }
+    }
+    ImGui::EndCombo();
   }
   tooltip(
       "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
@@ -147,21 +151,18 @@ void drawControlPanel(AppState& state) {
       "Show two or three methods side by side with the same pose (View > Compare methods). A view setting:\n"
       "not an edit, not undone.");
   if (state.compare) {
-    bool use[4] = {false, false, false, false};
-    for (Method m : state.compareMethods) use[static_cast<int>(m)] = true;
     bool changed = false;
-    for (int i = 0; i < 4; ++i) {
+    std::vector<Method> list;
+    for (std::size_t i = 0; i < all.size(); ++i) {
       if (i > 0) ImGui::SameLine();
-      const char* shortNames[] = {"Somigliana##c", "Green##c", "MVC##c", "BEM##c"};
-      changed |= ImGui::Checkbox(shortNames[i], &use[i]);
+      bool use =
+          std::find(state.compareMethods.begin(), state.compareMethods.end(), all[i]) != state.compareMethods.end();
+      changed |= ImGui::Checkbox((std::string(all[i]->displayName) + "##c").c_str(), &use);
       tooltip("Show this method in the comparison (two at least)");
+      if (use) list.push_back(all[i]);
     }
     if (changed) {
-      std::vector<Method> list;
-      for (int i = 0; i < 4; ++i) {
-        if (use[i]) list.push_back(static_cast<Method>(i));
-      }
-      if (list.size() >= 2 && list.size() <= 3) {  // the compare view has up to three panes
+      if (list.size() >= 2 && list.size() <= kMaxCompareViews) {
         state.compareMethods = list;
         setCompare(state, true);
       }
@@ -171,7 +172,7 @@ void drawControlPanel(AppState& state) {
   sectionHeader("Somigliana parameters");
   // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
   bool parametersUsed = false;
-  for (Method m : state.viewMethods()) parametersUsed |= m == Method::Somigliana || m == Method::Bem;  // BEM uses nu
+  for (Method m : state.viewMethods()) parametersUsed |= m->parameters != 0;
   if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once
@@ -237,7 +238,7 @@ void drawControlPanel(AppState& state) {
   if (blendDone) commitEdit(state, "blend");
   if (nuDone) commitEdit(state, "nu");
   if (gammaDone) commitEdit(state, "gamma");
-  if (!parametersUsed) ImGui::TextDisabled("(Green and MVC ignore these; BEM uses nu and corotational)");
+  if (!parametersUsed) ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
   drawNuPlot(state);
 
   sectionHeader("Pose");

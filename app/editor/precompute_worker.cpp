@@ -10,20 +10,6 @@
 namespace somicage::editor {
 
 namespace {
-const char* displayName(Method m) {
-  switch (m) {
-    case Method::Somigliana:
-      return "Somigliana";
-    case Method::Green:
-      return "Green";
-    case Method::MeanValue:
-      return "MVC";
-    case Method::Bem:
-      return "BEM";
-  }
-  return "?";
-}
-
 // Refuses a request whose deformers would not fit in the free memory, before any of them is built.
 void requireMemoryFor(const PrecomputeRequest& request) {
   const Scene& scene = *request.scene;
@@ -97,7 +83,7 @@ void PrecomputeWorker::run(PrecomputeRequest request, std::uint64_t id) {
     for (std::size_t k = 0; k < n; ++k) {
       if (cancel_) throw Cancelled();
       const Method m = request.methods[k];
-      setStage(std::string(displayName(m)) + " " + std::to_string(k + 1) + "/" + std::to_string(n));
+      setStage(std::string(m->displayName) + " " + std::to_string(k + 1) + "/" + std::to_string(n));
       auto progress = [this, k, n](double f) {
         progress_ = (static_cast<double>(k) + f) / static_cast<double>(n);
         return !cancel_.load();

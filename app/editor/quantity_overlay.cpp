@@ -96,11 +96,22 @@ void drawShowChoice(AppState& state) {
   }
 }
 
+namespace {
+
+// The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
+const std::shared_ptr<const CageDeformer>* nuSweepDeformer(const AppState& state) {
+  if (!state.scene || !readsParameter(state.method, kParamNu)) return nullptr;
+  const auto d = state.deformers.find(state.method);
+  return d == state.deformers.end() ? nullptr : &d->second;
+}
+
+}  // namespace
+
 void sweepNuNow(AppState& state) {
-  auto d = state.deformers.find(Method::Somigliana);
-  if (!state.scene || d == state.deformers.end()) return;
+  const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
+  if (!deformer) return;
   try {
-    state.quantities.sweepNu(d->second, state.scene->meshVertices, state.scene->meshTriangles, state.pose, state.params,
+    state.quantities.sweepNu(*deformer, state.scene->meshVertices, state.scene->meshTriangles, state.pose, state.params,
                              nuSweepValues(-0.95, 0.49, 25), state.deformGeneration);
   } catch (const std::exception& e) {
     state.errors.push_back(std::string("nu sweep failed: ") + e.what());
@@ -108,7 +119,7 @@ void sweepNuNow(AppState& state) {
 }
 
 void drawNuPlot(AppState& state) {
-  if (!state.scene || state.deformers.count(Method::Somigliana) == 0) return;
+  if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
   const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep();
   const bool stale = state.quantities.nuSweepGeneration() != state.deformGeneration;

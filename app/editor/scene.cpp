@@ -5,10 +5,8 @@
 #include <vector>
 
 #include "cage_generation.h"
-#include "cage_repair.h"
-#include "cage_validation.h"
+#include "engine.h"
 #include "mesh_formats.h"
-#include "mesh_placement.h"
 
 namespace somicage::editor {
 
@@ -51,7 +49,6 @@ Scene demo3D() {
   s.meshVertices = v;
   s.meshTriangles.resize(static_cast<Eigen::Index>(tris.size()), 3);
   for (std::size_t f = 0; f < tris.size(); ++f) s.meshTriangles.row(static_cast<Eigen::Index>(f)) = tris[f].transpose();
-  orientOutward(s.meshVertices, s.meshTriangles);
 
   // Cage: square rings of 4 corners at 5 stations along x.
   const int stations = 5;
@@ -78,7 +75,6 @@ Scene demo3D() {
   s.restCage.vertices = cv;
   s.restCage.faces.resize(static_cast<Eigen::Index>(cf.size()), 3);
   for (std::size_t f = 0; f < cf.size(); ++f) s.restCage.faces.row(static_cast<Eigen::Index>(f)) = cf[f].transpose();
-  orientOutward(s.restCage.vertices, s.restCage.faces);
   return s;
 }
 
@@ -117,22 +113,6 @@ Scene demo2D() {
 
 }  // namespace
 
-double signedVolume(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles) {
-  double volume = 0.0;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    const Eigen::Vector3d a = vertices.row(triangles(f, 0)).transpose();
-    const Eigen::Vector3d b = vertices.row(triangles(f, 1)).transpose();
-    const Eigen::Vector3d c = vertices.row(triangles(f, 2)).transpose();
-    volume += a.dot(b.cross(c)) / 6.0;
-  }
-  return volume;
-}
-
-void orientOutward(const Eigen::MatrixXd& vertices, Eigen::MatrixXi& triangles) {
-  if (vertices.cols() != 3 || triangles.cols() != 3) return;
-  if (signedVolume(vertices, triangles) < 0) triangles.col(1).swap(triangles.col(2));
-}
-
 Scene makeDemoScene(int dim) { return dim == 2 ? demo2D() : demo3D(); }
 
 // A mesh opened without a cage gets a generated one (core/cage_generation.h, the defaults of 'somicage cage').
@@ -148,17 +128,16 @@ Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
   Scene s;
   auto document = std::make_shared<const MeshDocument>(loadMeshDocument(meshPath));
   const PolygonMesh& mesh = document->geometry;
-  CageRepair repair = cagePath.empty() ? CageRepair{generatedCage(mesh, meshPath, s.notices), {}}
-                                       : repairCage(cageFromMesh(loadAnyMesh(cagePath), cagePath));
-  const CageReport report = validateCage(repair.cage);
-  requireValidCage(report, cagePath);
-  s.restCage = std::move(repair.cage);
-  for (const std::string& fix : repair.fixes) s.notices.push_back("cage repaired: " + fix);
-  for (const std::string& warning : describeCageWarnings(report)) s.notices.push_back("cage warning: " + warning);
+  // The engine's one order (engine.h), for a generated cage too; its notices go to the status bar. The placement
+  // warning names both files itself (no source); every other notice is about the cage.
+  auto notice = [&](const Notice& n) {
+    s.notices.push_back(std::string(n.source.empty() ? "mesh " : "cage ") +
+                        (n.kind == Notice::Kind::Repair ? "repaired: " : "warning: ") + n.text);
+  };
+  s.restCage = cagePath.empty() ? prepareCage(generatedCage(mesh, meshPath, s.notices), meshPath, notice)
+                                : loadUsableCage(cagePath, notice);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
-  s.meshVertices = mesh.vertices.leftCols(s.restCage.dim());
-  if (const auto warning = describeMeshPlacement(measureMeshPlacement(s.restCage, s.meshVertices), meshPath, cagePath))
-    s.notices.push_back("mesh warning: " + *warning);
+  s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cagePath, notice);
   s.document = std::move(document);
   s.meshPath = meshPath;
   s.cagePath = cagePath;

@@ -29,15 +29,12 @@ struct Scene {
 // polygon cage.
 Scene makeDemoScene(int dim);
 
-// Loads MESH and CAGE in any format of core/mesh_formats.h. A 2D cage makes a 2D scene (the mesh keeps x, y). The
-// cage's orientation is repaired as in the command line (core/cage_repair.h), which the notices say. An empty cagePath
-// makes a cage for the mesh (core/cage_generation.h, 200 faces), which the notices say too. Throws InputError on any
-// problem with the files, and when the repaired cage is still not valid.
+// Loads MESH and CAGE in any format of core/mesh_formats.h through the engine facade (core/engine.h), as the command
+// line does: the cage is repaired, validated and warned about in the engine's one order, which the notices say. A 2D
+// cage makes a 2D scene (the mesh keeps x, y). An empty cagePath makes a cage for the mesh (core/cage_generation.h,
+// 200 faces), which the notices say too. Throws InputError on any problem with the files, and when the repaired cage
+// is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
-
-// Flips every triangle when the closed mesh (#V by 3, #F by 3) has a negative signed volume.
-void orientOutward(const Eigen::MatrixXd& vertices, Eigen::MatrixXi& triangles);
-double signedVolume(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles);
 
 // Axis-aligned bounds of #V by 2 or 3 points as 3D corners (z = 0 for 2D).
 void bounds3(const Eigen::MatrixXd& points, Eigen::Vector3d& lo, Eigen::Vector3d& hi);

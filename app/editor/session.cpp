@@ -1,5 +1,6 @@
 #include "session.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -9,6 +10,11 @@
 #include "pose_timeline_json.h"
 
 namespace somicage::editor {
+
+std::vector<Method> defaultCompareMethods() {
+  const std::vector<Method>& all = allMethods();
+  return std::vector<Method>(all.begin(), all.begin() + std::min(all.size(), kMaxCompareViews));
+}
 
 namespace {
 
@@ -58,7 +64,7 @@ struct Reader {
     try {
       return parseMethod(name);
     } catch (const InputError&) {
-      fail("unknown method \"" + name + "\" (expected somigliana, green or mvc)");
+      fail("unknown method \"" + name + "\" (expected " + methodNameList() + ")");
     }
   }
   Eigen::Vector3d vec3(const JsonValue& obj, const std::string& key) const {

@@ -12,14 +12,18 @@
 
 namespace somicage::editor {
 
+// Side-by-side views the layout offers, and the ones a new session compares: the registry's first few methods.
+constexpr std::size_t kMaxCompareViews = 3;
+std::vector<Method> defaultCompareMethods();
+
 struct Session {
   std::string meshPath, cagePath;  // both empty: the built-in demo of dimension demoDim
   int demoDim = 3;
   Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
-  Method method = Method::Somigliana;
+  Method method;         // the registry's first (method.h)
   DeformParams params;
   bool compare = false;
-  std::vector<Method> compareMethods{Method::Somigliana, Method::Green, Method::MeanValue};
+  std::vector<Method> compareMethods = defaultCompareMethods();
   CameraState camera;
   PoseLibrary poses;  // named poses and the keyframes that use them (core/pose_timeline.h)
   Timeline timeline;

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "triangle_integrals.h"
 #include "errors.h"
+#include "triangle_integrals.h"
 
 namespace somicage {
 
@@ -79,8 +79,8 @@ void CudaFrameEvaluator::evaluate(const FrameWeights& W, Eigen::MatrixXd& out) {
   // The kernel reads the weights of one column of C contiguously.
   const RowMatrixXd mainWeights = W.main, tailWeights = W.tail;
   RowMatrixXd result(rows_, dim_);
-  cuda_device::FrameLaunch launch{mainWeights.data(), tailWeights.data(), mainColumns_, W.mainOffset,
-                                  W.outputs, dim_, {0, 0, 0}};
+  cuda_device::FrameLaunch launch{mainWeights.data(), tailWeights.data(), mainColumns_, W.mainOffset, W.outputs, dim_,
+                                  {0, 0, 0}};
   for (int a = 0; a < dim_ && a < W.origin.size(); ++a) launch.origin[a] = W.origin(a);
   cuda_device::evaluateFrame(frame_, launch, result.data());
   out = result;
@@ -98,14 +98,13 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
   requireDevice();
   std::vector<PortableFace> faces(cage.numFaces());
   for (int j = 0; j < cage.numFaces(); ++j) {
-    const TriangleFrame frame = makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)),
-                                                  cage.vertices.row(cage.faces(j, 1)),
-                                                  cage.vertices.row(cage.faces(j, 2)));
+    const TriangleFrame frame = makeTriangleFrame(
+        cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)), cage.vertices.row(cage.faces(j, 2)));
     faces[j].frame = frame.kernel;
     for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
   }
   const int numPoints = static_cast<int>(points.rows());
-  const int columns = cage.numVertices() * vertexTermCount(3) + cage.numFaces() * faceTermCount(3);
+  const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).mainColumns();
   const int chunk = static_cast<int>(
       std::clamp<long>((256L << 20) / (static_cast<long>(columns) * sizeof(double)), 1, std::max(1, numPoints)));
   const RowMatrixXd rowPoints = points;
@@ -113,8 +112,8 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
   for (int start = 0; start < numPoints; start += chunk) {
     if (!progress(static_cast<double>(start) / numPoints)) throw Cancelled();
     const int count = std::min(chunk, numPoints - start);
-    cuda_device::integrateSomiglianaRows(faces.data(), cage.numFaces(), cage.numVertices(),
-                                         rowPoints.row(start).data(), count, rows.data(), winding.data());
+    cuda_device::integrateSomiglianaRows(faces.data(), cage.numFaces(), cage.numVertices(), rowPoints.row(start).data(),
+                                         count, rows.data(), winding.data());
     // The device wrote the rows column-major (coalesced); hand each one to the sink contiguous.
 #pragma omp parallel
     {
@@ -127,6 +126,16 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
     }
   }
   progress(1.0);
+}
+
+RowIntegrator cudaRowIntegrator() {
+  return [](const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
+            const ProgressCallback& progress, const CoordinateRowSink& sink) {
+    if (cage.dim() == 3 && options.rule == IntegrationOptions::Rule::ClosedForm)
+      integrateSomiglianaCoordinatesCuda(cage, points, progress, sink);
+    else
+      integrateSomiglianaCoordinates(cage, points, options, progress, sink);
+  };
 }
 
 }  // namespace somicage

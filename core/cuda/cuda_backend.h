@@ -54,12 +54,16 @@ class CudaFrameEvaluator {
   std::vector<ExteriorBlend> blends_;
 };
 
-// integrateSomiglianaCoordinates with the closed-form rule on the device, for 3D cages: the same rows (layout of
-// SomiglianaCoordinates::values, double precision, one thread per point summing the faces in the CPU's order) and
+// integrateSomiglianaCoordinates with the closed-form rule on the device, for 3D cages: the same rows (the layout of
+// C, coordinate_layout.h; double precision, one thread per point summing the faces in the CPU's order) and
 // winding numbers, handed to the same kind of sink (called on the host from OpenMP threads, once per point).
 // Points go to the device in chunks of at most ~256 MB of rows; progress is reported between chunks and may
 // cancel (throws Cancelled).
 void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd& points,
                                         const ProgressCallback& progress, const CoordinateRowSink& sink);
+
+// The row integrator to inject into PrecomputeOptions::rowIntegrator: the device's for 3D closed-form rows, the
+// CPU's for 2D cages and the Gauss rule. Needs a usable device (cudaStatus()) for 3D cages.
+RowIntegrator cudaRowIntegrator();
 
 }  // namespace somicage

@@ -1,6 +1,6 @@
-// One point's row of nu-independent 3D Somigliana terms (the layout of SomiglianaCoordinates::values:
-// 10 terms per cage vertex, then 4 per face; core/somigliana_coordinates.h), summed face by face in the same order
-// and with the same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
+// One point's row of nu-independent 3D Somigliana terms in the layout of C (core/coordinate_layout.h: 10 terms per
+// cage vertex, term-major, then 4 per face; somiglianaLayout), summed face by face in the same order and with the
+// same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
 #pragma once
 
 #include "triangle_integrals_kernel.h"
@@ -31,16 +31,18 @@ SOMICAGE_HD inline double integrateSomiglianaRowPortable(const PortableFace* fac
     integrateTrianglePortable(face.frame, x, I);
     const double* n = face.frame.n;
     for (int k = 0; k < 3; ++k) {
-      double* t = row + static_cast<long>(face.corners[k]) * kPortableVertexTerms * stride;
+      // Term m of the corner at column m * numVertices + corner (term-major).
+      double* t = row + static_cast<long>(face.corners[k]) * stride;
+      const long termStride = static_cast<long>(numVertices) * stride;
       const double* V = I.V[k];
       const double(*B)[3] = I.B[k];
       t[0] += I.D[k];
       // omega = V x n: (n V^T - V n^T) w = (V x n) x w
-      t[1 * stride] += V[1] * n[2] - V[2] * n[1];
-      t[2 * stride] += V[2] * n[0] - V[0] * n[2];
-      t[3 * stride] += V[0] * n[1] - V[1] * n[0];
-      t[4 * stride] += B[0][0], t[5 * stride] += B[1][1], t[6 * stride] += B[2][2];
-      t[7 * stride] += B[0][1], t[8 * stride] += B[0][2], t[9 * stride] += B[1][2];
+      t[1 * termStride] += V[1] * n[2] - V[2] * n[1];
+      t[2 * termStride] += V[2] * n[0] - V[0] * n[2];
+      t[3 * termStride] += V[0] * n[1] - V[1] * n[0];
+      t[4 * termStride] += B[0][0], t[5 * termStride] += B[1][1], t[6 * termStride] += B[2][2];
+      t[7 * termStride] += B[0][1], t[8 * termStride] += B[0][2], t[9 * termStride] += B[1][2];
     }
     double* f = row + (vertexColumns + static_cast<long>(j) * kPortableFaceTerms) * stride;
     f[0] += I.S;

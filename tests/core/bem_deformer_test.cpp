@@ -1,7 +1,6 @@
 // The boundary element deformer against exact elastic solutions: affine cage motions (exact for every nu), a Kelvin
 // point force from outside the cage (convergence under refinement), corotation (rigid motions exact), and the
 // Somigliana global variant approaching it as the deformation vanishes (paper Fig. 9); 2D and 3D.
-#include "bem_deformer.h"
 
 #include <gtest/gtest.h>
 
@@ -10,8 +9,10 @@
 #include <limits>
 #include <random>
 
+#include "deformer.h"
 #include "errors.h"
 #include "kelvin_kernels.h"
+#include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"
 
@@ -44,7 +45,7 @@ TEST_P(BemDeformerTest, AffineCageMotionsGiveTheAffineMap) {
   // diameters at interior points, for every nu, with and without corotation, and for float-free double storage.
   const int d = GetParam();
   const Scene s = sceneOf(d);
-  const auto deformer = makeBemDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::bem(), s.cage, s.points, {}, noProgress);
   const double diameter = cageDiameter(s.cage.vertices);
   Eigen::MatrixXd A = Eigen::MatrixXd::Identity(d, d);
   A(0, 1) = 0.4, A(1, 0) = -0.2, A(d - 1, d - 1) = 1.3;
@@ -76,7 +77,7 @@ TEST_P(BemDeformerTest, CorotationMakesBemRotationInvariant) {
   // it reproduces exactly either way). That difference is what the option is for.
   const int d = GetParam();
   const Scene s = sceneOf(d);
-  const auto deformer = makeBemDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::bem(), s.cage, s.points, {}, noProgress);
   const Eigen::MatrixXd R = rotation(d, M_PI / 2);
   const Eigen::RowVectorXd t = Eigen::RowVectorXd::Constant(d, 0.25);
   const Eigen::MatrixXd pose = bumpyPose(s.cage, 0.1, 3);
@@ -132,7 +133,7 @@ TEST_P(BemDeformerTest, KelvinSolutionErrorFallsUnderRefinement) {
   for (int level = 0; level < refinements; ++level) {
     const Cage cage = d == 3 ? test::makeIcosphere(level) : circlePolygon(16 << level);
     const Eigen::MatrixXd posed = cage.vertices + kelvinField(cage.vertices, source, force, nu);
-    const auto deformer = makeBemDeformer(cage, points, {}, noProgress);
+    const auto deformer = makeDeformer(methods::bem(), cage, points, {}, noProgress);
     DeformParams params;
     params.nu = nu;
     const double error = maxDistance(deformer->deform(posed, params) - points, exact) / scale;
@@ -151,8 +152,8 @@ TEST_P(BemDeformerTest, SomiglianaGlobalApproachesBemForSmallDeformations) {
   // pose brings them >= 8x closer), and stays below the displacement itself for small a.
   const int d = GetParam();
   const Scene s = sceneOf(d);
-  const auto bem = makeBemDeformer(s.cage, s.points, {}, noProgress);
-  const auto somigliana = makeDeformer(Method::Somigliana, s.cage, s.points);
+  const auto bem = makeDeformer(methods::bem(), s.cage, s.points, {}, noProgress);
+  const auto somigliana = makeDeformer(methods::somigliana(), s.cage, s.points);
   DeformParams params;
   params.nu = 0.0, params.gamma = 2.0;
   auto bend = [&](double amplitude) {
@@ -184,17 +185,17 @@ TEST_P(BemDeformerTest, SomiglianaGlobalApproachesBemForSmallDeformations) {
 
 TEST_P(BemDeformerTest, IndependentOfThreadsWithProgressAndCancel) {
   const Scene s = sceneOf(GetParam());
-  test::expectDeformIndependentOfThreads(Method::Bem, s.cage, s.points, bumpyPose(s.cage, 0.1, 5));
+  test::expectDeformIndependentOfThreads(methods::bem(), s.cage, s.points, bumpyPose(s.cage, 0.1, 5));
   // Enough points for several blocks of the precompute (point_blocks.h), so that progress has something to report.
   const int many = 3 * (1 << 16) / s.cage.numFaces();
   test::expectProgressAndCancel(
-      Method::Bem, s.cage,
+      methods::bem(), s.cage,
       GetParam() == 3 ? test::randomBallPoints(many, 0.6, 2) : test::randomDiscPoints(many, 0.4, 2));
 }
 
 TEST_P(BemDeformerTest, RejectsTheIncompressibleLimit) {
   const Scene s = sceneOf(GetParam());
-  const auto deformer = makeBemDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::bem(), s.cage, s.points, {}, noProgress);
   DeformParams params;
   params.nu = 0.5;
   EXPECT_THROW(deformer->deform(s.cage.vertices, params), InputError);

@@ -12,6 +12,7 @@
 #include "deformation_analysis.h"
 #include "errors.h"
 #include "method_cases.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -118,7 +119,7 @@ TEST(DeformationAnalysis, UniformScaleGivesCubedVolumeForEveryMethod) {
   const Cage small = test::makeIcosphere(1);  // a closed mesh inside, radius 0.5
   const Eigen::MatrixXd mesh = 0.5 * small.vertices;
   const double s = 1.3;
-  for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue}) {
+  for (Method method : {methods::somigliana(), methods::green(), methods::mvc()}) {
     const auto deformer = makeDeformer(method, cage, mesh);
     const DeformationGradients gradients(*deformer, mesh);
     const DeformationAnalysis a =
@@ -138,7 +139,7 @@ TEST(DeformationAnalysis, SweepEntriesEqualSingleAnalyses) {
   const Cage small = test::makeIcosphere(1);
   const Eigen::MatrixXd mesh = 0.5 * small.vertices;
   const Eigen::MatrixXd posed = test::bendPose(cage.vertices, 0.5, 7);
-  const auto deformer = makeDeformer(Method::Somigliana, cage, mesh);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, mesh);
   const DeformationGradients gradients(*deformer, mesh);
   const std::vector<double> nus = nuSweepValues(-0.9, 0.49, 5);
   ASSERT_EQ(nus.size(), 5u);

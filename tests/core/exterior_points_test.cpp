@@ -15,6 +15,7 @@
 #include "boundary_conditions.h"
 #include "deformer.h"
 #include "method_cases.h"
+#include "methods/method_descriptors.h"
 #include "somigliana_coordinates.h"
 #include "test_shapes.h"
 
@@ -207,10 +208,10 @@ TEST_P(ExteriorPointsTest, FloatStorageMatchesDouble) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Methods, ExteriorPointsTest,
-                         ::testing::Values(Case{"somigliana3d", 3, Method::Somigliana},
-                                           Case{"somigliana2d", 2, Method::Somigliana},
-                                           Case{"green3d", 3, Method::Green}, Case{"green2d", 2, Method::Green},
-                                           Case{"bem3d", 3, Method::Bem}, Case{"bem2d", 2, Method::Bem}),
+                         ::testing::Values(Case{"somigliana3d", 3, methods::somigliana()},
+                                           Case{"somigliana2d", 2, methods::somigliana()},
+                                           Case{"green3d", 3, methods::green()}, Case{"green2d", 2, methods::green()},
+                                           Case{"bem3d", 3, methods::bem()}, Case{"bem2d", 2, methods::bem()}),
                          test::methodCaseName);
 
 TEST(ExteriorPoints, ProxiesAreInsideWithAccurateIntegrals) {
@@ -243,7 +244,7 @@ TEST(ExteriorPoints, MeanValueCoordinatesStayFiniteOnAndNearTheCage) {
       for (int side = -1; side <= 1; ++side)
         points.row(3 * static_cast<Eigen::Index>(k) + side + 1) =
             (onCage[k].point + side * 1e-9 * diameter * onCage[k].normal).transpose();
-    const auto deformer = makeDeformer(Method::MeanValue, cage, points);
+    const auto deformer = makeDeformer(methods::mvc(), cage, points);
     const Eigen::MatrixXd out = deformer->deform(bentPose(cage), kParams);
     ASSERT_TRUE(out.allFinite()) << dim << "D";
     for (std::size_t k = 0; k < onCage.size(); ++k) {

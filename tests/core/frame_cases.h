@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "deformer.h"
+#include "methods/method_descriptors.h"
 
 namespace somicage::test {
 
@@ -35,13 +36,13 @@ inline void expectFramesMatchCpu(
   };
   const double diameter = cageDiameter(cage.vertices);
   const Eigen::MatrixXd posed = bentCage(cage);
-  for (const Case& c : std::vector<Case>{{Method::Somigliana, true, 0.0},
-                                         {Method::Somigliana, true, 1.0},
-                                         {Method::Somigliana, true, 0.4},
-                                         {Method::Somigliana, false, 0.0},
-                                         {Method::Somigliana, false, 0.5},
-                                         {Method::Green, true, 0.0},
-                                         {Method::MeanValue, false, 0.0}}) {
+  for (const Case& c : std::vector<Case>{{methods::somigliana(), true, 0.0},
+                                         {methods::somigliana(), true, 1.0},
+                                         {methods::somigliana(), true, 0.4},
+                                         {methods::somigliana(), false, 0.0},
+                                         {methods::somigliana(), false, 0.5},
+                                         {methods::green(), true, 0.0},
+                                         {methods::mvc(), false, 0.0}}) {
     PrecomputeOptions options;
     options.floatStorage = c.floatStorage;
     const auto deformer = makeDeformer(c.method, cage, points, options);

@@ -15,6 +15,7 @@
 #include "cage.h"
 #include "cage_validation.h"
 #include "deformer.h"
+#include "methods/method_descriptors.h"
 #include "somigliana_coordinates.h"
 
 namespace somicage::test {
@@ -98,7 +99,7 @@ inline void expectGeneratedCageValid(const Cage& cage, const Eigen::MatrixXd& ve
   const Eigen::MatrixXd points = subsample(vertices, precomputePoints);
   const SomiglianaCoordinates coords = computeSomiglianaCoordinates(cage, points);
   EXPECT_LE(partitionOfUnityResidual(coords).maxCoeff(), 1e-9);
-  const auto deformer = makeDeformer(Method::Somigliana, cage, points);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, points);
   const double rest = (deformer->deform(cage.vertices, {}) - points).rowwise().norm().maxCoeff();
   EXPECT_LE(rest, 1e-9 * cageDiameter(cage.vertices));
 }

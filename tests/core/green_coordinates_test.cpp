@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edge_integrals.h"
+#include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"
 #include "triangle_integrals.h"
@@ -81,8 +82,8 @@ TEST(GreenCoordinates, ReproduceSimilarities) {
   // Round-off only; 1e-9 of the posed diameter as the issue asks.
   for (const auto& cases : {cases3d(), cases2d()}) {
     for (const TestCase& c : cases) {
-      const auto deformer = makeDeformer(Method::Green, c.cage, c.inside);
-      ASSERT_EQ(deformer->method(), Method::Green);
+      const auto deformer = makeDeformer(methods::green(), c.cage, c.inside);
+      ASSERT_EQ(deformer->method(), methods::green());
       ASSERT_EQ(deformer->dim(), c.cage.dim());
       ASSERT_EQ(deformer->numPoints(), c.inside.rows());
       for (unsigned seed : {1u, 2u, 3u}) {
@@ -271,7 +272,8 @@ TEST(GreenCoordinates, FiniteOnTheCage) {
   loop << 0, 0, 1, 0, 1, 0, 1, 1, 0, 1;
   const Cage square = makePolygonCage(loop);
   EXPECT_TRUE(allFinite(computeGreenCoordinates(square, (test::randomDiscPoints(20, 0.3, 14).array() + 0.5).matrix())));
-  EXPECT_TRUE(makeDeformer(Method::Green, square, Eigen::MatrixXd::Constant(1, 2, 0.5))->deform(loop, {}).allFinite());
+  EXPECT_TRUE(
+      makeDeformer(methods::green(), square, Eigen::MatrixXd::Constant(1, 2, 0.5))->deform(loop, {}).allFinite());
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -287,13 +289,13 @@ TEST(GreenCoordinates, ResultIndependentOfThreadCount) {
     const GreenCoordinates many = computeGreenCoordinates(cage, points, threads);
     EXPECT_TRUE(one.phi == many.phi && one.psi == many.psi) << threads << " threads";
   }
-  test::expectDeformIndependentOfThreads(Method::Green, cage, points, test::bendPose(cage.vertices, 0.3, 16));
+  test::expectDeformIndependentOfThreads(methods::green(), cage, points, test::bendPose(cage.vertices, 0.3, 16));
 }
 
 TEST(GreenCoordinates, ReportsProgressAndCancels) {
   const Cage cage = test::makeIcosphere(1);
   const Eigen::MatrixXd points = test::randomBallPoints(20000, 0.8, 17);
-  test::expectProgressAndCancel(Method::Green, cage, points);
+  test::expectProgressAndCancel(methods::green(), cage, points);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -325,7 +327,7 @@ TEST_P(GreenModels, IdentitySimilarityAndPoseWithoutNaN) {
   EXPECT_LE(worst, 1e-10) << m.cage << " (" << inside << " inside points)";
   EXPECT_GT(inside, points.rows() / 3) << m.cage;
 
-  const auto deformer = makeDeformer(Method::Green, cage, points);
+  const auto deformer = makeDeformer(methods::green(), cage, points);
   const test::TestSimilarity sim = test::randomSimilarity(3, 21);
   const Eigen::MatrixXd moved = deformer->deform(sim.apply(cage.vertices), {});
   const Eigen::MatrixXd expected = sim.apply(points);

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "method_cases.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -40,8 +41,8 @@ Eigen::MatrixXd jacobianOfRow(const Eigen::MatrixXd& J, int p, int d) {
 // Parameter sets that exercise every part of the Somigliana frame (global T from sums, local T from vertex terms,
 // bulging, no traction fix) and of the BEM frame (nu, corotation); the other methods ignore them.
 std::vector<DeformParams> parameterSets(Method method) {
-  if (method == Method::Bem) return {{0.0, 0.3, 0.0, true, false}, {0.0, -0.5, 0.0, true, true}};
-  if (method != Method::Somigliana) return {DeformParams{}};
+  if (method == methods::bem()) return {{0.0, 0.3, 0.0, true, false}, {0.0, -0.5, 0.0, true, true}};
+  if (method != methods::somigliana()) return {DeformParams{}};
   return {{0.0, 0.3, 0.0, true}, {1.0, 0.45, 0.7, true}, {0.5, -0.5, 0.2, false}};
 }
 
@@ -114,7 +115,7 @@ TEST_P(JacobianTest, IsTheSimilarityForASimilarityPose) {
   const auto deformer = makeDeformer(c.method, s.cage, s.points);
   const DeformationGradients gradients(*deformer, s.points);
   for (const DeformParams& params : parameterSets(c.method)) {
-    if (c.method == Method::Bem && !params.corotational) continue;
+    if (c.method == methods::bem() && !params.corotational) continue;
     Eigen::MatrixXd positions, J;
     gradients.evaluate(similarity.apply(s.cage.vertices), params, positions, J);
     const Eigen::MatrixXd expected = similarity.scale * similarity.rotation;
@@ -132,7 +133,7 @@ TEST(Jacobian, MarksPointsThatFollowTheExteriorRule) {
   const Cage cage = test::makeIcosphere(1);
   Eigen::MatrixXd points(3, 3);
   points << 0.1, 0.2, 0.0, 1.5, 0.0, 0.0, 0.0, 0.0, 3.0;
-  const auto deformer = makeDeformer(Method::Somigliana, cage, points);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, points);
   const DeformationGradients gradients(*deformer, points);
   EXPECT_TRUE(gradients.defined(0));
   EXPECT_FALSE(gradients.defined(1));
@@ -147,10 +148,10 @@ TEST(Jacobian, MarksPointsThatFollowTheExteriorRule) {
 
 INSTANTIATE_TEST_SUITE_P(
     Methods, JacobianTest,
-    ::testing::Values(MethodCase{"Somigliana3d", 3, Method::Somigliana}, MethodCase{"Green3d", 3, Method::Green},
-                      MethodCase{"MeanValue3d", 3, Method::MeanValue}, MethodCase{"Bem3d", 3, Method::Bem},
-                      MethodCase{"Somigliana2d", 2, Method::Somigliana}, MethodCase{"Green2d", 2, Method::Green},
-                      MethodCase{"MeanValue2d", 2, Method::MeanValue}, MethodCase{"Bem2d", 2, Method::Bem}),
+    ::testing::Values(MethodCase{"Somigliana3d", 3, methods::somigliana()}, MethodCase{"Green3d", 3, methods::green()},
+                      MethodCase{"MeanValue3d", 3, methods::mvc()}, MethodCase{"Bem3d", 3, methods::bem()},
+                      MethodCase{"Somigliana2d", 2, methods::somigliana()}, MethodCase{"Green2d", 2, methods::green()},
+                      MethodCase{"MeanValue2d", 2, methods::mvc()}, MethodCase{"Bem2d", 2, methods::bem()}),
     test::methodCaseName);
 
 }  // namespace

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"
 #include "triangle_quadrature.h"
@@ -84,8 +85,8 @@ TEST(MeanValueCoordinates, ReproduceAffineMaps) {
       const int d = c.cage.dim();
       Eigen::MatrixXd all(c.inside.rows() + c.outside.rows(), d);
       all << c.inside, c.outside;
-      const auto deformer = makeDeformer(Method::MeanValue, c.cage, all);
-      ASSERT_EQ(deformer->method(), Method::MeanValue);
+      const auto deformer = makeDeformer(methods::mvc(), c.cage, all);
+      ASSERT_EQ(deformer->method(), methods::mvc());
       ASSERT_EQ(deformer->dim(), d);
       ASSERT_EQ(deformer->numPoints(), all.rows());
       for (int trial = 0; trial < 3; ++trial) {
@@ -305,14 +306,14 @@ TEST(MeanValueCoordinates, ResultIndependentOfThreadCount) {
         cage.dim() == 3 ? test::randomBallPoints(3000, 0.6, 18) : test::randomDiscPoints(3000, 0.45, 18);
     const RowMatrixXd one = computeMeanValueCoordinates(cage, points, 1);
     for (int threads : {2, 3}) EXPECT_TRUE(one == computeMeanValueCoordinates(cage, points, threads)) << threads;
-    test::expectDeformIndependentOfThreads(Method::MeanValue, cage, points, test::bendPose(cage.vertices, 0.3, 19));
+    test::expectDeformIndependentOfThreads(methods::mvc(), cage, points, test::bendPose(cage.vertices, 0.3, 19));
   }
 }
 
 TEST(MeanValueCoordinates, ReportsProgressAndCancels) {
   const Cage cage = test::makeIcosphere(1);
   const Eigen::MatrixXd points = test::randomBallPoints(20000, 0.8, 20);
-  test::expectProgressAndCancel(Method::MeanValue, cage, points);
+  test::expectProgressAndCancel(methods::mvc(), cage, points);
 }
 
 // ---------------------------------------------------------------------------------------------------------------
@@ -335,7 +336,7 @@ TEST_P(MeanValueModels, IdentityAffineAndPoseWithoutNaN) {
   EXPECT_LE(partitionError(w), 1e-12) << m.cage;
   EXPECT_LE(identityError(cage, w, points), 1e-10) << m.cage;
 
-  const auto deformer = makeDeformer(Method::MeanValue, cage, points);
+  const auto deformer = makeDeformer(methods::mvc(), cage, points);
   Eigen::Matrix3d A;
   A << 1.2, 0.3, -0.1, 0.1, 0.8, 0.4, -0.2, 0.05, 1.5;
   const Eigen::RowVector3d t(0.5, -2, 3);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "errors.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -40,7 +41,7 @@ void forEachDeformer(double lo, double hi, Check check) {
   const Cage cages[] = {test::makeExtrudedL(), makePolygonCage(test::lLoop())};
   for (const Cage& cage : cages) {
     const Eigen::MatrixXd points = test::randomBoxPoints(57, cage.dim(), lo, hi, 7);
-    for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue, Method::Bem}) {
+    for (Method method : allMethods()) {
       for (bool floatStorage : {false, true}) {
         PrecomputeOptions options;
         options.floatStorage = floatStorage;
@@ -75,8 +76,8 @@ TEST(MemoryEstimate, PointsOutsideTheCageOnlyAddWholeRows) {
 }
 
 TEST(MemoryEstimate, TheWholeEstimateAddsTheWorkingMemoryAndTheOutput) {
-  const MemoryEstimate e = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, 1000, true, 1);
-  EXPECT_EQ(e.coordinates, estimateCoordinateBytes(Method::Somigliana, 3, 49, 94, 1000, true));
+  const MemoryEstimate e = estimatePrecomputeMemory(methods::somigliana(), 3, 49, 94, 1000, true, 1);
+  EXPECT_EQ(e.coordinates, estimateCoordinateBytes(methods::somigliana(), 3, 49, 94, 1000, true));
   EXPECT_EQ(e.output, 2 * 1000 * 3 * sizeof(double));  // the frame and the kernel's row-major buffer
   EXPECT_EQ(e.total(), e.coordinates + e.working + e.output);
 }
@@ -84,19 +85,19 @@ TEST(MemoryEstimate, TheWholeEstimateAddsTheWorkingMemoryAndTheOutput) {
 TEST(MemoryEstimate, DoubleCopiesBeforeFloatStorageAreCounted) {
   // Green and mean value coordinates are computed in double and converted: float storage does not halve the peak.
   const std::size_t P = 1000000;
-  for (Method method : {Method::Green, Method::MeanValue}) {
+  for (Method method : {methods::green(), methods::mvc()}) {
     const MemoryEstimate f = estimatePrecomputeMemory(method, 3, 49, 94, P, true, 2);
     EXPECT_GE(f.working, 2 * f.coordinates) << methodName(method);
   }
   // Somigliana writes rows straight into C: its working memory is the diagnostics and the row buffers only.
-  const MemoryEstimate s = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, P, true, 2);
+  const MemoryEstimate s = estimatePrecomputeMemory(methods::somigliana(), 3, 49, 94, P, true, 2);
   EXPECT_EQ(s.working, 2 * P * sizeof(double) + 2 * (49 * 10 + 94 * 4) * sizeof(double));
   EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 4) * sizeof(float));
 }
 
 TEST(MemoryEstimate, SeveralDeformersAddTheirCoordinatesNotTheirWorkingMemory) {
-  MemoryEstimate sum = estimatePrecomputeMemory(Method::Somigliana, 3, 20, 36, 1000, true, 1);
-  const MemoryEstimate green = estimatePrecomputeMemory(Method::Green, 3, 20, 36, 1000, true, 1);
+  MemoryEstimate sum = estimatePrecomputeMemory(methods::somigliana(), 3, 20, 36, 1000, true, 1);
+  const MemoryEstimate green = estimatePrecomputeMemory(methods::green(), 3, 20, 36, 1000, true, 1);
   const std::size_t coordinates = sum.coordinates + green.coordinates, working = std::max(sum.working, green.working);
   sum += green;
   EXPECT_EQ(sum.coordinates, coordinates);
@@ -104,7 +105,7 @@ TEST(MemoryEstimate, SeveralDeformersAddTheirCoordinatesNotTheirWorkingMemory) {
 }
 
 TEST(MemoryEstimate, RefusesWithTheSizesAndAHintWhenItDoesNotFit) {
-  const MemoryEstimate e = estimatePrecomputeMemory(Method::Somigliana, 3, 49, 94, 12000000, false, 2);
+  const MemoryEstimate e = estimatePrecomputeMemory(methods::somigliana(), 3, 49, 94, 12000000, false, 2);
   ASSERT_GT(e.total(), 40000000000u);  // about 86 GB in double
   try {
     requireMemory(e, std::size_t(22900000000), "mesh.obj", memoryHint(true));

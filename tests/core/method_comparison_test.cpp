@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "deformer.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -17,8 +18,8 @@ TEST(MethodComparison, Somigliana2DAtInfiniteNuEqualsGreen) {
   // with rotations (paper section 5); so the results agree to round-off, asserted at 1e-9 of the cage diameter.
   const Cage cage = test::makeStarPolygon(6);
   const Eigen::MatrixXd points = test::randomDiscPoints(200, 0.45, 17);
-  const auto somigliana = makeDeformer(Method::Somigliana, cage, points);
-  const auto green = makeDeformer(Method::Green, cage, points);
+  const auto somigliana = makeDeformer(methods::somigliana(), cage, points);
+  const auto green = makeDeformer(methods::green(), cage, points);
   for (unsigned seed : {1u, 2u, 3u}) {
     const Eigen::MatrixXd posed = test::bendPose(cage.vertices, 0.4, seed);
     const Eigen::MatrixXd expected = green->deform(posed, {});
@@ -38,8 +39,9 @@ TEST(MethodComparison, Somigliana3DAtInfiniteNuDiffersFromGreen) {
   const Cage cage = test::makeBumpySphere(1);
   const Eigen::MatrixXd points = test::randomBallPoints(200, 0.6, 3);
   const Eigen::MatrixXd posed = test::bendPose(cage.vertices, 0.4, 2);
-  const Eigen::MatrixXd somigliana = makeDeformer(Method::Somigliana, cage, points)->deform(posed, {0, kInf, 0, true});
-  const Eigen::MatrixXd green = makeDeformer(Method::Green, cage, points)->deform(posed, {});
+  const Eigen::MatrixXd somigliana =
+      makeDeformer(methods::somigliana(), cage, points)->deform(posed, {0, kInf, 0, true});
+  const Eigen::MatrixXd green = makeDeformer(methods::green(), cage, points)->deform(posed, {});
   EXPECT_GT((somigliana - green).rowwise().norm().maxCoeff(), 1e-3 * cageDiameter(posed));
 }
 

@@ -7,8 +7,9 @@
 #include <cmath>
 #include <string>
 
+#include "deformer.h"
+#include "methods/method_descriptors.h"
 #include "somigliana_coordinates.h"
-#include "somigliana_deformer.h"
 #include "test_models.h"
 
 namespace somicage {
@@ -44,7 +45,7 @@ TEST_P(ModelsTest, CageLoadsAndPartitionOfUnityHolds) {
 
   if (c.pose.empty()) return;
   const Eigen::MatrixXd posed = loadPosedVertices(test::modelPath(c, c.pose), cage);
-  const auto deformer = makeSomiglianaDeformer(cage, points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, points, {}, noProgress);
   for (double blend : {0.0, 1.0}) {
     const Eigen::MatrixXd out = deformer->deform(posed, {blend, 0.3, 1.0, true});
     EXPECT_TRUE(out.allFinite()) << c.pose << " blend " << blend;

@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "cage.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -47,7 +48,7 @@ Posed deformWith(Method method, const Eigen::Matrix3d& A, const Eigen::Vector3d&
 TEST(NormalTransform, AnAffinePoseGivesTheInverseTransposeNormal) {
   Eigen::Matrix3d A;
   A << 1.3, 0.4, -0.2, 0.1, 0.8, 0.3, -0.25, 0.2, 1.1;
-  const Posed posed = deformWith(Method::MeanValue, A, Eigen::Vector3d(0.1, -0.2, 0.05));
+  const Posed posed = deformWith(methods::mvc(), A, Eigen::Vector3d(0.1, -0.2, 0.05));
   EXPECT_EQ(posed.normals.recomputed, 0);
   const Eigen::Matrix3d inverseTranspose = A.inverse().transpose();
   double worst = 0;
@@ -76,7 +77,7 @@ std::vector<double> normalFaceAngles(const MeshDocument& document, const Eigen::
 
 TEST(NormalTransform, ARotationKeepsTheAnglesBetweenNormalsAndFaces) {
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, -0.5).normalized()).toRotationMatrix();
-  const Posed posed = deformWith(Method::Somigliana, R, Eigen::Vector3d(0.3, 0, -0.1));
+  const Posed posed = deformWith(methods::somigliana(), R, Eigen::Vector3d(0.3, 0, -0.1));
   EXPECT_EQ(posed.normals.recomputed, 0);
   const std::vector<double> rest =
       normalFaceAngles(posed.document, posed.document.geometry.vertices, posed.document.normals);
@@ -92,7 +93,7 @@ TEST(NormalTransform, AVertexWithoutAGradientGetsTheRecomputedNormal) {
   std::string obj = kObj;
   obj.replace(obj.find("v 0.1 0.1 -0.5"), 14, "v 0.1 0.1 -1.5");  // vertex 6 leaves the cage
   Eigen::Matrix3d A = 1.2 * Eigen::Matrix3d::Identity();
-  const Posed posed = deformWith(Method::Somigliana, A, Eigen::Vector3d::Zero(), obj.c_str());
+  const Posed posed = deformWith(methods::somigliana(), A, Eigen::Vector3d::Zero(), obj.c_str());
   EXPECT_EQ(posed.normals.recomputed, 1) << "only vn 6, which names vertex 6 alone";
   const Eigen::MatrixXd recomputed = recomputeNormals(posed.document, posed.positions);
   EXPECT_LE((posed.normals.normals.row(5) - recomputed.row(5)).norm(), 1e-15);
@@ -112,7 +113,7 @@ TEST(NormalTransform, ATwoDimensionalMapKeepsZ) {
       "f 1//1 2//1 5//1 4//1\nf 2//2 3//2 6//2 5//2\nf 4//3 5//3 6//3\n",
       "prism.obj");
   const Eigen::MatrixXd points = document.geometry.vertices.leftCols(2);
-  const std::unique_ptr<CageDeformer> deformer = makeDeformer(Method::MeanValue, cage, points);
+  const std::unique_ptr<CageDeformer> deformer = makeDeformer(methods::mvc(), cage, points);
   Eigen::Matrix2d A;
   A << 1.4, 0.3, -0.2, 0.7;
   const Eigen::MatrixXd posed = cage.vertices * A.transpose();

@@ -1,12 +1,12 @@
 // The corotational Somigliana deformer (Eqs. 10-15): identity at rest and similarity invariance for every variant,
 // nu, gamma and traction setting, in 2D and 3D.
-#include "somigliana_deformer.h"
-
 #include <gtest/gtest.h>
 
 #include <limits>
 
+#include "deformer.h"
 #include "errors.h"
+#include "methods/method_descriptors.h"
 #include "test_shapes.h"
 
 namespace somicage {
@@ -45,7 +45,7 @@ class SomiglianaDeformerTest : public ::testing::TestWithParam<int> {
 TEST_P(SomiglianaDeformerTest, RestPoseIsTheIdentity) {
   // At rest every rotation is I and s_j = c, so Eq. 11 reduces to Eq. 7: round-off, asserted at 1e-8 diameters.
   const Scene s = scene();
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   const double diameter = cageDiameter(s.cage.vertices);
   for (const DeformParams& params : parameterGrid()) {
     const Eigen::MatrixXd out = deformer->deform(s.cage.vertices, params);
@@ -58,7 +58,7 @@ TEST_P(SomiglianaDeformerTest, SimilarityInvariance) {
   // the posed cage's diameter (the operations are exact up to round-off in the SVDs and the 3 by 3 solves).
   const Scene s = scene();
   const int d = s.cage.dim();
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
   for (unsigned seed : {1u, 2u}) {
     const test::TestSimilarity similarity = test::randomSimilarity(d, seed);
@@ -75,7 +75,7 @@ TEST_P(SomiglianaDeformerTest, SimilarityInvariance) {
 TEST_P(SomiglianaDeformerTest, SimilarityPoseMovesPointsBySimilarity) {
   // A pose that is itself a similarity of the rest cage moves every interior point by that similarity.
   const Scene s = scene();
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   const test::TestSimilarity similarity = test::randomSimilarity(s.cage.dim(), 8);
   const Eigen::MatrixXd moved = similarity.apply(s.cage.vertices);
   for (const DeformParams& params : parameterGrid()) {
@@ -89,7 +89,7 @@ TEST_P(SomiglianaDeformerTest, ParametersChangeTheResult) {
   // Guards the tests above against a deformer that ignores its parameters: on a real pose, nu, gamma and the
   // variant each move points by more than 1e-4 diameters.
   const Scene s = scene();
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
   const double diameter = cageDiameter(pose);
   const Eigen::MatrixXd base = deformer->deform(pose, {0.0, 0.0, 0.0, true});
@@ -106,8 +106,10 @@ TEST_P(SomiglianaDeformerTest, ResultDoesNotDependOnThreadCount) {
   two.threads = 2;
   const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
   const DeformParams params{0.5, 0.3, 1.0, true};
-  const Eigen::MatrixXd a = makeSomiglianaDeformer(s.cage, s.points, one, noProgress)->deform(pose, params);
-  const Eigen::MatrixXd b = makeSomiglianaDeformer(s.cage, s.points, two, noProgress)->deform(pose, params);
+  const Eigen::MatrixXd a =
+      makeDeformer(methods::somigliana(), s.cage, s.points, one, noProgress)->deform(pose, params);
+  const Eigen::MatrixXd b =
+      makeDeformer(methods::somigliana(), s.cage, s.points, two, noProgress)->deform(pose, params);
   EXPECT_TRUE((a.array() == b.array()).all()) << "bitwise equal";
 }
 
@@ -117,8 +119,8 @@ TEST_P(SomiglianaDeformerTest, FloatStorageStaysWithinItsErrorBudget) {
   const Scene s = scene();
   PrecomputeOptions single;
   single.floatStorage = true;
-  const auto exact = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
-  const auto rounded = makeSomiglianaDeformer(s.cage, s.points, single, noProgress);
+  const auto exact = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
+  const auto rounded = makeDeformer(methods::somigliana(), s.cage, s.points, single, noProgress);
   EXPECT_LT(rounded->frameCoordinates().bytes(), exact->frameCoordinates().bytes());
   const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.3, 5);
   for (const DeformParams& params : parameterGrid()) {
@@ -139,7 +141,7 @@ TEST_P(SomiglianaDeformerTest, ACageCollapsedToAPointTakesEveryPointThere) {
   const Eigen::RowVectorXd c = Eigen::RowVectorXd::Constant(d, -1000.0);
   Eigen::MatrixXd collapsed = s.cage.vertices;
   collapsed.rowwise() = c;
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   for (const DeformParams& params :
        {DeformParams{0.352951, -0.999, 0, false}, DeformParams{1, 0.3, 2, true}, DeformParams{0, 0, 0, true}}) {
     const FrameWeights W = deformer->frameWeights(collapsed, params);
@@ -162,16 +164,17 @@ TEST_P(SomiglianaDeformerTest, FarFromTheOriginFloatStorageKeepsItsAccuracy) {
   single.floatStorage = true;
   const Eigen::MatrixXd pose = test::bendPose(s.cage.vertices, 0.2, 5);
   const DeformParams params{0.5, 0.3, 1, true};
-  const Eigen::MatrixXd near = makeSomiglianaDeformer(s.cage, s.points, single, noProgress)->deform(pose, params);
+  const Eigen::MatrixXd near =
+      makeDeformer(methods::somigliana(), s.cage, s.points, single, noProgress)->deform(pose, params);
   const Eigen::MatrixXd moved =
-      makeSomiglianaDeformer(far, farPoints, single, noProgress)->deform(pose.rowwise() + offset, params);
+      makeDeformer(methods::somigliana(), far, farPoints, single, noProgress)->deform(pose.rowwise() + offset, params);
   const double diameter = cageDiameter(s.cage.vertices);
   EXPECT_LE(((moved.rowwise() - offset) - near).rowwise().norm().maxCoeff(), 1e-5 * diameter);
 }
 
 TEST(SomiglianaDeformer, RejectsInvalidParameters) {
   const Scene s = scene2();
-  const auto deformer = makeSomiglianaDeformer(s.cage, s.points, {}, noProgress);
+  const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   for (const DeformParams& bad :
        {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true}, DeformParams{0, kNaN, 0, true},
         DeformParams{0, 0, -1, true}, DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true}})

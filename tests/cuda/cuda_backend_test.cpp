@@ -17,6 +17,7 @@
 #include "core/frame_cases.h"
 #include "core/test_shapes.h"
 #include "deformer.h"
+#include "methods/method_descriptors.h"
 
 namespace somicage {
 namespace {
@@ -52,7 +53,7 @@ TEST(CudaBackend, StatusExplainsItself) {
 TEST(CudaBackend, WithoutDeviceEveryCallThrowsCudaError) {
   if (cudaStatus().available) GTEST_SKIP() << "a CUDA device is present: " << cudaStatus().deviceName;
   const Cage cage = test::makeCube();
-  const auto deformer = makeDeformer(Method::Somigliana, cage, randomPointsIn(cage, 8, 0.5, 1));
+  const auto deformer = makeDeformer(methods::somigliana(), cage, randomPointsIn(cage, 8, 0.5, 1));
   EXPECT_THROW(CudaFrameEvaluator(deformer->frameCoordinates(), 3), CudaError);
   EXPECT_THROW(integrateSomiglianaCoordinatesCuda(cage, randomPointsIn(cage, 4, 0.5, 2), noProgress,
                                                   [](int, const double*, double) {}),
@@ -98,8 +99,8 @@ TEST(CudaBackend, PrecomputeMatchesCpu) {
   });
   double worst = 0;
   for (int p = 0; p < points.rows(); ++p)
-    worst = std::max(worst, (gpu.row(p) - cpu.values.row(p)).cwiseAbs().maxCoeff() /
-                                cpu.values.row(p).cwiseAbs().maxCoeff());
+    worst = std::max(worst,
+                     (gpu.row(p) - cpu.values.row(p)).cwiseAbs().maxCoeff() / cpu.values.row(p).cwiseAbs().maxCoeff());
   EXPECT_LE(worst, 1e-9) << "largest relative difference of a row";
   EXPECT_LE((winding - cpu.winding).cwiseAbs().maxCoeff(), 1e-9);
 }

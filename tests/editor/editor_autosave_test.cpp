@@ -13,6 +13,7 @@
 #include "autosave.h"
 #include "editor_options.h"
 #include "errors.h"
+#include "methods/method_descriptors.h"
 #include "session.h"
 
 using namespace somicage;
@@ -216,14 +217,14 @@ TEST(EditorAutosave, AcceptingTheOfferAppliesTheSessionAndDiscardingDropsIt) {
   AppState state;
   Session crashed = demoSession(0.5);
   crashed.params.gamma = 2.5;
-  crashed.method = Method::Green;
+  crashed.method = methods::green();
   crashed.pose.resize(0, 0);  // the rest pose of the demo
   state.restoreOffer = crashed;
   state.restoreOfferTime = "2026-11-23 19:40";
   acceptRestoreOffer(state);
   EXPECT_FALSE(state.restoreOffer.has_value());
   EXPECT_EQ(state.params.gamma, 2.5);
-  EXPECT_EQ(state.method, Method::Green);
+  EXPECT_EQ(state.method, methods::green());
   EXPECT_EQ(state.statusMessage, "restored the session from 2026-11-23 19:40");
   std::optional<PrecomputeOutcome> out = state.worker.wait();  // the 2D demo of the session loads
   ASSERT_TRUE(out.has_value());

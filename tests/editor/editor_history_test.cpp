@@ -11,6 +11,7 @@
 
 #include "app_state.h"
 #include "history.h"
+#include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "pose_clear.h"
 
@@ -152,7 +153,7 @@ TEST_F(DocumentCommands, EveryCommandIsOneExactUndoableStep) {
   param("Local variant", [](DeformParams& p) { p.blend = 1.0; });
   param("Traction fix", [](DeformParams& p) { p.tractionCorrection = !p.tractionCorrection; });
   expectOneUndoableStep("Method", [&] {
-    setMethod(state, Method::Green);
+    setMethod(state, methods::green());
     commitEdit(state, "Method");
   });
 

@@ -6,6 +6,7 @@
 #include "editor_options.h"
 #include "errors.h"
 #include "layout.h"
+#include "methods/method_descriptors.h"
 #include "view_quantity.h"
 
 using namespace somicage;
@@ -40,7 +41,7 @@ TEST(EditorOptions, FilesAndParameters) {
   EXPECT_EQ(o.meshPath, "m.obj");
   EXPECT_EQ(o.cagePath, "c.obj");
   EXPECT_EQ(o.posedPath, "p.obj");
-  EXPECT_EQ(*o.method, Method::Green);
+  EXPECT_EQ(*o.method, methods::green());
   EXPECT_TRUE(std::isinf(*o.nu));
   EXPECT_EQ(*o.gamma, 1.5);
   EXPECT_EQ(*o.blend, 1.0);

@@ -7,6 +7,9 @@
 #include <thread>
 
 #include "app_state.h"
+#include "cage_repair.h"
+#include "cage_validation.h"
+#include "methods/method_descriptors.h"
 #include "precompute_worker.h"
 #include "scene.h"
 
@@ -26,9 +29,13 @@ TEST(EditorScene, DemoCagesEncloseTheirMeshesAndFaceOutward) {
     bounds3(s.meshVertices, lo, hi);
     bounds3(s.restCage.vertices, clo, chi);
     EXPECT_TRUE((clo.array() <= lo.array()).all() && (hi.array() <= chi.array()).all());
+    // The engine would take the demo cage as it is: valid (closed, manifold, consistently oriented, enclosing a
+    // positive measure), with nothing to repair.
+    EXPECT_TRUE(validateCage(s.restCage).valid());
+    EXPECT_TRUE(repairCage(s.restCage).fixes.empty());
     if (dim == 3) {
-      EXPECT_GT(signedVolume(s.restCage.vertices, s.restCage.faces), 0.0);
-      EXPECT_GT(signedVolume(s.meshVertices, s.meshTriangles), 0.0);
+      // The mesh is written facing outward (its normals shade it): a positive signed volume.
+      EXPECT_GT(signedMeasure(s.meshVertices, s.meshTriangles), 0.0);
       // Closed: every edge is shared by exactly two faces in opposite directions.
       std::map<std::pair<int, int>, int> edges;
       for (Eigen::Index f = 0; f < s.restCage.faces.rows(); ++f)
@@ -42,7 +49,7 @@ TEST(EditorWorker, PrecomputesEveryRequestedMethod) {
   PrecomputeWorker worker;
   PrecomputeRequest r;
   r.scene = std::make_shared<const Scene>(makeDemoScene(2));
-  r.methods = {Method::Green, Method::MeanValue};
+  r.methods = {methods::green(), methods::mvc()};
   worker.start(r);
   const std::optional<PrecomputeOutcome> out = worker.wait();
   ASSERT_TRUE(out.has_value());
@@ -57,7 +64,7 @@ TEST(EditorWorker, LoaderErrorsAreReportedNotThrown) {
   PrecomputeWorker worker;
   PrecomputeRequest r;
   r.loadScene = []() { return loadScene("/nonexistent/mesh.obj", "/nonexistent/cage.obj"); };
-  r.methods = {Method::Green};
+  r.methods = {methods::green()};
   worker.start(r);
   const std::optional<PrecomputeOutcome> out = worker.wait();
   ASSERT_TRUE(out.has_value());
@@ -69,7 +76,7 @@ TEST(EditorWorker, CancelStopsWithoutResults) {
   PrecomputeWorker worker;
   PrecomputeRequest r;
   r.loadScene = []() { return makeDemoScene(3); };
-  r.methods = {Method::Somigliana, Method::Green, Method::MeanValue};
+  r.methods = {methods::somigliana(), methods::green(), methods::mvc()};
   worker.start(r);
   worker.cancel();
   const std::optional<PrecomputeOutcome> out = worker.wait();
@@ -105,11 +112,11 @@ TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   commitEdit(state, "Grab");
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_FALSE(updateDeformation(state));  // nothing changed since
-  const Eigen::MatrixXd& moved = displayedPoints(state, Method::Somigliana);
+  const Eigen::MatrixXd& moved = displayedPoints(state, methods::somigliana());
   EXPECT_GT((moved - state.scene->meshVertices).cwiseAbs().maxCoeff(), 0.1);
   undo(state);
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_LT((displayedPoints(state, Method::Somigliana) - state.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((displayedPoints(state, methods::somigliana()) - state.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 TEST(EditorAppState, SessionOfTheDemoRoundTripsThroughTheState) {
@@ -133,7 +140,7 @@ namespace {
 // The 3D demo with Somigliana and Green deformers installed.
 void loadDemo(AppState& state) {
   state.compare = true;
-  state.compareMethods = {Method::Somigliana, Method::Green};
+  state.compareMethods = {methods::somigliana(), methods::green()};
   requestDemo(state, 3);
   std::optional<PrecomputeOutcome> out = state.worker.wait();
   ASSERT_TRUE(out.has_value());
@@ -157,7 +164,7 @@ void expectSceneKept(AppState& state, const KeptScene& kept) {
   EXPECT_FALSE(state.loadingScene);
   state.deformDirty = true;
   EXPECT_TRUE(updateDeformation(state));
-  EXPECT_GT((displayedPoints(state, Method::Somigliana) - kept.scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
+  EXPECT_GT((displayedPoints(state, methods::somigliana()) - kept.scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
 }
 
 // A bent pose, so that a kept deformation is told apart from the rest mesh.
@@ -218,7 +225,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
     while (!cancelled) std::this_thread::yield();
     return makeDemoScene(2);
   };
-  request.methods = {Method::Somigliana};
+  request.methods = {methods::somigliana()};
   state.loadingScene = true;
   worker.start(std::move(request));
   while (!loading) std::this_thread::yield();

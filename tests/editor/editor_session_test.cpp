@@ -7,6 +7,7 @@
 
 #include "errors.h"
 #include "json.h"
+#include "methods/method_descriptors.h"
 #include "session.h"
 
 using namespace somicage;
@@ -19,14 +20,14 @@ Session sample() {
   s.cagePath = "/models/cage.obj";
   s.pose.resize(3, 3);
   s.pose << 0.1, 0.2, 0.3, 1.0 / 3.0, -2.5e-7, 1e8, 4, 5, 6;
-  s.method = Method::Green;
+  s.method = methods::green();
   s.params.nu = -std::numeric_limits<double>::infinity();
   s.params.gamma = 2.25;
   s.params.blend = 0.125;
   s.params.tractionCorrection = false;
   s.params.corotational = true;
   s.compare = true;
-  s.compareMethods = {Method::Somigliana, Method::Bem, Method::MeanValue};
+  s.compareMethods = {methods::somigliana(), methods::bem(), methods::mvc()};
   s.camera.target = Eigen::Vector3d(0.1, -0.2, 0.3);
   s.camera.distance = 7.5;
   s.camera.yaw = -1.25;
@@ -145,7 +146,8 @@ TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
   std::string newer = good;
   ASSERT_NE(newer.find("\"version\": 2"), std::string::npos);
   newer.replace(newer.find("\"version\": 2"), 12, "\"version\": 3");
-  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 and 2)"), std::string::npos)
+  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 and 2)"),
+            std::string::npos)
       << messageFor(newer);
   std::string other = good;
   other.replace(other.find("somicage-session"), 16, "somicage-recent!");

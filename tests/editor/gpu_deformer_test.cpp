@@ -26,6 +26,7 @@
 #include "gpu_benchmark.h"
 #include "mesh_normals.h"
 #include "mesh_renderer.h"
+#include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "offscreen_context.h"
 #include "scene.h"
@@ -145,7 +146,7 @@ using Case = test::MethodCase;
 std::vector<Case> allCases() {
   std::vector<Case> cases;
   for (int dim : {2, 3})
-    for (Method method : {Method::Somigliana, Method::Green, Method::MeanValue})
+    for (Method method : allMethods())
       cases.push_back({methodName(method) + "_" + std::to_string(dim) + "d", dim, method});
   return cases;
 }
@@ -159,7 +160,7 @@ TEST_P(GpuDeformerTest, MatchesCpu) {
   const Case& c = GetParam();
   const TestScene scene = c.dim == 3 ? scene3d() : scene2d();
   const std::vector<DeformParams> params =
-      c.method == Method::Somigliana ? somiglianaParams() : std::vector<DeformParams>{DeformParams{}};
+      c.method == methods::somigliana() ? somiglianaParams() : std::vector<DeformParams>{DeformParams{}};
   double worst = 0;
   for (bool floatStorage : {false, true}) {
     PrecomputeOptions options;
@@ -194,7 +195,7 @@ TEST(GpuDeformer, ExteriorPointsMatchCpu) {
     for (Eigen::Index p = 1; p < n; p += 9) scene.points.row(p) *= (p % 2 == 0 ? 2.8 : 5.0);  // band and beyond
     scene.points.row(n - 1) = scene.cage.vertices.row(0);                                     // on the cage
     scene.points.row(n - 2) = 0.5 * (scene.cage.vertices.row(0) + scene.cage.vertices.row(1));
-    for (Method method : {Method::Somigliana, Method::Green}) {
+    for (Method method : {methods::somigliana(), methods::green()}) {
       for (bool floatStorage : {false, true}) {
         PrecomputeOptions options;
         options.floatStorage = floatStorage;
@@ -218,7 +219,7 @@ TEST(GpuDeformer, ExteriorPointsMatchCpu) {
 TEST(GpuDeformer, FramesInARowAndRestPose) {
   REQUIRE_GPU();
   const TestScene scene = scene3d();
-  const auto deformer = makeDeformer(Method::Somigliana, scene.cage, scene.points);
+  const auto deformer = makeDeformer(methods::somigliana(), scene.cage, scene.points);
   render::MeshRenderer mesh;
   mesh.setTopology(scene.triangles);
   render::GpuDeformer gpu;
@@ -241,7 +242,7 @@ TEST(GpuDeformer, FramesInARowAndRestPose) {
 TEST(GpuDeformer, InvalidParametersThrow) {
   REQUIRE_GPU();
   const TestScene scene = scene2d();
-  const auto deformer = makeDeformer(Method::Somigliana, scene.cage, scene.points);
+  const auto deformer = makeDeformer(methods::somigliana(), scene.cage, scene.points);
   render::MeshRenderer mesh;
   mesh.setTopology(scene.triangles);
   render::GpuDeformer gpu;
@@ -257,7 +258,7 @@ TEST(GpuDeformer, InvalidParametersThrow) {
 TEST(GpuDeformer, BenchmarkTimesAFrameAndRestoresTheContext) {
   REQUIRE_GPU();
   const TestScene scene = scene3d();
-  const auto deformer = makeDeformer(Method::Green, scene.cage, scene.points);
+  const auto deformer = makeDeformer(methods::green(), scene.cage, scene.points);
   std::string reason;
   const double ms = render::timeGpuDeformMs(*deformer, scene.posed, {}, 5, &reason);
   EXPECT_TRUE(std::isfinite(ms) && ms > 0) << reason;
@@ -290,8 +291,7 @@ const Hydrant* hydrant() {
   h->scene =
       editor::loadScene((dir / "fireHydrant.obj").string(), (dir / "fireHydrant_cages_triangulated.obj").string());
   h->posed = loadPosedVertices((dir / "fireHydrant_cages_triangulated_deformed.obj").string(), h->scene.restCage);
-  for (Method m : {Method::Somigliana, Method::Green, Method::MeanValue})
-    h->deformers[m] = makeDeformer(m, h->scene.restCage, h->scene.meshVertices);
+  for (Method m : allMethods()) h->deformers[m] = makeDeformer(m, h->scene.restCage, h->scene.meshVertices);
   return h.get();
 }
 
@@ -301,7 +301,7 @@ TEST(GpuDeformerFireHydrant, MatchesCpu) {
   if (!h) GTEST_SKIP() << "shared models not found at " << SOMICAGE_MODELS_DIR << "/firehydrant";
   for (const auto& [method, deformer] : h->deformers) {
     const std::vector<DeformParams> params =
-        method == Method::Somigliana ? somiglianaParams() : std::vector<DeformParams>{DeformParams{}};
+        method == methods::somigliana() ? somiglianaParams() : std::vector<DeformParams>{DeformParams{}};
     for (const DeformParams& p : params) {
       const Comparison r = compare(*deformer, h->posed, p, h->scene.meshTriangles);
       EXPECT_LE(r.positionError, kPositionTolerance)

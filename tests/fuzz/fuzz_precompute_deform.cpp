@@ -22,13 +22,14 @@
 #include "cage_validation.h"
 #include "deformer.h"
 #include "errors.h"
+#include "methods/method_descriptors.h"
 
 namespace {
 
-using somicage::Cage;
 using Eigen::MatrixXd;
 using Eigen::Vector3d;
 using Eigen::VectorXd;
+using somicage::Cage;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -55,12 +56,12 @@ Cage icosahedron() {
   const double p = (1.0 + std::sqrt(5.0)) / 2.0;
   Cage c;
   c.vertices.resize(12, 3);
-  c.vertices << -1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, 0, 0, -1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, p, 0, -1, p, 0, 1,
-      -p, 0, -1, -p, 0, 1;
+  c.vertices << -1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, 0, 0, -1, p, 0, 1, p, 0, -1, -p, 0, 1, -p, p, 0, -1, p, 0, 1, -p,
+      0, -1, -p, 0, 1;
   c.vertices /= std::sqrt(1.0 + p * p);
   c.faces.resize(20, 3);
-  c.faces << 0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9,
-      4, 3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1;
+  c.faces << 0, 11, 5, 0, 5, 1, 0, 1, 7, 0, 7, 10, 0, 10, 11, 1, 5, 9, 5, 11, 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3, 9, 4,
+      3, 4, 2, 3, 2, 6, 3, 6, 8, 3, 8, 9, 4, 9, 5, 2, 4, 11, 6, 2, 10, 8, 6, 7, 9, 8, 1;
   return c;
 }
 
@@ -171,10 +172,17 @@ somicage::DeformParams fuzzedParams(FuzzedDataProvider& in) {
   somicage::DeformParams params;
   params.blend = in.ConsumeProbability<double>();
   switch (in.ConsumeIntegralInRange(0, 3)) {
-    case 0: params.nu = uniform(in, -0.999, 0.499); break;
-    case 1: params.nu = std::numeric_limits<double>::infinity(); break;
-    case 2: params.nu = -std::numeric_limits<double>::infinity(); break;
-    default: params.nu = in.ConsumeFloatingPoint<double>();  // mostly out of range: must be an InputError
+    case 0:
+      params.nu = uniform(in, -0.999, 0.499);
+      break;
+    case 1:
+      params.nu = std::numeric_limits<double>::infinity();
+      break;
+    case 2:
+      params.nu = -std::numeric_limits<double>::infinity();
+      break;
+    default:
+      params.nu = in.ConsumeFloatingPoint<double>();  // mostly out of range: must be an InputError
   }
   params.gamma = uniform(in, 0.0, 5.0);
   params.tractionCorrection = in.ConsumeBool();
@@ -250,10 +258,12 @@ double distanceToCage(const Cage& cage, const Eigen::RowVectorXd& x) {
 void printCase(const Cage& cage, const MatrixXd& points, const MatrixXd& pose, const somicage::DeformParams& params,
                bool floatStorage) {
   const Eigen::IOFormat full(17, 0, " ", "\n", "  ");
-  std::cerr << "cage vertices:\n" << cage.vertices.format(full) << "\ncage faces:\n" << cage.faces
-            << "\npoints:\n" << points.format(full) << "\npose:\n" << pose.format(full) << "\nblend "
-            << params.blend << " nu " << params.nu << " gamma " << params.gamma << " traction fix "
-            << params.tractionCorrection << " float storage " << floatStorage << "\n";
+  std::cerr << "cage vertices:\n"
+            << cage.vertices.format(full) << "\ncage faces:\n"
+            << cage.faces << "\npoints:\n"
+            << points.format(full) << "\npose:\n"
+            << pose.format(full) << "\nblend " << params.blend << " nu " << params.nu << " gamma " << params.gamma
+            << " traction fix " << params.tractionCorrection << " float storage " << floatStorage << "\n";
 }
 
 }  // namespace
@@ -279,7 +289,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         windingNumber(cage, points.row(p)) >= 0.5 && distanceToCage(cage, points.row(p)) > 1e-6 * diameter;
   }
 
-  for (somicage::Method method : {somicage::Method::Somigliana, somicage::Method::Green, somicage::Method::MeanValue}) {
+  for (somicage::Method method : somicage::allMethods()) {
     try {
       const auto deformer = somicage::makeDeformer(method, cage, points, options);
       const MatrixXd out = deformer->deform(pose, params);

@@ -1,12 +1,15 @@
-#include "somigliana_deformer.h"
-
+// The corotational Somigliana deformer (paper Eqs. 10-15) over precomputed Somigliana coordinates, and its method
+// descriptor (method.h).
 #include <cmath>
 #include <vector>
 
 #include "boundary_conditions.h"
 #include "coordinate_gradients.h"
+#include "deformer.h"
 #include "errors.h"
 #include "exterior_points.h"
+#include "methods/method_descriptors.h"
+#include "somigliana_coordinates.h"
 
 namespace somicage {
 
@@ -44,56 +47,51 @@ void setTColumns(const Eigen::MatrixXd& M, Eigen::MatrixXd& W, int row) {
   W.row(row).head(y.size()) = y.transpose();
 }
 
-// The column of vertex i's term k in C (term-major; see writeFrameRow).
-inline int vertexColumn(int i, int k, int numVertices) { return k * numVertices + i; }
+// The per-vertex sums of a row's vertex terms (vertexTermCount numbers into sums, zeroed by the caller). In vertex
+// order: an Eigen reduction's order would depend on the buffer's alignment, and so on the thread.
+void sumVertexTerms(const CoordinateLayout& layout, const double* integrals, double* sums) {
+  for (int k = 0; k < layout.vertexTerms; ++k)
+    for (int i = 0; i < layout.numVertices; ++i) sums[k] += integrals[layout.vertexColumn(i, k)];
+}
 
-// A row of integrals (the layout of SomiglianaCoordinates::values) and their per-vertex sums (vertexTermCount
-// numbers) in C's layout, with zero [x | 1] columns. Vertex terms term-major (all vertices' D, then all omega_x,
-// ...): each output of a frame then reads one contiguous range (the symmetric part of T only the B terms, the
-// antisymmetric part only the omega terms).
+// A point's integrals (already in the layout of C, layout.mainColumns() numbers) and their per-vertex sums in the
+// tail, the tail's [x | 1] columns zero, in the storage type.
 template <typename Scalar>
-void writeIntegralColumns(const double* integrals, const double* sums, int numVertices, int dim, Scalar* row,
-                          int columns) {
-  const int terms = vertexTermCount(dim), main = columns - terms - dim - 1, vertexColumns = numVertices * terms;
-  std::fill(row, row + columns, Scalar(0));
-  for (int i = 0; i < numVertices; ++i)
-    for (int k = 0; k < terms; ++k)
-      row[vertexColumn(i, k, numVertices)] = static_cast<Scalar>(integrals[i * terms + k]);
-  for (int k = vertexColumns; k < main; ++k) row[k] = static_cast<Scalar>(integrals[k]);
-  for (int k = 0; k < terms; ++k) row[main + k] = static_cast<Scalar>(sums[k]);
+void writeIntegralColumns(const CoordinateLayout& layout, const double* integrals, const double* sums, Scalar* row) {
+  for (int k = 0; k < layout.mainColumns(); ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  for (int k = 0; k < layout.vertexTerms; ++k) row[layout.tailColumn(k)] = static_cast<Scalar>(sums[k]);
+  for (int k = layout.vertexTerms; k < layout.tailColumns; ++k) row[layout.tailColumn(k)] = Scalar(0);
 }
 
 // The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the dual-number integrals of
-// coordinate_gradients.h in writeIntegralColumns' layout; zero rows for points that are not Inside.
+// coordinate_gradients.h (in the layout of C) and their sums; zero rows for points that are not Inside.
 template <typename Scalar>
 void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<PointRegion>& regions,
-                             int threads, const ProgressCallback& progress, int columns,
+                             int threads, const ProgressCallback& progress, const CoordinateLayout& layout,
                              std::vector<CoordinateMatrix<Scalar>>& gradients) {
-  const int d = cage.dim(), terms = vertexTermCount(d), numVertices = cage.numVertices();
-  gradients.resize(d);  // one at a time: no temporary fourth copy
-  for (auto& g : gradients) g.setZero(points.rows(), columns);
+  const int d = cage.dim();
+  gradients.resize(static_cast<std::size_t>(d));  // one at a time: no temporary fourth copy
+  for (auto& g : gradients) g.setZero(points.rows(), layout.columns());
   integrateSomiglianaGradients(cage, points, threads, progress, [&](int p, const double* const* rows) {
     if (regions[static_cast<std::size_t>(p)] != PointRegion::Inside) return;
     for (int a = 0; a < d; ++a) {
       double sums[vertexTermCount(3)] = {0};
-      for (int i = 0; i < numVertices; ++i)
-        for (int k = 0; k < terms; ++k) sums[k] += rows[a][i * terms + k];
-      writeIntegralColumns(rows[a], sums, numVertices, d, gradients[a].row(p).data(), columns);
+      sumVertexTerms(layout, rows[a], sums);
+      writeIntegralColumns(layout, rows[a], sums, gradients[static_cast<std::size_t>(a)].row(p).data());
     }
   });
 }
 
-// Writes a point's row of C in the storage type: its integrals and their per-vertex sums where they are
-// reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region and its
-// partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
+// Writes a point's row of C in the storage type: its integrals (already in the layout of C) and their per-vertex
+// sums where they are reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region
+// and its partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
+// The one writer of C's rows, whichever integrator (CPU or device) produced them.
 template <typename Scalar>
 PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::MatrixXd& points, int p,
-                          int numVertices, bool exactIntegrals, Scalar* row, int columns, double& residual) {
-  const int dim = static_cast<int>(points.cols());
-  const int terms = vertexTermCount(dim), main = columns - terms - dim - 1;
+                          const CoordinateLayout& layout, bool exactIntegrals, Scalar* row, double& residual) {
+  const int dim = static_cast<int>(points.cols()), main = layout.mainColumns(), columns = layout.columns();
   double sums[vertexTermCount(3)] = {0};
-  for (int i = 0; i < numVertices; ++i)
-    for (int k = 0; k < terms; ++k) sums[k] += integrals[i * terms + k];
+  sumVertexTerms(layout, integrals, sums);
   residual = unityResidualOfSums(sums, dim);
   // NaN and infinity survive a sum: one vectorised reduction checks the whole row (7x cheaper than allFinite).
   const bool finite = std::isfinite(Eigen::Map<const Eigen::ArrayXd>(integrals, main).sum());
@@ -105,7 +103,7 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
     writeSimilarityRow(points, p, row, columns);
     return region;
   }
-  writeIntegralColumns(integrals, sums, numVertices, dim, row, columns);
+  writeIntegralColumns(layout, integrals, sums, row);
   return region;
 }
 
@@ -114,26 +112,27 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
 // second, double-precision copy of the coordinates; adding the exterior rows reallocates in place.
 template <typename Scalar>
 void fillFrameCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& integration,
-                          const ProgressCallback& progress, int columns, CoordinateMatrix<Scalar>& C,
+                          const RowIntegrator& integrate, const ProgressCallback& progress,
+                          const CoordinateLayout& layout, CoordinateMatrix<Scalar>& C,
                           std::vector<ExteriorBlend>& blends, PrecomputeDiagnostics& diagnostics) {
-  const int numPoints = static_cast<int>(points.rows()), numVertices = cage.numVertices();
+  const int numPoints = static_cast<int>(points.rows()), columns = layout.columns();
   const bool exact = integration.rule == IntegrationOptions::Rule::ClosedForm;
   C.resize(numPoints, columns);
-  integrateSomiglianaCoordinates(cage, points, integration, progress, [&](int p, const double* row, double w) {
+  integrate(cage, points, integration, progress, [&](int p, const double* row, double w) {
     diagnostics.winding(p) = w;
     diagnostics.regions[static_cast<std::size_t>(p)] =
-        writeFrameRow(row, w, points, p, numVertices, exact, C.row(p).data(), columns, diagnostics.unityResidual(p));
+        writeFrameRow(row, w, points, p, layout, exact, C.row(p).data(), diagnostics.unityResidual(p));
   });
   ExteriorPlan plan = planExteriorPoints(cage, points, diagnostics.regions, integration.threads);
   if (plan.blends.empty()) return;
   C.conservativeResize(numPoints + 2 * static_cast<Eigen::Index>(plan.blends.size()), columns);
   integrateProxies(cage, plan, [&](const Eigen::MatrixXd& proxies, const std::vector<int>& which) {
     std::vector<char> reliable(which.size());  // one per proxy, written from the worker threads
-    integrateSomiglianaCoordinates(cage, proxies, integration, noProgress, [&](int k, const double* row, double w) {
+    integrate(cage, proxies, integration, noProgress, [&](int k, const double* row, double w) {
       double residual;
       Scalar* proxyRow = C.row(numPoints + 2 * which[static_cast<std::size_t>(k)]).data();
       reliable[static_cast<std::size_t>(k)] =
-          writeFrameRow(row, w, proxies, k, numVertices, exact, proxyRow, columns, residual) == PointRegion::Inside;
+          writeFrameRow(row, w, proxies, k, layout, exact, proxyRow, residual) == PointRegion::Inside;
     });
     return std::vector<bool>(reliable.begin(), reliable.end());
   });
@@ -148,24 +147,25 @@ class SomiglianaDeformer final : public CageDeformer {
   SomiglianaDeformer(Cage rest, FrameCoordinates coordinates, PrecomputeDiagnostics diagnostics, int threads)
       : CageDeformer(std::move(coordinates), threads),
         rest_(std::move(rest)),
-        restNormals_(faceNormals(rest_, rest_.vertices)) {
+        restNormals_(faceNormals(rest_, rest_.vertices)),
+        layout_(somiglianaLayout(rest_.dim(), rest_.numVertices(), rest_.numFaces())) {
     diagnostics_ = std::move(diagnostics);
   }
 
-  Method method() const override { return Method::Somigliana; }
+  Method method() const override { return methods::somigliana(); }
   int dim() const override { return rest_.dim(); }
 
   std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                     const ProgressCallback& progress) const override {
-    std::vector<FrameCoordinates> frames(dim());
+    std::vector<FrameCoordinates> frames(static_cast<std::size_t>(dim()));
     const bool isFloat = coordinates_.isFloat();
     std::vector<CoordinateMatrix<float>> floats;
     std::vector<CoordinateMatrix<double>> doubles;
     if (isFloat)
-      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, coordinates_.columns(), floats);
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, layout_, floats);
     else
-      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, coordinates_.columns(), doubles);
-    for (int a = 0; a < dim(); ++a) {
+      fillCoordinateGradients(rest_, points, diagnostics_.regions, threads_, progress, layout_, doubles);
+    for (std::size_t a = 0; a < frames.size(); ++a) {
       frames[a].mainColumns = coordinates_.mainColumns;
       if (isFloat)
         frames[a].floats = std::move(floats[a]);
@@ -196,14 +196,14 @@ class SomiglianaDeformer final : public CageDeformer {
     const int rhs = W.outputs - W.mainOffset - d;  // where the right-hand side starts in W.main
     // b relative to the posed centroid o: every term's T weight times (v~_i - o) gives b - T(x) o.
     W.origin = posed.colwise().mean().transpose();
-    W.main = Eigen::MatrixXd::Zero(coordinates_.mainColumns, W.outputs - W.mainOffset);
-    W.tail = Eigen::MatrixXd::Zero(terms + d + 1, W.outputs);
+    W.main = Eigen::MatrixXd::Zero(layout_.mainColumns(), W.outputs - W.mainOffset);
+    W.tail = Eigen::MatrixXd::Zero(layout_.tailColumns, W.outputs);
     for (int i = 0; i < rest_.numVertices(); ++i) {
       const Eigen::MatrixXd& R = global ? bc.global.rotation : bc.vertexRotations[i];
       const Eigen::VectorXd v = posed.row(i).transpose() - W.origin;
       for (int k = 0; k < terms; ++k) {
         const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
-        const int row = vertexColumn(i, k, rest_.numVertices());
+        const int row = layout_.vertexColumn(i, k);
         if (!global && k > 0) setTColumns(rotated, W.main, row);
         W.main.row(row).segment(rhs, d) = (rotated * v).transpose();
       }
@@ -212,7 +212,7 @@ class SomiglianaDeformer final : public CageDeformer {
     for (int j = 0; j < rest_.numFaces(); ++j) {
       const Eigen::MatrixXd& R = bc.faceRotations[j];
       const double s = bc.tractionScales(j);
-      const int row = rest_.numVertices() * terms + j * faceTermCount(d);
+      const int row = layout_.faceColumn(j, 0);
       W.main.row(row).segment(rhs, d) = (s * c.k1 * R * restNormals_.row(j).transpose()).transpose();
       for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) = (s * c.k2 * R.col(a)).transpose();
     }
@@ -233,29 +233,53 @@ class SomiglianaDeformer final : public CageDeformer {
  private:
   Cage rest_;
   Eigen::MatrixXd restNormals_;
+  CoordinateLayout layout_;
 };
 
-}  // namespace
-
-std::unique_ptr<CageDeformer> makeSomiglianaDeformer(const Cage& restCage, const Eigen::MatrixXd& points,
-                                                     const PrecomputeOptions& options,
-                                                     const ProgressCallback& progress) {
+std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const Eigen::MatrixXd& points,
+                                                   const PrecomputeOptions& options, const ProgressCallback& progress) {
   IntegrationOptions integration = options.integration;
   if (integration.threads == 0) integration.threads = options.threads;
-  const int d = restCage.dim(), numPoints = static_cast<int>(points.rows());
-  const int main = restCage.numVertices() * vertexTermCount(d) + restCage.numFaces() * faceTermCount(d);
-  const int columns = main + vertexTermCount(d) + d + 1;
+  const RowIntegrator integrate = options.rowIntegrator ? options.rowIntegrator : integrateSomiglianaCoordinates;
+  const int numPoints = static_cast<int>(points.rows());
+  const CoordinateLayout layout = somiglianaLayout(restCage.dim(), restCage.numVertices(), restCage.numFaces());
   PrecomputeDiagnostics diagnostics{Eigen::VectorXd(numPoints), Eigen::VectorXd(numPoints),
                                     std::vector<PointRegion>(static_cast<std::size_t>(numPoints))};
   FrameCoordinates frame;
-  frame.mainColumns = main;
+  frame.mainColumns = layout.mainColumns();
   if (options.floatStorage)
-    fillFrameCoordinates(restCage, points, integration, progress, columns, frame.floats, frame.exteriorBlends,
+    fillFrameCoordinates(restCage, points, integration, integrate, progress, layout, frame.floats, frame.exteriorBlends,
                          diagnostics);
   else
-    fillFrameCoordinates(restCage, points, integration, progress, columns, frame.doubles, frame.exteriorBlends,
-                         diagnostics);
+    fillFrameCoordinates(restCage, points, integration, integrate, progress, layout, frame.doubles,
+                         frame.exteriorBlends, diagnostics);
   return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads);
 }
+
+// Rows go straight into C; the diagnostics keep a winding number and a residual per point; each thread has a
+// row buffer of the main block.
+std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::size_t points, bool, int threads) {
+  return static_cast<std::size_t>(threads) * static_cast<std::size_t>(layout.mainColumns()) * sizeof(double) +
+         2 * points * sizeof(double);
+}
+
+}  // namespace
+
+namespace methods {
+
+const MethodDescriptor& somigliana() {
+  static const MethodDescriptor descriptor{"somigliana",
+                                           "Somigliana",
+                                           0,
+                                           kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
+                                           false,
+                                           validateDeformParams,
+                                           somiglianaLayout,
+                                           somiglianaWorkingBytes,
+                                           precomputeSomigliana};
+  return descriptor;
+}
+
+}  // namespace methods
 
 }  // namespace somicage

@@ -1,0 +1,39 @@
+// The column layout of a method's coordinate matrix C (frame_evaluation.h): its one home. Integrators write rows
+// in it, deformers build their weight rows from it, the GPU backends upload it and the memory estimate sizes it.
+//
+//   [ vertex terms, term-major | face terms, face-major | tail ]
+//   vertex i, term k:  column k * #V + i        (each term of all vertices is one contiguous range, which a frame
+//                                                reads in one pass: e.g. only the antisymmetric terms for A)
+//   face j, term k:    column #V * vertexTerms + j * faceTerms + k
+//   tail column k:     column mainColumns() + k (per-point numbers such as [x | 1], see the method)
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+namespace somicage {
+
+// Rows of C (and of the coordinates integrators produce) are contiguous.
+using RowMatrixXd = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+struct CoordinateLayout {
+  int numVertices = 0;
+  int numFaces = 0;
+  int vertexTerms = 0;  // numbers per cage vertex
+  int faceTerms = 0;    // numbers per cage face
+  int tailColumns = 0;  // numbers per point after the vertex and face blocks
+
+  int vertexColumns() const { return numVertices * vertexTerms; }
+  int mainColumns() const { return vertexColumns() + numFaces * faceTerms; }  // K_main of frame_evaluation.h
+  int columns() const { return mainColumns() + tailColumns; }
+  int vertexColumn(int i, int k) const { return k * numVertices + i; }
+  int faceColumn(int j, int k) const { return vertexColumns() + j * faceTerms + k; }
+  int tailColumn(int k) const { return mainColumns() + k; }
+
+  // Bytes of C for `points` rows in float or double.
+  std::size_t bytes(std::size_t points, bool floatStorage) const {
+    return points * static_cast<std::size_t>(columns()) * (floatStorage ? sizeof(float) : sizeof(double));
+  }
+};
+
+}  // namespace somicage

@@ -1,0 +1,90 @@
+#include "engine.h"
+
+#include <sstream>
+
+#include "cage_repair.h"
+#include "cage_validation.h"
+#include "errors.h"
+#include "mesh_placement.h"
+
+namespace somicage {
+
+std::string describeNotice(const Notice& notice) {
+  return std::string(notice.kind == Notice::Kind::Repair ? "note: " : "warning: ") +
+         (notice.source.empty() ? "" : notice.source + ": ") + notice.text;
+}
+
+Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices) {
+  CageRepair repair = repairCage(cage);
+  for (const std::string& fix : repair.fixes) notices({Notice::Kind::Repair, source, fix});
+  const CageReport report = validateCage(repair.cage);
+  for (const std::string& warning : describeCageWarnings(report)) notices({Notice::Kind::Warning, source, warning});
+  requireValidCage(report, source);
+  return std::move(repair.cage);
+}
+
+Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read) {
+  return prepareCage(cageFromMesh(loadAnyMesh(path, read), path), path, notices);
+}
+
+Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,
+                              const std::string& cageSource, const NoticeSink& notices) {
+  SOMICAGE_ASSERT(meshVertices.cols() >= cage.dim(), "a mesh has a coordinate per cage dimension");
+  Eigen::MatrixXd points = meshVertices.leftCols(cage.dim());
+  if (const auto warning = describeMeshPlacement(measureMeshPlacement(cage, points), meshSource, cageSource))
+    notices({Notice::Kind::Warning, "", *warning});
+  return points;
+}
+
+MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
+                                       const PrecomputeOptions& options, const std::string& source,
+                                       const std::string& hint, bool withGradients) {
+  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(), points,
+                                                     options.floatStorage, options.threads);
+  if (withGradients)
+    estimate.gradients =
+        estimateGradientBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(), points, options.floatStorage);
+  requireMemory(estimate, availableMemoryBytes(), source, hint);
+  return estimate;
+}
+
+std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
+                                         const PrecomputeOptions& options, const std::string& source,
+                                         const ProgressCallback& progress) {
+  requirePrecomputeMemory(method, restCage, static_cast<std::size_t>(points.rows()), options, source,
+                          memoryHint(!options.floatStorage));
+  return makeDeformer(method, restCage, points, options, progress);
+}
+
+void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source) {
+  requirePosedVertexCount(restCage, static_cast<long>(posed.rows()), source);
+  if (posed.cols() != restCage.dim())
+    throw InputError(source, -1,
+                     "the posed cage has " + std::to_string(posed.cols()) + " coordinates per vertex, the rest cage " +
+                         std::to_string(restCage.dim()),
+                     "give the posed vertices as #V rows of x, y" + std::string(restCage.dim() == 3 ? ", z" : ""));
+  for (Eigen::Index i = 0; i < posed.rows(); ++i)
+    if (!posed.row(i).allFinite())
+      throw InputError(source, -1, "posed vertex " + std::to_string(i) + " is not finite",
+                       "every coordinate of a pose must be a finite number");
+}
+
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
+                             const DeformParams& params, const std::string& posedSource,
+                             const std::string& meshSource) {
+  requirePosedVertices(restCage, posed, posedSource);
+  deformer.method()->validateParams(params);
+  Eigen::MatrixXd deformed = deformer.deform(posed, params);
+  Eigen::Index bad = 0, firstBad = -1;
+  for (Eigen::Index p = 0; p < deformed.rows(); ++p)
+    if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;
+  if (bad > 0)
+    throw InputError(meshSource, -1,
+                     std::to_string(bad) + " of " + std::to_string(deformed.rows()) +
+                         " points could not be deformed; the first is vertex " + std::to_string(firstBad),
+                     "nothing was written; this is a bug (every point gets a finite position, docs/engine.md): "
+                     "please report it with the input files");
+  return deformed;
+}
+
+}  // namespace somicage

@@ -1,0 +1,74 @@
+// The engine facade: the one sequence every front end (the command line, the editor, the Python module) runs.
+//   1. load + repair + validate + warn a cage (prepareCage / loadUsableCage): always in this order, here only;
+//   2. the points of a mesh for that cage, with the placement warning (meshPointsFor);
+//   3. precompute (precompute): the memory check, then the method's precompute (method.h), CPU or with an
+//      injected integrator (PrecomputeOptions::rowIntegrator), with progress and cancel;
+//   4. deform to positions (deformPoints), with the posed cage checked against the rest cage.
+// Plain Eigen in and out; every problem with an input is an InputError with the message the command line prints.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "cage.h"
+#include "deformer.h"
+#include "memory_estimate.h"
+#include "mesh_formats.h"
+#include "obj_io.h"
+#include "progress.h"
+
+namespace somicage {
+
+// Something a front end should tell the user while loading: a repair made, or a warning about the input.
+struct Notice {
+  enum class Kind { Repair, Warning };
+  Kind kind;
+  std::string source;  // the file (or name) it is about; empty when the text names its files itself
+  std::string text;    // one sentence: what was done or what is wrong, and what to do about it
+};
+using NoticeSink = std::function<void(const Notice&)>;
+// "note: SOURCE: TEXT" for a repair, "warning: SOURCE: TEXT" for a warning (no "SOURCE: " when it has none): the
+// command line prints it after "somicage: ", the Python module emits it as a SomiCageWarning.
+std::string describeNotice(const Notice& notice);
+inline void ignoreNotices(const Notice&) {}
+
+// Repairs the orientation (cage_repair.h), then validates the repaired cage (cage_validation.h): each repair is a
+// Repair notice and each warning a Warning notice, both sent before a refusal, so the user sees what was tried.
+// Throws InputError naming `source` when the repaired cage is still not valid.
+Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices);
+
+// The cage in a file of any readable format (mesh_formats.h: loadAnyMesh, cageFromMesh), then prepareCage.
+Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read = {});
+
+// The points a cage of dimension d deforms (#V by d: the mesh's x, y, z, or x, y for a 2D cage), with a Warning
+// notice (naming both sources in its text) when the mesh is far larger or smaller than the cage, or beside it
+// (mesh_placement.h).
+Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,
+                              const std::string& cageSource, const NoticeSink& notices);
+
+// The memory a precompute of `points` points will take (memory_estimate.h), with the deformation gradient's
+// (jacobian.h) when withGradients; throws InputError naming `source`, with `hint`, when it would not fit in the
+// free memory.
+MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
+                                       const PrecomputeOptions& options, const std::string& source,
+                                       const std::string& hint, bool withGradients = false);
+
+// requirePrecomputeMemory (with the usual hint), then the method's precompute of points (#P by d) in the rest
+// cage. Throws Cancelled when progress returns false.
+std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
+                                         const PrecomputeOptions& options, const std::string& source,
+                                         const ProgressCallback& progress = noProgress);
+
+// Throws InputError naming `source` when posed is not #V by d of the rest cage, or not finite.
+void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source);
+
+// The deformed points (#P by d) for a posed cage of restCage (#V by d): checks the pose (requirePosedVertices,
+// naming posedSource) and the parameters (the method's validateParams: InputError naming them), and the output:
+// InputError naming meshSource if a point could not be deformed (a bug, never silent: every point gets a finite
+// position).
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
+                             const DeformParams& params, const std::string& posedSource, const std::string& meshSource);
+
+}  // namespace somicage

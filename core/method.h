@@ -1,0 +1,89 @@
+// Deformation methods as descriptors, and the registry that lists them. Everything that differs between methods
+// (names, the layout of the coordinate matrix C, the precompute, the memory it takes) is in the method's
+// descriptor, one file in core/methods/ (docs/engine.md, "Adding a method"); callers ask the registry instead of
+// switching on a method.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cage.h"
+#include "coordinate_layout.h"
+#include "progress.h"
+
+namespace somicage {
+
+class CageDeformer;
+struct DeformParams;
+struct PrecomputeOptions;
+
+// The fields of DeformParams a method reads (MethodDescriptor::parameters, a bit set); it ignores the others.
+enum DeformParameter : unsigned {
+  kParamBlend = 1u << 0,         // blend (--variant, --blend)
+  kParamNu = 1u << 1,            // nu
+  kParamGamma = 1u << 2,         // gamma
+  kParamTractionFix = 1u << 3,   // tractionCorrection
+  kParamCorotational = 1u << 4,  // corotational
+};
+
+struct MethodDescriptor {
+  const char* name;         // the command line's --method, session files, Python: "somigliana"
+  const char* displayName;  // the editor's menus and labels: "Somigliana"
+  int listOrder;            // position in lists (help text, menus): ascending
+  unsigned parameters;      // the DeformParameter bits it reads
+  bool reproducesOutside;   // reproduces a still cage outside it too (no exterior rule needed)
+  // Throws InputError naming the parameter ("nu") when params are out of range for this method (at least
+  // validateDeformParams, deformer.h; a method may refuse more, e.g. nu = 0.5 for BEM).
+  void (*validateParams)(const DeformParams& params);
+
+  // The columns of C for a cage of dimension dim (coordinate_layout.h).
+  CoordinateLayout (*layout)(int dim, int numVertices, int numFaces);
+  // Bytes the precompute holds besides C at its peak (copies, per-thread buffers, diagnostics) for `points`
+  // points with `threads` OpenMP threads (> 0).
+  std::size_t (*workingBytes)(const CoordinateLayout& layout, int dim, std::size_t points, bool floatStorage,
+                              int threads);
+  // Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.
+  std::unique_ptr<CageDeformer> (*precompute)(const Cage& restCage, const Eigen::MatrixXd& points,
+                                              const PrecomputeOptions& options, const ProgressCallback& progress);
+};
+
+// A method: a handle on its descriptor in the registry (cheap to copy, ordered by listOrder).
+class Method {
+ public:
+  Method();                                                                 // the registry's first method (Somigliana)
+  Method(const MethodDescriptor& descriptor) : descriptor_(&descriptor) {}  // NOLINT: a descriptor is a method
+
+  const MethodDescriptor& descriptor() const { return *descriptor_; }
+  const MethodDescriptor* operator->() const { return descriptor_; }
+
+  friend bool operator==(Method a, Method b) { return a.descriptor_ == b.descriptor_; }
+  friend bool operator!=(Method a, Method b) { return a.descriptor_ != b.descriptor_; }
+  friend bool operator<(Method a, Method b) { return a->listOrder < b->listOrder; }
+
+ private:
+  const MethodDescriptor* descriptor_;
+};
+
+// Every registered method, by listOrder.
+const std::vector<Method>& allMethods();
+
+std::string methodName(Method method);  // descriptor().name: "somigliana", "green", "mvc"
+std::optional<Method> findMethod(const std::string& name);
+// Throws InputError("--method", ...) naming the known methods when there is none of that name.
+Method parseMethod(const std::string& name);
+// "somigliana, green or mvc": for help texts and hints.
+std::string methodNameList();
+
+// Whether the method reads that parameter (MethodDescriptor::parameters).
+bool readsParameter(Method method, DeformParameter parameter);
+// The names of the methods that read it, for help texts: "somigliana only", "somigliana and bem".
+std::string methodsReading(DeformParameter parameter);
+
+// The layout of C that `method` stores for a cage.
+CoordinateLayout coordinateLayout(Method method, const Cage& cage);
+
+}  // namespace somicage
