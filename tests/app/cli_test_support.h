@@ -50,6 +50,13 @@ inline std::string readFile(const fs::path& path) {
   return out.str();
 }
 
+// A tetrahedron inside the cube cage with one normal per vertex that is not the faces' (so carried and recomputed
+// normals differ).
+inline const char* const kTetWithNormals =
+    "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\n"
+    "vn 1 0.1 0.2\nvn 0.1 1 0\nvn 0 0.3 1\nvn -1 -1 -0.5\n"
+    "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\nf 3//3 4//4 1//1\n";
+
 // The `vn` lines of an OBJ file, in order.
 inline std::vector<Eigen::Vector3d> objNormals(const fs::path& path) {
   std::vector<Eigen::Vector3d> normals;

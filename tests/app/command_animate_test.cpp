@@ -326,9 +326,7 @@ TEST(BlenderImport, TexturedGlbKeepsColoursImageAndUvs) {
 TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
   ScratchDir dir;
   const std::string mesh = dir.file("tet.obj");
-  std::ofstream(mesh) << "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\n"
-                         "vn 1 0.1 0.2\nvn 0.1 1 0\nvn 0 0.3 1\nvn -1 -1 -0.5\n"
-                         "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\nf 3//3 4//4 1//1\n";
+  std::ofstream(mesh) << kTetWithNormals;
   const Eigen::MatrixXd rest = loadMesh(dataFile("cube_cage.obj")).vertices;
   Eigen::Matrix3d R;
   R << 0, -1, 0, 1, 0, 0, 0, 0, 1;

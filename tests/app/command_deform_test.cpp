@@ -236,9 +236,7 @@ TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
 TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
   ScratchDir dir;
   const std::string mesh = dir.file("tet.obj"), posed = dir.file("posed.obj"), out = dir.file("out.obj");
-  std::ofstream(mesh) << "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\n"
-                         "vn 1 0.1 0.2\nvn 0.1 1 0\nvn 0 0.3 1\nvn -1 -1 -0.5\n"
-                         "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\nf 3//3 4//4 1//1\n";
+  std::ofstream(mesh) << kTetWithNormals;
   Eigen::Matrix3d A;
   A << 1.2, 0.3, 0, -0.1, 0.9, 0.2, 0.1, 0, 1.4;
   PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));

@@ -76,9 +76,7 @@ TEST(CliMemory, AMalformedLimitIsABadInput) {
 TEST(CliMemory, NormalsAreRecomputedWhenTheGradientsDoNotFit) {
   ScratchDir dir;
   const std::string mesh = dir.file("tet.obj");
-  std::ofstream(mesh) << "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\nvn 1 0.1 0.2\nvn 0.1 1 0\n"
-                         "vn 0 0.3 1\nvn -1 -1 -0.5\nf 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\n"
-                         "f 3//3 4//4 1//1\n";
+  std::ofstream(mesh) << kTetWithNormals;
   MemoryEstimate without = estimatePrecomputeMemory(methods::somigliana(), 3, 8, 12, 4, false, 1);
   MemoryEstimate with = without;
   with.gradients = estimateGradientBytes(methods::somigliana(), 3, 8, 12, 4, false);
