@@ -8,17 +8,13 @@
 
 #include "errors.h"
 #include "gltf_writer.h"
+#include "normal_transform.h"
 
 namespace somicage {
 
 namespace {
 
 namespace fs = std::filesystem;
-
-bool endsWithGlb(std::string path) {
-  for (char& c : path) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return path.size() > 4 && path.compare(path.size() - 4, 4, ".glb") == 0;
-}
 
 void step(const ProgressCallback& progress, double fraction) {
   if (!progress(fraction)) throw Cancelled();
@@ -36,7 +32,8 @@ struct TemporaryFolder {
 
 std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocument& document,
                                           const std::vector<Eigen::MatrixXd>& frames, int first,
-                                          const ProgressCallback& progress) {
+                                          const ProgressCallback& progress,
+                                          const std::vector<Eigen::MatrixXd>& normals) {
   std::error_code error;
   fs::path target = fs::path(out);
   if (target.filename().empty()) target = target.parent_path();  // "DIR/"
@@ -58,7 +55,8 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
   for (size_t k = 0; k < frames.size(); ++k) {
     char number[16];
     std::snprintf(number, sizeof number, "_%04d.obj", first + static_cast<int>(k));
-    writeObjDocument((temporary.path / (stem + number)).string(), document, frames[k]);
+    writeObjDocument((temporary.path / (stem + number)).string(), document, frames[k],
+                     normals.empty() ? Eigen::MatrixXd() : normals[k]);
     step(progress, static_cast<double>(k + 1) / static_cast<double>(frames.size()));
   }
   if (fs::exists(target, error)) fs::remove(target, error);  // empty, checked above
@@ -71,6 +69,11 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
 }
 
 }  // namespace
+
+bool writesGlb(std::string out) {
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out.size() > 4 && out.compare(out.size() - 4, 4, ".glb") == 0;
+}
 
 std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
                                                   const Timeline& timeline, const PoseLibrary& poses,
@@ -95,15 +98,31 @@ std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, 
   return frames;
 }
 
+std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& gradients, const Cage& cage,
+                                                   const Timeline& timeline, const PoseLibrary& poses,
+                                                   const DeformParams& base, const MeshDocument& document,
+                                                   const std::vector<Eigen::MatrixXd>& frames, int first,
+                                                   const ProgressCallback& progress) {
+  std::vector<Eigen::MatrixXd> normals;
+  for (size_t k = 0; k < frames.size(); ++k) {
+    const FrameState state =
+        evaluateTimeline(timeline, poses, first + static_cast<int>(k), base, cage.numVertices(), cage.dim());
+    normals.push_back(transformNormals(document, frames[k], gradients, state.cage, state.params).normals);
+    step(progress, static_cast<double>(k + 1) / static_cast<double>(frames.size()));
+  }
+  return normals;
+}
+
 std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
-                                        const ProgressCallback& progress) {
-  if (endsWithGlb(out)) {
+                                        const ProgressCallback& progress, const std::vector<Eigen::MatrixXd>& normals) {
+  if (writesGlb(out)) {
+    step(progress, 0.0);  // the last chance to stop: once the file is in place, it stays
     std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps);
-    step(progress, 1.0);
+    progress(1.0);
     return notes;
   }
-  return writeObjSequence(out, document, frames, first, progress);
+  return writeObjSequence(out, document, frames, first, progress, normals);
 }
 
 }  // namespace somicage

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "deformer.h"
+#include "jacobian.h"
 #include "mesh_document.h"
 #include "pose_timeline.h"
 #include "progress.h"
@@ -24,11 +25,24 @@ std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, 
                                                   int dim, int first, int last,
                                                   const ProgressCallback& progress = noProgress);
 
+// The document's `vn` normals at each of frames (frame k is timeline frame first + k, 3 columns), carried by the
+// deformation's gradient (normal_transform.h; gradients made for the mesh's vertices). progress as above.
+std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& gradients, const Cage& cage,
+                                                   const Timeline& timeline, const PoseLibrary& poses,
+                                                   const DeformParams& base, const MeshDocument& document,
+                                                   const std::vector<Eigen::MatrixXd>& frames, int first,
+                                                   const ProgressCallback& progress = noProgress);
+
+// Whether writeAnimation writes out as one GLB (a path ending in .glb, any case) rather than an OBJ sequence.
+bool writesGlb(std::string out);
+
 // Writes frames (frame k is timeline frame first + k) to out: a path ending in .glb gives one GLB at fps,
 // anything else is a folder for the OBJ sequence (it must not exist, or be empty). Returns the notes of what the
-// format could not carry. progress as above (for the writing).
+// format could not carry. normals: per frame, the OBJ sequence's `vn` (empty: recomputed per frame; GLB carries
+// none). progress as above (for the writing).
 std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
-                                        const ProgressCallback& progress = noProgress);
+                                        const ProgressCallback& progress = noProgress,
+                                        const std::vector<Eigen::MatrixXd>& normals = {});
 
 }  // namespace somicage

@@ -11,6 +11,7 @@
 
 #include "errors.h"
 #include "file_util.h"
+#include "mesh_material.h"
 
 namespace somicage {
 
@@ -72,8 +73,8 @@ class BufferBuilder {
  public:
   explicit BufferBuilder(tinygltf::Model& model) : model_(model) { model_.buffers.emplace_back(); }
 
-  int add(const void* data, size_t bytes, int componentType, int type, size_t count, int target,
-          std::vector<double> min = {}, std::vector<double> max = {}) {
+  // A buffer view of the bytes (images are read through one; attributes through an accessor on it).
+  int addView(const void* data, size_t bytes, int target) {
     std::vector<unsigned char>& buffer = model_.buffers[0].data;
     while (buffer.size() % 4 != 0) buffer.push_back(0);
     tinygltf::BufferView view;
@@ -84,8 +85,13 @@ class BufferBuilder {
     buffer.insert(buffer.end(), static_cast<const unsigned char*>(data),
                   static_cast<const unsigned char*>(data) + bytes);
     model_.bufferViews.push_back(view);
+    return static_cast<int>(model_.bufferViews.size()) - 1;
+  }
+
+  int add(const void* data, size_t bytes, int componentType, int type, size_t count, int target,
+          std::vector<double> min = {}, std::vector<double> max = {}) {
     tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model_.bufferViews.size()) - 1;
+    accessor.bufferView = addView(data, bytes, target);
     accessor.componentType = componentType;
     accessor.type = type;
     accessor.count = count;
@@ -122,6 +128,95 @@ std::vector<float> positionsOf(const GltfLayout& layout, const Eigen::MatrixXd& 
     }
   }
   return xyz;
+}
+
+const MeshMaterial& materialNamed(const DocumentMaterials& materials, const std::string& name) {
+  for (const MeshMaterial& material : materials.materials) {
+    if (material.name == name) return material;
+  }
+  static const MeshMaterial kWhite;
+  return kWhite;  // documentMaterials lists every face's material: only a mesh without faces gets here
+}
+
+// The images of the materials' textures, each file (or embedded image) stored once in the buffer. A texture that
+// cannot be carried is named in the notes and left out; its material keeps its colour.
+class TextureBuilder {
+ public:
+  TextureBuilder(tinygltf::Model& model, BufferBuilder& buffer, bool haveUVs, std::vector<std::string>& notes)
+      : model_(model), buffer_(buffer), haveUVs_(haveUVs), notes_(notes) {}
+
+  // The glTF texture of a material, or -1 when it has none or it cannot be written.
+  int textureOf(const MeshMaterial& material) {
+    if (material.texturePath.empty() && material.textureBytes.empty()) return -1;
+    const std::string key = material.textureBytes.empty() ? material.texturePath : "embedded:" + material.name;
+    const auto known = textures_.find(key);
+    if (known != textures_.end()) return known->second;
+    const int texture = addTexture(material);
+    textures_[key] = texture;
+    return texture;
+  }
+
+ private:
+  int addTexture(const MeshMaterial& material) {
+    const std::string what =
+        material.textureBytes.empty() ? "the texture " + material.texturePath : "the embedded texture";
+    const std::string of = " of material '" + material.name + "'";
+    if (!haveUVs_) {
+      notes_.push_back(what + of + " is not written: the mesh has no UVs on every face");
+      return -1;
+    }
+    std::string bytes = material.textureBytes;
+    if (bytes.empty()) {
+      std::error_code error;
+      if (!std::filesystem::is_regular_file(material.texturePath, error)) {
+        notes_.push_back(what + of + " was not found: the material is written without it (put the file there)");
+        return -1;
+      }
+      bytes = readTextFile(material.texturePath);
+    }
+    const std::string mime = imageMimeType(bytes);
+    if (mime.empty()) {
+      notes_.push_back(what + of + " is neither PNG nor JPEG (the formats glTF carries): written without it");
+      return -1;
+    }
+    tinygltf::Image image;
+    image.name =
+        material.textureBytes.empty() ? std::filesystem::path(material.texturePath).stem().string() : material.name;
+    image.mimeType = mime;
+    image.bufferView = buffer_.addView(bytes.data(), bytes.size(), 0);
+    model_.images.push_back(image);
+    if (model_.samplers.empty()) {
+      tinygltf::Sampler sampler;  // repeat, as OBJ viewers tile UVs outside [0, 1]
+      sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+      sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+      model_.samplers.push_back(sampler);
+    }
+    tinygltf::Texture texture;
+    texture.source = static_cast<int>(model_.images.size()) - 1;
+    texture.sampler = 0;
+    model_.textures.push_back(texture);
+    return static_cast<int>(model_.textures.size()) - 1;
+  }
+
+  tinygltf::Model& model_;
+  BufferBuilder& buffer_;
+  bool haveUVs_;
+  std::vector<std::string>& notes_;
+  std::map<std::string, int> textures_;
+};
+
+// A diffuse OBJ-style material as glTF PBR: the colour (and opacity) as the base colour, not metallic, fully rough.
+tinygltf::Material gltfMaterial(const MeshMaterial& source, TextureBuilder& textures) {
+  tinygltf::Material material;
+  material.name = source.name.empty() ? "default" : source.name;
+  material.doubleSided = true;
+  tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
+  pbr.baseColorFactor = {source.baseColor[0], source.baseColor[1], source.baseColor[2], source.baseColor[3]};
+  pbr.metallicFactor = 0.0;
+  pbr.roughnessFactor = 1.0;
+  pbr.baseColorTexture.index = textures.textureOf(source);
+  if (source.baseColor[3] < 1.0) material.alphaMode = "BLEND";
+  return material;
 }
 
 }  // namespace
@@ -163,13 +258,14 @@ std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDo
     targetNames.emplace_back("frame_" + std::to_string(k));
   }
 
+  std::vector<std::string> notes;
+  const DocumentMaterials materials = documentMaterials(document);
+  notes.insert(notes.end(), materials.notes.begin(), materials.notes.end());
+  TextureBuilder textures(model, buffer, texcoord >= 0, notes);
   tinygltf::Mesh mesh;
   mesh.name = document.sourcePath.empty() ? "mesh" : std::filesystem::path(document.sourcePath).stem().string();
   for (size_t m = 0; m < layout.materials.size(); ++m) {
-    tinygltf::Material material;
-    material.name = layout.materials[m].empty() ? "default" : layout.materials[m];
-    material.doubleSided = true;
-    model.materials.push_back(material);
+    model.materials.push_back(gltfMaterial(materialNamed(materials, layout.materials[m]), textures));
     tinygltf::Primitive primitive;
     primitive.mode = TINYGLTF_MODE_TRIANGLES;
     primitive.material = static_cast<int>(m);
@@ -228,7 +324,6 @@ std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDo
     throw InputError(path, -1, "tinygltf could not encode the scene", "nothing was written; please report this");
   }
   writeFileAtomic(path, bytes.str());
-  std::vector<std::string> notes;
   if (!document.geometry.lines.empty()) notes.push_back("GLB is written without the `l` polylines (write .obj)");
   if (document.uvs.rows() > 0 && layout.uv.empty())
     notes.push_back("GLB is written without UVs: some faces have none (write .obj to keep them)");

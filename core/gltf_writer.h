@@ -2,10 +2,12 @@
 // frame, which Blender imports as shape keys driven by the action and other viewers play as they are.
 //
 // The mesh is triangulated (each polygon cut as triangulatePolygons cuts it at rest, so every frame has the same
-// triangles), one primitive per `usemtl` material (named; the .mtl's colours and textures are not translated),
-// positions as 32-bit floats (glTF has no doubles). When every face has UVs, each distinct (vertex, `vt`) pair of
-// the faces is one glTF vertex, in order of first appearance, with TEXCOORD_0 (v flipped: glTF's origin is at the
-// top); otherwise glTF vertex i is mesh vertex i. `l` polylines are not written (named in the notes).
+// triangles), one primitive per `usemtl` material in order of first use (mesh_material.h: the .mtl's or the source
+// file's colour and opacity as a glTF PBR base colour, not metallic, fully rough; its base-colour texture as an image
+// embedded in the GLB's buffer, PNG or JPEG, when the faces have UVs; a texture file that is missing is named in the
+// notes and left out), positions as 32-bit floats (glTF has no doubles). When every face has UVs, each distinct
+// (vertex, `vt`) pair of the faces is one glTF vertex, in order of first appearance, with TEXCOORD_0 (v flipped: glTF's
+// origin is at the top); otherwise glTF vertex i is mesh vertex i. `l` polylines are not written (named in the notes).
 #pragma once
 
 #include <Eigen/Core>

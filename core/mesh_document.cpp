@@ -164,7 +164,8 @@ Eigen::MatrixXd recomputeNormals(const MeshDocument& document, const Eigen::Matr
   return normals;
 }
 
-void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions) {
+void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions,
+                      const Eigen::MatrixXd& givenNormals) {
   if (document.records.empty()) {
     saveObj(path, positions, document.geometry);
     return;
@@ -181,7 +182,9 @@ void writeObjDocument(const std::string& path, const MeshDocument& document, con
                        "nothing was written: the points that could not be computed lie on the cage or far outside");
     }
   }
-  const Eigen::MatrixXd normals = recomputeNormals(document, positions);
+  SOMICAGE_ASSERT(givenNormals.size() == 0 || givenNormals.rows() == document.normalCount,
+                  "writeObjDocument takes one normal per `vn` record");
+  const Eigen::MatrixXd normals = givenNormals.size() ? givenNormals : recomputeNormals(document, positions);
   std::string out;
   out.reserve(static_cast<size_t>(positions.rows()) * 64 + document.records.size() * 32);
   for (const ObjRecord& record : document.records) {

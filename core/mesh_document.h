@@ -5,14 +5,15 @@
 // (OBJ: parseObj, the one OBJ parser; other formats: mesh_formats.h). An OBJ document also keeps every record of
 // the file in order, collected in parseObj's one pass (ObjLineVisitor): `vt`, `g`, `o`, `usemtl`, `mtllib`, `s`, `f`
 // and `l` lines (face index triples included) and comments are written back verbatim; `v` lines get the new positions
-// (any extra tokens, e.g. vertex colours, kept); `vn` lines get normals recomputed for the new positions (see
-// recomputeNormals).
+// (any extra tokens, e.g. vertex colours, kept); `vn` lines get the deformed normals: transformed by the deformation's
+// gradient (normal_transform.h) or recomputed for the new positions (recomputeNormals).
 #pragma once
 
 #include <Eigen/Core>
 #include <string>
 #include <vector>
 
+#include "mesh_material.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -37,6 +38,8 @@ struct MeshDocument {
   std::vector<std::vector<int>> faceUVs;
   Eigen::MatrixXd uvs;                    // #vt by 2
   std::vector<std::string> faceMaterial;  // per face: the `usemtl` name in effect ("" = none)
+  // Materials the file itself defines (assimp formats); OBJ's come from its .mtl libraries (documentMaterials).
+  std::vector<MeshMaterial> materials;
 };
 
 // Parses OBJ text into a document (geometry through parseObj). source names it in errors and resolves mtllib.
@@ -51,7 +54,9 @@ Eigen::MatrixXd recomputeNormals(const MeshDocument& document, const Eigen::Matr
 // Writes the document as OBJ with the given positions (#V by 2 or 3; 2 columns: z = 0), %.17g, a final newline,
 // atomically. `mtllib` lines whose file lies next to the source are rewritten as a path relative to the output's
 // folder when the output goes elsewhere, so the materials (and the textures they name) still resolve.
+// normals: one per `vn` record (normalCount by 3, e.g. transformNormals); empty: recomputeNormals of positions.
 // A document without records is written as saveObj does.
-void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions);
+void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions,
+                      const Eigen::MatrixXd& normals = Eigen::MatrixXd());
 
 }  // namespace somicage

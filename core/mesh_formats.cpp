@@ -1,5 +1,6 @@
 #include "mesh_formats.h"
 
+#include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
@@ -77,6 +78,36 @@ void addObjRecords(MeshDocument& document, bool hasUVs, bool hasNormals) {
   }
 }
 
+// A material as assimp gives it: glTF's base colour or the diffuse colour, the opacity, and the base-colour (or
+// diffuse) texture, an image embedded in the file ("*0" or its name) as its bytes.
+MeshMaterial materialOf(const aiScene& scene, const aiMaterial& source, const std::string& path) {
+  MeshMaterial material;
+  material.name = source.GetName().C_Str();
+  aiColor4D colour;
+  if (source.Get(AI_MATKEY_BASE_COLOR, colour) == AI_SUCCESS ||
+      source.Get(AI_MATKEY_COLOR_DIFFUSE, colour) == AI_SUCCESS) {
+    material.baseColor = Eigen::Vector4d(colour.r, colour.g, colour.b, colour.a);
+  }
+  float opacity = 1.0f;
+  if (source.Get(AI_MATKEY_OPACITY, opacity) == AI_SUCCESS && opacity < 1.0f) material.baseColor[3] = opacity;
+  material.baseColor = material.baseColor.cwiseMax(0.0).cwiseMin(1.0);
+  aiString texture;
+  if (source.GetTexture(aiTextureType_BASE_COLOR, 0, &texture) != AI_SUCCESS &&
+      source.GetTexture(aiTextureType_DIFFUSE, 0, &texture) != AI_SUCCESS) {
+    return material;
+  }
+  if (const aiTexture* embedded = scene.GetEmbeddedTexture(texture.C_Str())) {
+    if (embedded->mHeight == 0)  // compressed: the file's own PNG / JPEG bytes
+      material.textureBytes.assign(reinterpret_cast<const char*>(embedded->pcData), embedded->mWidth);
+    return material;
+  }
+  std::string name = texture.C_Str();
+  std::replace(name.begin(), name.end(), '\\', '/');
+  const std::filesystem::path file(name);
+  material.texturePath = file.is_absolute() ? name : (std::filesystem::path(path).parent_path() / file).string();
+  return material;
+}
+
 MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options) {
   if (!std::filesystem::is_regular_file(path)) {
     throw InputError(path, -1, "cannot open the file", "check the path and the file name");
@@ -105,8 +136,14 @@ MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options)
     aiMatrix3x3 normalTransform(transform);
     normalTransform.Inverse().Transpose();
     const int offset = static_cast<int>(positions.size());
-    const std::string material =
-        mesh.mMaterialIndex < scene->mNumMaterials ? scene->mMaterials[mesh.mMaterialIndex]->GetName().C_Str() : "";
+    std::string material;
+    if (mesh.mMaterialIndex < scene->mNumMaterials) {
+      const MeshMaterial found = materialOf(*scene, *scene->mMaterials[mesh.mMaterialIndex], path);
+      material = found.name;
+      const bool known = std::any_of(document.materials.begin(), document.materials.end(),
+                                     [&](const MeshMaterial& m) { return m.name == found.name; });
+      if (!known) document.materials.push_back(found);
+    }
     for (unsigned i = 0; i < mesh.mNumVertices; ++i) {
       const aiVector3D p = transform * mesh.mVertices[i];
       positions.emplace_back(p.x, p.y, p.z);
@@ -158,15 +195,15 @@ MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options)
 // ---- Writing ----
 
 std::vector<std::string> writeObj(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
-  writeObjDocument(path, document, positions);
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd& normals) {
+  writeObjDocument(path, document, positions, normals);
   return {};
 }
 
 void appendBytes(std::string& out, const void* data, size_t size) { out.append(static_cast<const char*>(data), size); }
 
 std::vector<std::string> writePly(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd&) {
   const std::vector<std::vector<int>>& faces = document.geometry.faces;
   for (const std::vector<int>& face : faces) {
     if (face.size() > 255) {
@@ -207,7 +244,7 @@ std::vector<std::string> writePly(const std::string& path, const MeshDocument& d
 }
 
 std::vector<std::string> writeGlb(const std::string& path, const MeshDocument& document,
-                                  const Eigen::MatrixXd& positions) {
+                                  const Eigen::MatrixXd& positions, const Eigen::MatrixXd&) {
   return writeGlbAnimation(path, document, {positions}, 24.0);
 }
 
@@ -215,7 +252,9 @@ std::vector<std::string> writeGlb(const std::string& path, const MeshDocument& d
 struct FormatDescriptor {
   const char* extension;
   MeshDocument (*read)(const std::string&, const ReadOptions&);
-  std::vector<std::string> (*write)(const std::string&, const MeshDocument&, const Eigen::MatrixXd&);
+  // path, document, positions, normals (one per `vn`; empty: recomputed; only OBJ carries them)
+  std::vector<std::string> (*write)(const std::string&, const MeshDocument&, const Eigen::MatrixXd&,
+                                    const Eigen::MatrixXd&);
 };
 
 const std::vector<FormatDescriptor>& formats() {
@@ -263,13 +302,13 @@ PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options) {
 }
 
 std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,
-                                           const Eigen::MatrixXd& positions) {
+                                           const Eigen::MatrixXd& positions, const Eigen::MatrixXd& normals) {
   const FormatDescriptor* format = findFormat(path);
   if (!format || !format->write) {
     throw InputError(path, -1, "cannot write meshes as '." + extensionOf(path) + "'",
                      "give an output file ending in one of " + writableExtensions());
   }
-  return format->write(path, document, positions);
+  return format->write(path, document, positions, normals);
 }
 
 PolygonMesh weldVertices(const PolygonMesh& mesh) {

@@ -9,8 +9,8 @@
 // at exactly equal positions (in order of first appearance), which a cage read from STL needs.
 //
 // Written: .obj (writeObjDocument: lossless), .ply (binary, double positions and the polygons; nothing else)
-// and .glb (gltf_writer.h: triangles, UVs, materials by name). What a format cannot carry is named in the
-// returned notes, never dropped silently.
+// and .glb (gltf_writer.h: triangles, UVs, materials with their colours and textures). What a format cannot carry is
+// named in the returned notes, never dropped silently.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,9 +32,11 @@ MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& option
 PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options = {});
 
 // Writes document with the given positions (#V by 2 or 3) in the format of path's extension, atomically.
-// Returns one sentence per kind of data the format could not carry (empty: nothing was lost).
+// normals: the deformed `vn` normals (writeObjDocument; empty: recomputed). Returns one sentence per kind of data the
+// format could not carry (empty: nothing was lost).
 std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,
-                                           const Eigen::MatrixXd& positions);
+                                           const Eigen::MatrixXd& positions,
+                                           const Eigen::MatrixXd& normals = Eigen::MatrixXd());
 
 // "obj, ply, ..." for help texts.
 std::string readableExtensions();

@@ -27,6 +27,8 @@ ArgParser animateOptions() {
                        {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
                        {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
                        {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
+                       {"--recompute-normals", "",
+                        "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
                        {"--threads", "N", "OpenMP threads (default: all cores)"},
                    });
 }
@@ -102,7 +104,13 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
-  requirePrecomputeMemory(kCommand, session.method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
+  // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
+  const std::size_t count = static_cast<std::size_t>(points.rows());
+  bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath);
+  if (normalsByGradient)
+    normalsByGradient = requirePrecomputeMemoryForNormals(kCommand, session.method, cage, count, options, meshPath);
+  else
+    requirePrecomputeMemory(kCommand, session.method, cage, count, options, meshPath);
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(session.method) + " coordinates");
@@ -114,9 +122,20 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
     frames = deformTimelineFrames(*deformer, cage, session.timeline, session.poses, session.params,
                                   document.geometry.vertices, cage.dim(), first, last, progress.callback());
   }
+  std::vector<Eigen::MatrixXd> normals;  // empty: recomputed per frame
+  if (normalsByGradient) {
+    std::unique_ptr<DeformationGradients> gradients;
+    {
+      ProgressReporter progress("integrating the gradients for the normals");
+      gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
+    }
+    ProgressReporter progress("carrying the normals");
+    normals = deformTimelineNormals(*gradients, cage, session.timeline, session.poses, session.params, document, frames,
+                                    first, progress.callback());
+  }
   {
     ProgressReporter progress("writing " + outPath);
-    for (const std::string& note : writeAnimation(outPath, document, frames, first, fps, progress.callback()))
+    for (const std::string& note : writeAnimation(outPath, document, frames, first, fps, progress.callback(), normals))
       std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
   }
   std::cerr << kCommand << ": " << frames.size() << " frames (" << first << ".." << last << ") of " << meshPath

@@ -1,6 +1,6 @@
 // somicage deform: the batch form of what the editor does on every frame, through the same engine facade
 // (engine.h: loadUsableCage, meshPointsFor, precompute, deformPoints), then writeMeshDocument: everything of the
-// mesh but its positions is written back as it came, with normals recomputed.
+// mesh but its positions is written back as it came, with normals carried by the gradient J or recomputed.
 #include <iostream>
 #include <sstream>
 
@@ -12,6 +12,7 @@
 #include "engine.h"
 #include "errors.h"
 #include "mesh_formats.h"
+#include "normal_transform.h"
 
 namespace somicage {
 
@@ -29,6 +30,8 @@ ArgParser deformOptions() {
               {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
               {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
               {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
+              {"--recompute-normals", "",
+               "recompute IN's normals from the deformed faces instead of carrying them by the gradient J"},
           },
           {
               {"--threads", "N", "OpenMP threads (default: all cores)"},
@@ -42,7 +45,8 @@ std::string deformUsage() {
   out << "usage: " << kCommand << " --cage REST --posed POSED --mesh IN --out OUT [OPTIONS]\n\n"
       << "Deforms the vertices of IN with the cage moved from REST to POSED and writes OUT with IN's vertex order\n"
       << "(coordinates with 17 significant digits). An OBJ OUT of an OBJ IN keeps every line of IN but the\n"
-      << "positions (UVs, groups, materials, smoothing groups, faces as written) and recomputes its normals.\n"
+      << "positions (UVs, groups, materials, smoothing groups, faces as written); its normals are carried by the\n"
+      << "deformation's gradient J (n' = J^-T n, normalised), or recomputed with --recompute-normals.\n"
       << "The cage is 2D when every z is 0. Reads " << readableExtensions() << "; writes " << writableExtensions()
       << ".\n\n"
       << "options:\n"
@@ -80,7 +84,13 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
-  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
+  // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
+  const std::size_t count = static_cast<std::size_t>(points.rows());
+  bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals");
+  if (normalsByGradient)
+    normalsByGradient = requirePrecomputeMemoryForNormals(kCommand, method, cage, count, options, meshPath);
+  else
+    requirePrecomputeMemory(kCommand, method, cage, count, options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {
@@ -100,7 +110,18 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z
   result.leftCols(cage.dim()) = deformed;
-  for (const std::string& note : writeMeshDocument(outPath, document, result))
+  Eigen::MatrixXd normals;  // empty: recomputed by the writer
+  if (normalsByGradient) {
+    ProgressReporter progress("integrating the gradients for the normals");
+    const DeformationGradients gradients(*deformer, points, progress.callback());
+    const TransformedNormals transformed = transformNormals(document, result, gradients, posed, params);
+    normals = transformed.normals;
+    if (transformed.recomputed > 0)
+      std::cerr << kCommand << ": note: " << transformed.recomputed << " of " << document.normalCount
+                << " normals were recomputed from the deformed faces: their vertices lie outside the cage (or on "
+                << "it), where the deformation has no gradient\n";
+  }
+  for (const std::string& note : writeMeshDocument(outPath, document, result, normals))
     std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
 
   std::ostringstream summary;

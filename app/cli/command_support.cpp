@@ -116,4 +116,17 @@ void requirePrecomputeMemory(const std::string& command, Method method, const Ca
               << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
 }
 
+bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                                       const PrecomputeOptions& options, const std::string& meshPath) {
+  try {
+    requirePrecomputeMemory(command, method, cage, points, options, meshPath, true);
+    return true;
+  } catch (const InputError&) {
+    requirePrecomputeMemory(command, method, cage, points, options, meshPath, false);
+    std::cerr << command << ": note: " << meshPath << ": the normals are recomputed from the deformed faces: "
+              << "carrying them by the deformation's gradient would not fit in the free memory\n";
+    return false;
+  }
+}
+
 }  // namespace somicage

@@ -51,4 +51,10 @@ void printNotice(const Notice& notice);
 void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
                              const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
 
+// requirePrecomputeMemory for a run that would also like the gradients (normals carried by J, normal_transform.h):
+// returns true when they fit as well; when only the coordinates fit, says on stderr that the normals will be
+// recomputed and returns false. Throws as requirePrecomputeMemory when not even the coordinates fit.
+bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                                       const PrecomputeOptions& options, const std::string& meshPath);
+
 }  // namespace somicage

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <system_error>
 
-#include "animation_export.h"
 #include "app_state.h"
 #include "errors.h"
+#include "export_jobs.h"
 #include "gl_context.h"
 #include "screenshot.h"
 
@@ -30,22 +30,14 @@ void finish(AppState& state, const std::string& message) {
   state.statusMessage = message;
 }
 
-void writeFinishedExport(AppState& state) {
-  AnimationExportJob& job = *state.animation.exportJob;
-  if (job.kind == AnimationExportJob::Kind::PngSequence) {
-    fs::path target(job.out);
-    if (target.filename().empty()) target = target.parent_path();
-    std::error_code error;
-    if (fs::exists(target, error)) fs::remove(target, error);  // empty: checked at the start
-    fs::rename(job.pngFolder, target, error);
-    if (error)
-      throw InputError(job.out, -1, "cannot move the images into place: " + error.message(), "check the permissions");
-    job.pngFolder.clear();
-    return;
-  }
-  for (const std::string& note :
-       writeAnimation(job.out, *state.scene->document, job.frames, job.first, state.animation.timeline.fps))
-    state.errors.push_back("export: " + note);
+void moveImagesIntoPlace(const AnimationExportJob& job) {
+  fs::path target(job.out);
+  if (target.filename().empty()) target = target.parent_path();
+  std::error_code error;
+  if (fs::exists(target, error)) fs::remove(target, error);  // empty: checked at the start
+  fs::rename(job.pngFolder, target, error);
+  if (error)
+    throw InputError(job.out, -1, "cannot move the images into place: " + error.message(), "check the permissions");
 }
 
 }  // namespace
@@ -60,30 +52,37 @@ void startAnimationExport(AppState& state, AnimationExportJob::Kind kind, const 
     state.errors.push_back("Export animation: the timeline has no keys (Timeline panel: Key pose)");
     return;
   }
+  if (kind != AnimationExportJob::Kind::PngSequence) {
+    if (ExportWorker::Job job = makeAnimationExportJob(state, kind, out)) {
+      state.exporter.start(out,
+                           "exported the animation (" + std::to_string(timeline.lastFrame - timeline.firstFrame + 1) +
+                               " frames) to " + out,
+                           std::move(job));
+      state.statusMessage = "exporting the animation to " + out;
+    }
+    return;
+  }
   AnimationExportJob job;
-  job.kind = kind;
   job.out = out;
   job.first = job.next = timeline.firstFrame;
   job.last = timeline.lastFrame;
   job.savedPose = state.pose;
   job.savedParams = state.params;
   job.savedFrame = state.animation.frame;
-  if (kind == AnimationExportJob::Kind::PngSequence) {
-    fs::path target(out);
-    if (target.filename().empty()) target = target.parent_path();
-    std::error_code error;
-    if (fs::exists(target, error) && (!fs::is_directory(target, error) || !fs::is_empty(target, error))) {
-      state.errors.push_back(out + ": exists and is not an empty folder; give a new folder for the images");
-      return;
-    }
-    const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-    std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
-    if (!::mkdtemp(pattern.data())) {
-      state.errors.push_back(out + ": cannot create a folder next to it");
-      return;
-    }
-    job.pngFolder = pattern;
+  fs::path target(out);
+  if (target.filename().empty()) target = target.parent_path();
+  std::error_code error;
+  if (fs::exists(target, error) && (!fs::is_directory(target, error) || !fs::is_empty(target, error))) {
+    state.errors.push_back(out + ": exists and is not an empty folder; give a new folder for the images");
+    return;
   }
+  const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+  std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
+  if (!::mkdtemp(pattern.data())) {
+    state.errors.push_back(out + ": cannot create a folder next to it");
+    return;
+  }
+  job.pngFolder = pattern;
   stopPlayback(state);
   state.animation.exportJob = std::move(job);
 }
@@ -102,20 +101,13 @@ void captureExportFrame(AppState& state, int framebufferWidth, int framebufferHe
   if (!state.animation.exportJob) return;
   AnimationExportJob& job = *state.animation.exportJob;
   try {
-    if (job.kind == AnimationExportJob::Kind::PngSequence) {
-      char name[32];
-      std::snprintf(name, sizeof name, "frame_%04d.png", job.next);
-      writePng((fs::path(job.pngFolder) / name).string(), framebufferWidth, framebufferHeight,
-               render::readPixelsRgba(framebufferWidth, framebufferHeight));
-    } else {
-      ensureCpuPoints(state, state.method);
-      Eigen::MatrixXd positions = state.scene->document->geometry.vertices;  // a 2D scene keeps z
-      const Eigen::MatrixXd& points = displayedPoints(state, state.method);
-      positions.leftCols(points.cols()) = points;
-      job.frames.push_back(std::move(positions));
-    }
+    char name[32];
+    std::snprintf(name, sizeof name, "frame_%04d.png", job.next);
+    writePng((fs::path(job.pngFolder) / name).string(), framebufferWidth, framebufferHeight,
+             render::readPixelsRgba(framebufferWidth, framebufferHeight));
     if (++job.next <= job.last) return;
-    writeFinishedExport(state);
+    moveImagesIntoPlace(job);
+    job.pngFolder.clear();
     finish(state, "exported the animation (" + std::to_string(job.last - job.first + 1) + " frames) to " + job.out);
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());

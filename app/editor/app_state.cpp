@@ -468,31 +468,6 @@ bool loadPosedCage(AppState& state, const std::string& path) {
   }
 }
 
-bool exportDeformedMesh(AppState& state, const std::string& path) {
-  if (!state.scene) return false;
-  ensureCpuPoints(state, state.method);
-  try {
-    const Eigen::MatrixXd& points = displayedPoints(state, state.method);
-    if (state.scene->document) {  // a file: everything of it but the positions is kept (core/mesh_formats.h)
-      Eigen::MatrixXd positions = state.scene->document->geometry.vertices;  // a 2D scene keeps z
-      positions.leftCols(points.cols()) = points;
-      for (const std::string& note : writeMeshDocument(path, *state.scene->document, positions))
-        state.errors.push_back("export: " + note);
-    } else {
-      PolygonMesh topology;
-      const Eigen::MatrixXi& f = state.scene->meshTriangles;
-      topology.faces.reserve(static_cast<std::size_t>(f.rows()));
-      for (Eigen::Index i = 0; i < f.rows(); ++i) topology.faces.push_back({f(i, 0), f(i, 1), f(i, 2)});
-      saveObj(path, points, topology);
-    }
-    state.statusMessage = "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path;
-    return true;
-  } catch (const std::exception& e) {
-    state.errors.push_back(e.what());
-    return false;
-  }
-}
-
 bool saveSessionFile(AppState& state, const std::string& path) {
   try {
     saveSession(path, makeSession(state));

@@ -18,6 +18,7 @@
 #include "document.h"
 #include "editor_options.h"
 #include "element_pick.h"
+#include "export_worker.h"
 #include "file_dialog.h"
 #include "history.h"
 #include "pose_keys.h"
@@ -101,6 +102,7 @@ struct AppState {
   // ---- background work ----
   PrecomputeWorker worker;
   CageMaker cageMaker;                         // File > Make cage... (its dialog and the preview)
+  ExportWorker exporter;  // File > Export deformed mesh / animation (export_jobs.h)
   bool loadingScene = false;                   // the running request replaces the scene
   std::optional<Eigen::MatrixXd> pendingPose;  // applied when the loading scene arrives
   std::optional<CameraState> pendingCamera;
@@ -212,6 +214,7 @@ void applySession(AppState& state, const Session& session);
 // Each returns true on success. They write where they are told: the dialogs check the paths (file_dialog.h).
 bool savePosedCage(AppState& state, const std::string& path);
 bool loadPosedCage(AppState& state, const std::string& path);  // committed: "Load posed cage"
+// Starts the export on state.exporter (export_jobs.cpp); false when another export runs.
 bool exportDeformedMesh(AppState& state, const std::string& path);
 bool saveSessionFile(AppState& state, const std::string& path);  // marks the document saved
 bool loadSessionFile(AppState& state, const std::string& path);

@@ -23,6 +23,8 @@
 #include "editor_renderer.h"
 #include "errors.h"
 #include "event_queue.h"
+#include "export_jobs.h"
+#include "export_panel.h"
 #include "frame_pacing.h"
 #include "gl_context.h"
 #include "gpu_deformer.h"
@@ -181,6 +183,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   feedInput(window, queue);
   pollWorker(state);
   state.cageMaker.poll();
+  pollExport(state);
   if (!state.droppedPaths.empty()) {
     std::vector<std::string> dropped;
     dropped.swap(state.droppedPaths);
@@ -213,6 +216,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     }
     drawAnimationExportDialogs(state);
     drawCageMakerDialog(state);
+    drawExportProgress(state);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
@@ -439,9 +443,9 @@ int runWindow(const EditorOptions& options) {
       while (!state.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.quantities.worker.busy() || state.quantities.worker.ready() ||
-                      state.quantities.sweepRequested || state.loadingScene || state.animation.playing ||
-                      state.cageMaker.status() == CageMaker::Status::Generating ||
+        demand.busy = state.worker.busy() || state.exporter.busy() || state.quantities.worker.busy() ||
+                      state.quantities.worker.ready() || state.quantities.sweepRequested || state.loadingScene ||
+                      state.animation.playing || state.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);

@@ -1,6 +1,7 @@
 #include "file_dialog.h"
 
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -179,15 +180,6 @@ void cancelFileDialog(AppState& state) { close(state, false); }
 
 namespace {
 
-// std::string-backed text field (ImGui 1.86 has no std::string overload without imgui_stdlib).
-bool inputText(const char* label, std::string& text, ImGuiInputTextFlags flags = 0) {
-  char buf[1024];
-  std::snprintf(buf, sizeof buf, "%s", text.c_str());
-  const bool changed = ImGui::InputText(label, buf, sizeof buf, flags);
-  if (changed) text = buf;
-  return changed;
-}
-
 // The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
 // names it). Returns true when an entry was opened.
 bool drawRecentFiles(AppState& state) {
@@ -247,7 +239,7 @@ bool drawBrowser(FileDialogState& d, const std::string& extension, std::string& 
   tooltip("Folders used in this session, most recent first");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1);
-  inputText("##folder", d.folder);
+  ImGui::InputText("##folder", &d.folder);
   tooltip("The folder shown below; type one to go there");
 
   std::string error;
@@ -301,7 +293,7 @@ void drawFileDialog(AppState& state) {
       if (ImGui::RadioButton("##field", d.sceneField == kind)) d.sceneField = kind;
       tooltip("The file list below fills this field");
       ImGui::SameLine();
-      if (inputText(kind == FileKind::PosedCage ? "posed cage (optional)" : fileKindInfo(kind).title, *text))
+      if (ImGui::InputText(kind == FileKind::PosedCage ? "posed cage (optional)" : fileKindInfo(kind).title, text))
         d.sceneField = kind;
       ImGui::PopID();
     }
@@ -324,7 +316,7 @@ void drawFileDialog(AppState& state) {
     ok = drawBrowser(d, kind.extension, d.name);
     ImGui::SetNextItemWidth(-80);
     if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    if (inputText("file name", d.name, ImGuiInputTextFlags_EnterReturnsTrue)) ok = true;
+    if (ImGui::InputText("file name", &d.name, ImGuiInputTextFlags_EnterReturnsTrue)) ok = true;
     if (ImGui::IsItemDeactivated() && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) ok = true;
     tooltip("A name in the folder above, or a whole path. The extension is added when missing.");
     ImGui::TextDisabled("%s files (%s)", kind.title, kind.extension);

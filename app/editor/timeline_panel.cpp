@@ -2,24 +2,16 @@
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
+#include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include "pose_keys.h"
 
 namespace somicage::editor {
 
 namespace {
-
-bool inputString(const char* label, std::string& text) {
-  char buffer[512];
-  std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
-  const bool changed = ImGui::InputText(label, buffer, sizeof buffer);
-  if (changed) text = buffer;
-  return changed;
-}
 
 // The frame slider with a tick under each key (gold) and the cursor's frame.
 void drawFrameSlider(AppState& state) {
@@ -129,7 +121,7 @@ void drawPoseLibraryPanel(AppState& state, double top) {
   }
   if (newName.empty()) newName = state.animation.poses.freshName();
   ImGui::SetNextItemWidth(130);
-  inputString("##name", newName);
+  ImGui::InputText("##name", &newName);
   ImGui::SameLine();
   if (ImGui::Button("Store current")) {
     storeCurrentPose(state, newName);
@@ -141,7 +133,8 @@ void drawPoseLibraryPanel(AppState& state, double top) {
     ImGui::PushID(pose.name.c_str());
     if (renaming == pose.name) {
       ImGui::SetNextItemWidth(120);
-      const bool done = inputString("##rename", renameTo) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+      const bool done =
+          ImGui::InputText("##rename", &renameTo) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
       ImGui::SameLine();
       if (done || ImGui::Button("OK")) {
         renameNamedPose(state, pose.name, renameTo);
@@ -177,7 +170,7 @@ void drawAnimationExportDialogs(AppState& state) {
     ImGui::RadioButton("OBJ sequence", &kind, 1);
     ImGui::SameLine();
     ImGui::RadioButton("PNG images of the views", &kind, 2);
-    inputString(kind == 0 ? "file (.glb)" : "new folder", path);
+    ImGui::InputText(kind == 0 ? "file (.glb)" : "new folder", &path);
     ImGui::TextDisabled("frames %d..%d at %.1f fps (Timeline panel)", a.timeline.firstFrame, a.timeline.lastFrame,
                         a.timeline.fps);
     if (ImGui::Button("Export")) {

@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <Eigen/Core>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
@@ -29,8 +30,15 @@ inline std::string dataFile(const std::string& name) { return (kDataDir / name).
 
 // `somicage deform` of the pyramid mesh in the cube cage at rest, writing out, with extra options after the files.
 inline std::vector<std::string> cubeDeformArgs(const std::string& out, const std::vector<std::string>& extra = {}) {
-  std::vector<std::string> args = {"deform", "--cage", dataFile("cube_cage.obj"), "--posed", dataFile("cube_cage.obj"),
-                                   "--mesh", dataFile("pyramid_mesh.obj"),        "--out",   out};
+  std::vector<std::string> args = {"deform",
+                                   "--cage",
+                                   dataFile("cube_cage.obj"),
+                                   "--posed",
+                                   dataFile("cube_cage.obj"),
+                                   "--mesh",
+                                   dataFile("pyramid_mesh.obj"),
+                                   "--out",
+                                   out};
   args.insert(args.end(), extra.begin(), extra.end());
   return args;
 }
@@ -40,6 +48,28 @@ inline std::string readFile(const fs::path& path) {
   std::ostringstream out;
   out << in.rdbuf();
   return out.str();
+}
+
+// A tetrahedron inside the cube cage with one normal per vertex that is not the faces' (so carried and recomputed
+// normals differ).
+inline const char* const kTetWithNormals =
+    "v 0.5 0 0\nv 0 0.5 0\nv 0 0 0.5\nv -0.2 -0.2 -0.2\n"
+    "vn 1 0.1 0.2\nvn 0.1 1 0\nvn 0 0.3 1\nvn -1 -1 -0.5\n"
+    "f 1//1 2//2 3//3\nf 1//1 4//4 2//2\nf 2//2 4//4 3//3\nf 3//3 4//4 1//1\n";
+
+// The `vn` lines of an OBJ file, in order.
+inline std::vector<Eigen::Vector3d> objNormals(const fs::path& path) {
+  std::vector<Eigen::Vector3d> normals;
+  std::istringstream lines(readFile(path));
+  std::string line;
+  while (std::getline(lines, line)) {
+    if (line.rfind("vn ", 0) != 0) continue;
+    std::istringstream numbers(line.substr(3));
+    Eigen::Vector3d n;
+    numbers >> n[0] >> n[1] >> n[2];
+    normals.push_back(n);
+  }
+  return normals;
 }
 
 // A fresh folder, removed with its contents at the end of the test.

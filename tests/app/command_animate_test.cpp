@@ -2,10 +2,15 @@
 // this test's own GLB reader: one frame per timeline frame, and at every key the positions equal `somicage deform`
 // of that key's pose (and parameters) to float precision; the OBJ sequence equals it to 1e-12 and keeps the
 // mesh's records. Failures leave nothing behind. With Debian's blender installed, a headless import of the GLB
-// sees the same frame count (skipped without blender).
+// sees the same frame count, and a textured OBJ deformed to GLB imports with its materials' colours, its texture's
+// pixels and the OBJ's UVs on every corner (skipped without blender).
+#include <stb_image_write.h>
+
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <map>
 
 #include "cli_test_support.h"
 #include "obj_io.h"
@@ -189,31 +194,165 @@ TEST_F(Animate, FailuresLeaveNothingBehind) {
   EXPECT_EQ(readFile(occupied + "/keep.txt"), "mine");
 }
 
-TEST_F(Animate, BlenderImportsTheSameFrameCount) {
-  if (std::system("command -v blender > /dev/null 2>&1") != 0) GTEST_SKIP() << "blender is not installed";
-  const std::string glbPath = dir.file("anim.glb");
-  ASSERT_EQ(runSomicage({"animate", "--session", sessionPath, "--out", glbPath}).exitCode, 0);
-  const std::string script = dir.file("count.py"), result = dir.file("count.txt");
+bool haveBlender() { return std::system("command -v blender > /dev/null 2>&1") == 0; }
+
+// Runs a Python script in headless Blender on a GLB; the script writes its findings to a text file, returned.
+std::string runBlender(const ScratchDir& dir, const std::string& body, const std::string& glbPath) {
+  const std::string script = dir.file("blender.py"), result = dir.file("blender.txt");
   // Debian's blender 3.4 importer still uses numpy.bool, which numpy 1.24 removed: the alias is restored first.
   std::ofstream(script) << "import bpy, sys, numpy\n"
                            "if not hasattr(numpy, 'bool'): numpy.bool = bool\n"
                            "glb, out = sys.argv[sys.argv.index('--') + 1:]\n"
                            "bpy.ops.import_scene.gltf(filepath=glb)\n"
                            "mesh = [o for o in bpy.context.scene.objects if o.type == 'MESH'][0]\n"
-                           "keys = mesh.data.shape_keys\n"
-                           "action = keys.animation_data.action\n"
-                           "frames = sorted({round(p.co[0], 3) for fc in action.fcurves for p in fc.keyframe_points})\n"
-                           "open(out, 'w').write('%d %d %d' % (len(keys.key_blocks) - 1, len(frames), "
-                           "len(mesh.data.vertices)))\n";
+                        << body;
   const std::string command = "blender -b --factory-startup --python-exit-code 1 --python " + script + " -- " +
                               glbPath + " " + result + " > " + dir.file("blender.log") + " 2>&1";
-  ASSERT_EQ(std::system(command.c_str()), 0) << readFile(dir.file("blender.log"));
-  std::istringstream counts(readFile(result));
+  EXPECT_EQ(std::system(command.c_str()), 0) << readFile(dir.file("blender.log"));
+  return readFile(result);
+}
+
+TEST_F(Animate, BlenderImportsTheSameFrameCount) {
+  if (!haveBlender()) GTEST_SKIP() << "blender is not installed";
+  const std::string glbPath = dir.file("anim.glb");
+  ASSERT_EQ(runSomicage({"animate", "--session", sessionPath, "--out", glbPath}).exitCode, 0);
+  std::istringstream counts(runBlender(
+      dir,
+      "keys = mesh.data.shape_keys\n"
+      "action = keys.animation_data.action\n"
+      "frames = sorted({round(p.co[0], 3) for fc in action.fcurves for p in fc.keyframe_points})\n"
+      "open(out, 'w').write('%d %d %d' % (len(keys.key_blocks) - 1, len(frames), len(mesh.data.vertices)))\n",
+      glbPath));
   int shapeKeys = 0, frames = 0, vertices = 0;
   counts >> shapeKeys >> frames >> vertices;
   EXPECT_EQ(shapeKeys, 12) << "one shape key per frame after the first";
   EXPECT_EQ(frames, 13) << "keyframes at frames 0..12";
   EXPECT_EQ(vertices, 5);
+}
+
+// A textured OBJ (two materials, a 2 by 2 PNG) deformed at rest to GLB, imported by Blender: the untextured
+// material's base colour is the .mtl's Kd, the textured one's image has the PNG's size and pixels, and every loop's
+// UV is the OBJ's `vt` of that corner (found by the corner's position; Blender's glTF import turns y-up into z-up).
+TEST(BlenderImport, TexturedGlbKeepsColoursImageAndUvs) {
+  if (!haveBlender()) GTEST_SKIP() << "blender is not installed";
+  ScratchDir dir;
+  const unsigned char pixels[16] = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 255};
+  ASSERT_NE(stbi_write_png(dir.file("skin.png").c_str(), 2, 2, 4, pixels, 8), 0);
+  std::ofstream(dir.file("tri.mtl")) << "newmtl skin\nKd 1 1 1\nmap_Kd skin.png\nnewmtl paint\nKd 0.25 0.5 0.75\n";
+  std::ofstream(dir.file("tri.obj")) << "mtllib tri.mtl\nv -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0.25\nv -0.5 0.5 0\n"
+                                        "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.25 0.75\n"
+                                        "usemtl skin\nf 1/1 2/2 3/3\nusemtl paint\nf 1/5 3/3 4/4\n";
+  std::vector<std::string> args = cubeDeformArgs(dir.file("tri.glb"));
+  args[6] = dir.file("tri.obj");
+  const RunResult r = runSomicage(args);
+  ASSERT_EQ(r.exitCode, 0) << r;
+  std::istringstream found(runBlender(
+      dir,
+      "lines = []\n"
+      "for slot in mesh.material_slots:\n"
+      "    nodes = slot.material.node_tree.nodes\n"
+      "    bsdf = [n for n in nodes if n.type == 'BSDF_PRINCIPLED'][0]\n"
+      "    colour = bsdf.inputs['Base Color']\n"
+      "    images = [n.image for n in nodes if n.type == 'TEX_IMAGE']\n"
+      "    if images:\n"
+      "        image = images[0]\n"
+      "        lines.append('image %s %d %d %s' % (slot.material.name, image.size[0], image.size[1],\n"
+      "                     ' '.join('%.4f' % p for p in image.pixels[:])))\n"
+      "    else:\n"
+      "        lines.append('colour %s %s' % (slot.material.name, ' '.join('%.6f' % c for c in "
+      "colour.default_value)))\n"
+      "uv = mesh.data.uv_layers.active.data\n"
+      "for poly in mesh.data.polygons:\n"
+      "    for loop in poly.loop_indices:\n"
+      "        co = mesh.data.vertices[mesh.data.loops[loop].vertex_index].co\n"
+      "        lines.append('loop %s %.6f %.6f %.6f %.6f %.6f' % (mesh.material_slots[poly.material_index].name,\n"
+      "                     co[0], co[1], co[2], uv[loop].uv[0], uv[loop].uv[1]))\n"
+      "open(out, 'w').write('\\n'.join(lines) + '\\n')\n",
+      dir.file("tri.glb")));
+  // OBJ corner (x, y, z) -> (material, u, v), and the expected Blender position (x, -z, y).
+  const std::map<std::array<double, 3>, std::map<std::string, std::array<double, 2>>> corners = {
+      {{-0.5, 0.0, -0.5}, {{"skin", {0, 0}}, {"paint", {0.25, 0.75}}}},
+      {{0.5, 0.0, -0.5}, {{"skin", {1, 0}}}},
+      {{0.5, -0.25, 0.5}, {{"skin", {1, 1}}, {"paint", {1, 1}}}},
+      {{-0.5, 0.0, 0.5}, {{"paint", {0, 1}}}},
+  };
+  std::string kind, name;
+  int loops = 0, images = 0, colours = 0;
+  while (found >> kind >> name) {
+    if (kind == "colour") {
+      ++colours;
+      EXPECT_EQ(name, "paint");
+      const std::array<double, 4> expected{0.25, 0.5, 0.75, 1.0};
+      for (const double e : expected) {
+        double c = 0;
+        found >> c;
+        EXPECT_NEAR(c, e, 1e-6) << "the .mtl's Kd as the base colour";
+      }
+    } else if (kind == "image") {
+      ++images;
+      EXPECT_EQ(name, "skin");
+      int width = 0, height = 0;
+      found >> width >> height;
+      ASSERT_EQ(width, 2);
+      ASSERT_EQ(height, 2);
+      for (int row = 1; row >= 0; --row) {  // Blender's rows run bottom-up
+        for (int p = 0; p < 8; ++p) {
+          double value = 0;
+          found >> value;
+          EXPECT_NEAR(value, pixels[row * 8 + p] / 255.0, 1e-4) << "pixel row " << row;
+        }
+      }
+    } else {
+      ++loops;
+      std::array<double, 3> co{};
+      std::array<double, 2> uv{};
+      found >> co[0] >> co[1] >> co[2] >> uv[0] >> uv[1];
+      const auto corner = corners.find(co);
+      ASSERT_NE(corner, corners.end()) << co[0] << " " << co[1] << " " << co[2];
+      const auto expected = corner->second.find(name);
+      ASSERT_NE(expected, corner->second.end()) << name;
+      EXPECT_NEAR(uv[0], expected->second[0], 1e-6);
+      EXPECT_NEAR(uv[1], expected->second[1], 1e-6) << "Blender's v = the OBJ's v";
+    }
+  }
+  EXPECT_EQ(colours, 1);
+  EXPECT_EQ(images, 1);
+  EXPECT_EQ(loops, 6);
+}
+
+// The OBJ sequence carries the mesh's normals by J: keyed at a quarter turn of the cube cage about z (which maps the
+// cube's vertices onto each other exactly, and which Somigliana coordinates reproduce), the last frame's normals
+// are R n / |n| to 1e-9 and the first frame's n / |n|; --recompute-normals gives the faces' normals instead.
+TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
+  ScratchDir dir;
+  const std::string mesh = dir.file("tet.obj");
+  std::ofstream(mesh) << kTetWithNormals;
+  const Eigen::MatrixXd rest = loadMesh(dataFile("cube_cage.obj")).vertices;
+  Eigen::Matrix3d R;
+  R << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  const std::string session =
+      R"({"format": "somicage-session", "version": 2, "mesh": ")" + mesh + R"(", "cage": ")" +
+      dataFile("cube_cage.obj") + R"(", "method": "somigliana",
+      "params": {"blend": 0, "nu": 0, "gamma": 0, "tractionCorrection": true},
+      "poses": [{"name": "rest", "vertices": )" +
+      matrixJson(rest) + R"(}, {"name": "turned", "vertices": )" + matrixJson(rest * R.transpose()) +
+      R"(}], "timeline": {"fps": 24, "first": 0, "last": 2, "loop": true, "interpolation": "linear",
+      "keys": [{"frame": 0, "pose": "rest"}, {"frame": 2, "pose": "turned"}]}})";
+  std::ofstream(dir.file("s.json")) << session;
+  const std::vector<Eigen::Vector3d> input = objNormals(mesh);
+  RunResult r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq") + "/"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const std::vector<Eigen::Vector3d> first = objNormals(dir.file("seq/tet_0000.obj"));
+  const std::vector<Eigen::Vector3d> last = objNormals(dir.file("seq/tet_0002.obj"));
+  ASSERT_EQ(last.size(), 4u);
+  for (size_t n = 0; n < 4; ++n) {
+    EXPECT_LE((first[n] - input[n].normalized()).norm(), 1e-9) << "vn " << n << " at rest";
+    EXPECT_LE((last[n] - R * input[n].normalized()).norm(), 1e-9) << "vn " << n << " turned";
+  }
+  r = runSomicage({"animate", "--session", dir.file("s.json"), "--out", dir.file("seq2") + "/", "--recompute-normals"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const std::vector<Eigen::Vector3d> recomputed = objNormals(dir.file("seq2/tet_0002.obj"));
+  EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
 }
 
 TEST(DeformLossless, TexturedObjAtRestKeepsEveryRecord) {

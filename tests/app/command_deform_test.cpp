@@ -2,6 +2,7 @@
 // to 1e-8 of the cage size, a similarity pose moves it by that similarity, and the output keeps the input's
 // vertex order and faces.
 #include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cmath>
 
 #include "cli_test_support.h"
@@ -227,6 +228,44 @@ TEST(CliDeform, OverwritesTheOutputAndLeavesNoTemporaryFile) {
   std::vector<std::string> entries;
   for (const auto& entry : fs::directory_iterator(dir.path())) entries.push_back(entry.path().filename().string());
   EXPECT_EQ(entries, std::vector<std::string>{"out.obj"});
+}
+
+// An affine pose A of the cube cage under mean value coordinates (which reproduce affine maps): the mesh's own
+// normals come out as A^-T n, normalised; with --recompute-normals they are the corner-angle-weighted normals of the
+// deformed faces instead (computed here).
+TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
+  ScratchDir dir;
+  const std::string mesh = dir.file("tet.obj"), posed = dir.file("posed.obj"), out = dir.file("out.obj");
+  std::ofstream(mesh) << kTetWithNormals;
+  Eigen::Matrix3d A;
+  A << 1.2, 0.3, 0, -0.1, 0.9, 0.2, 0.1, 0, 1.4;
+  PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));
+  saveObj(posed, cage.vertices * A.transpose(), cage);
+
+  RunResult r = deform(dataFile("cube_cage.obj"), posed, mesh, out, {"--method", "mvc"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const std::vector<Eigen::Vector3d> input = objNormals(mesh), carried = objNormals(out);
+  ASSERT_EQ(carried.size(), 4u);
+  for (size_t n = 0; n < 4; ++n) {
+    const Eigen::Vector3d expected = (A.inverse().transpose() * input[n]).normalized();
+    EXPECT_LE((carried[n] - expected).norm(), 1e-9) << "vn " << n;
+  }
+
+  r = deform(dataFile("cube_cage.obj"), posed, mesh, out, {"--method", "mvc", "--recompute-normals"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const PolygonMesh deformed = loadMesh(out);
+  std::vector<Eigen::Vector3d> sums(4, Eigen::Vector3d::Zero());
+  for (const std::vector<int>& face : deformed.faces) {
+    for (size_t k = 0; k < 3; ++k) {
+      const Eigen::Vector3d p = deformed.vertices.row(face[k]), a = deformed.vertices.row(face[(k + 1) % 3]),
+                            b = deformed.vertices.row(face[(k + 2) % 3]);
+      const double angle = std::acos((a - p).normalized().dot((b - p).normalized()));
+      sums[static_cast<size_t>(face[k])] += angle * (a - p).cross(b - p).normalized();
+    }
+  }
+  const std::vector<Eigen::Vector3d> recomputed = objNormals(out);
+  for (size_t n = 0; n < 4; ++n) EXPECT_LE((recomputed[n] - sums[n].normalized()).norm(), 1e-9) << "vn " << n;
+  EXPECT_GT((recomputed[0] - carried[0]).norm(), 0.05) << "the two differ on this mesh";
 }
 
 }  // namespace

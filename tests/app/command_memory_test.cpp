@@ -4,6 +4,9 @@
 #include <cstdlib>
 
 #include "cli_test_support.h"
+#include "memory_estimate.h"
+#include "methods/method_descriptors.h"
+#include "obj_io.h"
 
 namespace somicage {
 namespace {
@@ -66,6 +69,36 @@ TEST(CliMemory, AMalformedLimitIsABadInput) {
   EXPECT_EQ(r.exitCode, 2) << r;
   EXPECT_EQ(r.errLines(), 1) << r;
   EXPECT_NE(r.err.find("SOMICAGE_MEMORY_LIMIT_BYTES: '8 GB' is not a whole number of bytes"), std::string::npos) << r;
+}
+
+// A mesh with normals whose coordinates fit but whose gradients (for the normals carried by J) do not: deform still
+// runs, says the normals are recomputed, and writes the recomputed normals (equal to --recompute-normals' file).
+TEST(CliMemory, NormalsAreRecomputedWhenTheGradientsDoNotFit) {
+  ScratchDir dir;
+  const std::string mesh = dir.file("tet.obj");
+  std::ofstream(mesh) << kTetWithNormals;
+  MemoryEstimate without = estimatePrecomputeMemory(methods::somigliana(), 3, 8, 12, 4, false, 1);
+  MemoryEstimate with = without;
+  with.gradients = estimateGradientBytes(methods::somigliana(), 3, 8, 12, 4, false);
+  ASSERT_GT(with.total(), without.total() + 100);
+  const std::string posed = dir.file("posed.obj");
+  PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));
+  saveObj(posed, cage.vertices * 1.1, cage);
+  std::vector<std::string> args = {
+      "deform", "--cage", dataFile("cube_cage.obj"), "--posed", posed, "--mesh", mesh, "--threads", "1", "--out"};
+  std::vector<std::string> recomputeArgs = args;
+  recomputeArgs.insert(recomputeArgs.end(), {dir.file("recomputed.obj"), "--recompute-normals"});
+  const RunResult recomputed = runSomicage(recomputeArgs);
+  ASSERT_EQ(recomputed.exitCode, 0) << recomputed;
+  {
+    // Between the two totals, at the 85 % the check allows.
+    const MemoryLimit limit(std::to_string((without.total() + with.total()) / 2 * 100 / 85));
+    args.push_back(dir.file("out.obj"));
+    const RunResult r = runSomicage(args);
+    ASSERT_EQ(r.exitCode, 0) << r;
+    EXPECT_NE(r.err.find("the normals are recomputed from the deformed faces"), std::string::npos) << r;
+  }
+  EXPECT_EQ(readFile(dir.file("out.obj")), readFile(dir.file("recomputed.obj")));
 }
 
 }  // namespace

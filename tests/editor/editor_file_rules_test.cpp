@@ -131,6 +131,7 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   // The export's own name works; a second export to it asks first, and only "Replace" writes.
   state.dialog.name = "deformed.obj";
   ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
+  state.exporter.wait();  // the export runs on its worker
   ASSERT_TRUE(fs::exists(path("deformed.obj")));
   openFileDialog(state, FileDialogPurpose::ExportMesh);
   EXPECT_EQ(state.dialog.name, "deformed.obj");
@@ -140,6 +141,7 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   EXPECT_EQ(state.dialog.confirmPath, path("deformed.obj"));
   EXPECT_EQ(readTextFile(path("deformed.obj")), "# placeholder\n");
   EXPECT_TRUE(submitFileDialog(state, true));
+  state.exporter.wait();
   EXPECT_NE(readTextFile(path("deformed.obj")), "# placeholder\n");
   // The session dialog kept its own name.
   openFileDialog(state, FileDialogPurpose::SaveSession);

@@ -6,11 +6,17 @@
 #include <stdlib.h>
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <thread>
 
 #include "animation_export.h"
 #include "app_state.h"
+#include "errors.h"
+#include "export_jobs.h"
 #include "obj_io.h"
 #include "pose_keys.h"
 #include "session.h"
@@ -120,7 +126,7 @@ class EditorAnimationExport : public ::testing::Test {
         << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
            "v -1 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
     std::ofstream(folder / "mesh.obj")
-        << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n";
+        << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 -0.5 1\nf 1/1/1 2/2/1 3/3/1\n";
     requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "cage.obj").string());
     std::optional<PrecomputeOutcome> out = state.worker.wait();
     ASSERT_TRUE(out.has_value());
@@ -155,13 +161,13 @@ class EditorAnimationExport : public ::testing::Test {
   Eigen::MatrixXd posed;
 };
 
-TEST_F(EditorAnimationExport, ObjSequenceHoldsTheTimelineFramesAndThePoseIsRestored) {
+TEST_F(EditorAnimationExport, ObjSequenceRunsOnTheWorkerAndHoldsTheTimelineFrames) {
   startAnimationExport(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string());
-  ASSERT_TRUE(state.animation.exportJob.has_value());
-  runFrames(100);
-  EXPECT_FALSE(state.animation.exportJob.has_value());
   ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  EXPECT_EQ(state.pose, posed);
+  EXPECT_FALSE(state.animation.exportJob.has_value()) << "no frame-loop job: the worker does it";
+  state.exporter.wait();
+  EXPECT_EQ(state.exporter.progress(), 1.0);
+  EXPECT_EQ(state.pose, posed) << "the pose is never touched";
   const std::vector<Eigen::MatrixXd> expected =
       deformTimelineFrames(*state.deformers.at(state.method), state.scene->restCage, state.animation.timeline,
                            state.animation.poses, state.params, state.scene->document->geometry.vertices, 3, 0, 4);
@@ -172,19 +178,83 @@ TEST_F(EditorAnimationExport, ObjSequenceHoldsTheTimelineFramesAndThePoseIsResto
   }
 }
 
-TEST_F(EditorAnimationExport, CancelLeavesNothing) {
-  startAnimationExport(state, AnimationExportJob::Kind::Glb, (folder / "anim.glb").string());
-  runFrames(2);
-  ASSERT_TRUE(state.animation.exportJob.has_value());
-  state.animation.exportJob->cancelRequested = true;
-  runFrames(1);
-  EXPECT_FALSE(state.animation.exportJob.has_value());
-  EXPECT_EQ(state.pose, posed);
+// The folder's entries other than the inputs.
+std::vector<std::string> leftOver(const std::filesystem::path& folder) {
   std::vector<std::string> left;
-  for (const auto& entry : std::filesystem::directory_iterator(folder))
-    left.push_back(entry.path().filename().string());
-  std::sort(left.begin(), left.end());
-  EXPECT_EQ(left, (std::vector<std::string>{"cage.obj", "mesh.obj"}));
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    if (name != "cage.obj" && name != "mesh.obj") left.push_back(name);
+  }
+  return left;
+}
+
+// Runs an export job with a progress callback that says stop at its k-th report, for k = 1, 2, ... until the job
+// completes: every cancelled run throws Cancelled and leaves neither the output nor a temporary file. Returns how
+// many reports the job makes (the cancel points tested).
+int cancelAtEveryReport(const std::filesystem::path& folder, const std::function<ExportWorker::Job()>& makeJob,
+                        const std::string& out) {
+  for (int k = 1; k < 1000; ++k) {
+    const ExportWorker::Job job = makeJob();
+    int reports = 0;
+    try {
+      job([&](double) { return ++reports < k; });
+    } catch (const Cancelled&) {
+      EXPECT_TRUE(leftOver(folder).empty()) << "cancelled at report " << k << ": " << leftOver(folder).front();
+      continue;
+    }
+    EXPECT_TRUE(std::filesystem::exists(out)) << "completed at k = " << k;
+    std::error_code ignored;
+    std::filesystem::remove_all(out, ignored);
+    return k - 1;
+  }
+  ADD_FAILURE() << "the job never completed";
+  return 0;
+}
+
+TEST_F(EditorAnimationExport, CancelAtAnyPointLeavesNoFileAndNoTemporaryFile) {
+  const std::string glb = (folder / "anim.glb").string(), seq = (folder / "seq").string();
+  EXPECT_GE(cancelAtEveryReport(
+                folder, [&] { return makeAnimationExportJob(state, AnimationExportJob::Kind::Glb, glb); }, glb),
+            6)
+      << "each of the 5 frames, then the write";
+  EXPECT_GE(cancelAtEveryReport(
+                folder, [&] { return makeAnimationExportJob(state, AnimationExportJob::Kind::ObjSequence, seq); }, seq),
+            10)
+      << "each frame deformed, then each file written (the temporary folder holds some of them)";
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_EQ(state.pose, posed);
+}
+
+TEST_F(EditorAnimationExport, MeshExportRunsOnTheWorkerAndCancelLeavesNothing) {
+  const std::string out = (folder / "deformed.obj").string();
+  ASSERT_TRUE(exportDeformedMesh(state, out));
+  while (state.exporter.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // as the frame loop polls
+  pollExport(state);
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_NE(state.statusMessage.find("exported the deformed mesh"), std::string::npos) << state.statusMessage;
+  EXPECT_LE((loadMesh(out).vertices - displayedPoints(state, state.method)).cwiseAbs().maxCoeff(), 1e-12);
+  std::filesystem::remove(out);
+  EXPECT_GE(cancelAtEveryReport(
+                folder, [&] { return makeMeshExportJob(state, out); }, out),
+            1);
+
+  // Through the worker: one export at a time, and the real job held until cancel() was called ends cancelled.
+  const ExportWorker::Job job = makeMeshExportJob(state, out);
+  std::atomic<bool> release{false};
+  ASSERT_TRUE(state.exporter.start(out, "", [&](const ProgressCallback& progress) {
+    while (!release) std::this_thread::yield();
+    return job(progress);
+  }));
+  EXPECT_FALSE(exportDeformedMesh(state, out)) << "one export at a time";
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors[0].find("another export is running"), std::string::npos) << state.errors[0];
+  state.errors.clear();
+  state.exporter.cancel();
+  release = true;
+  const std::optional<ExportOutcome> outcome = state.exporter.wait();
+  ASSERT_TRUE(outcome.has_value());
+  EXPECT_TRUE(outcome->cancelled);
+  EXPECT_TRUE(leftOver(folder).empty());
 }
 
 }  // namespace

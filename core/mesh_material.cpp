@@ -1,0 +1,156 @@
+#include "mesh_material.h"
+
+#include <algorithm>
+#include <charconv>
+#include <filesystem>
+#include <sstream>
+#include <string_view>
+
+#include "errors.h"
+#include "file_util.h"
+#include "mesh_document.h"
+#include "obj_io.h"
+
+namespace somicage {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+double unitNumber(std::string_view token, const std::string& source, long line, const char* what) {
+  double value = 0.0;
+  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+  if (result.ec != std::errc() || result.ptr != token.data() + token.size() || !(value >= 0.0 && value <= 1.0)) {
+    throw InputError(source, line, "'" + std::string(token) + "' is not a " + what + " in [0, 1]",
+                     "write e.g. `Kd 0.8 0.5 0.4` and `d 1` with decimal numbers");
+  }
+  return value;
+}
+
+// How many arguments each map option takes (-o, -s, -t take one to three numbers).
+int optionArguments(std::string_view option) {
+  if (option == "-mm") return 2;
+  if (option == "-o" || option == "-s" || option == "-t") return 3;
+  return 1;  // -blendu -blendv -cc -clamp -texres -boost -bm -imfchan
+}
+
+bool isNumber(std::string_view token) {
+  double value = 0.0;
+  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
+  return result.ec == std::errc() && result.ptr == token.data() + token.size();
+}
+
+// The file of a `map_Kd [options] FILE` line (FILE may contain blanks), resolved next to the .mtl.
+std::string textureFile(const std::vector<std::string_view>& tokens, const std::string& source, long line) {
+  size_t k = 1;
+  while (k < tokens.size() && tokens[k].size() > 1 && tokens[k][0] == '-' && !isNumber(tokens[k])) {
+    const int arguments = optionArguments(tokens[k]);
+    ++k;
+    for (int a = 0; a < arguments && k < tokens.size() && (a == 0 || isNumber(tokens[k])); ++a) ++k;
+  }
+  std::string name;
+  for (; k < tokens.size(); ++k) name += (name.empty() ? "" : " ") + std::string(tokens[k]);
+  if (name.empty()) throw InputError(source, line, "map_Kd names no file", "write `map_Kd texture.png`");
+  std::replace(name.begin(), name.end(), '\\', '/');  // written on Windows
+  const fs::path file(name);
+  return file.is_absolute() ? name : (fs::path(source).parent_path() / file).string();
+}
+
+}  // namespace
+
+std::vector<MeshMaterial> parseMtl(const std::string& text, const std::string& source) {
+  std::vector<MeshMaterial> materials;
+  std::istringstream lines(text);
+  std::string raw;
+  long lineNumber = 0;
+  bool opacityFromD = false;
+  while (std::getline(lines, raw)) {
+    ++lineNumber;
+    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+    const std::vector<std::string_view> tokens = splitTokens(raw);
+    if (tokens.empty() || tokens[0][0] == '#') continue;
+    const std::string_view keyword = tokens[0];
+    if (keyword == "newmtl") {
+      materials.emplace_back();
+      materials.back().name = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
+      opacityFromD = false;
+      continue;
+    }
+    if (keyword != "Kd" && keyword != "d" && keyword != "Tr" && keyword != "map_Kd") continue;
+    if (materials.empty()) {
+      throw InputError(source, lineNumber, "'" + std::string(keyword) + "' comes before any `newmtl`",
+                       "start each material with `newmtl NAME`");
+    }
+    MeshMaterial& material = materials.back();
+    if (keyword == "map_Kd") {
+      material.texturePath = textureFile(tokens, source, lineNumber);
+      continue;
+    }
+    const size_t first = keyword == "d" && tokens.size() > 2 && tokens[1] == "-halo" ? 2 : 1;
+    const size_t count = keyword == "Kd" ? 3 : 1;
+    if (tokens.size() < first + count) {
+      throw InputError(
+          source, lineNumber,
+          "'" + std::string(keyword) + "' needs " + std::to_string(count) + (count == 1 ? " number" : " numbers"),
+          "write e.g. `Kd 0.8 0.5 0.4` or `d 0.5`");
+    }
+    if (keyword == "Kd") {
+      for (size_t c = 0; c < 3; ++c)
+        material.baseColor[static_cast<Eigen::Index>(c)] =
+            unitNumber(tokens[first + c], source, lineNumber, "colour component");
+    } else if (keyword == "d") {
+      material.baseColor[3] = unitNumber(tokens[first], source, lineNumber, "opacity");
+      opacityFromD = true;
+    } else if (!opacityFromD) {
+      material.baseColor[3] = 1.0 - unitNumber(tokens[first], source, lineNumber, "transparency");
+    }
+  }
+  return materials;
+}
+
+DocumentMaterials documentMaterials(const MeshDocument& document) {
+  DocumentMaterials out;
+  std::vector<MeshMaterial> known = document.materials;
+  const fs::path folder = fs::path(document.sourcePath).parent_path();
+  for (const ObjRecord& record : document.records) {
+    if (record.kind != ObjRecord::Kind::Text) continue;
+    const std::vector<std::string_view> tokens = splitTokens(record.text);
+    if (tokens.empty() || tokens[0] != "mtllib") continue;
+    for (size_t k = 1; k < tokens.size(); ++k) {
+      const fs::path name{std::string(tokens[k])};
+      const std::string library = name.is_absolute() ? name.string() : (folder / name).string();
+      std::error_code error;
+      if (!fs::is_regular_file(library, error)) {
+        out.notes.push_back("the material library " + library + " was not found: its materials are written white");
+        continue;
+      }
+      for (MeshMaterial& material : parseMtl(readTextFile(library), library)) known.push_back(std::move(material));
+    }
+  }
+  std::vector<std::string> undefined;
+  for (const std::string& name : document.faceMaterial) {
+    if (std::any_of(out.materials.begin(), out.materials.end(), [&](const MeshMaterial& m) { return m.name == name; }))
+      continue;
+    // The first definition counts, as in every OBJ reader.
+    const auto found = std::find_if(known.begin(), known.end(), [&](const MeshMaterial& m) { return m.name == name; });
+    if (found != known.end()) {
+      out.materials.push_back(*found);
+      continue;
+    }
+    MeshMaterial white;
+    white.name = name;
+    out.materials.push_back(white);
+    if (!name.empty()) undefined.push_back(name);
+  }
+  for (const std::string& name : undefined)
+    out.notes.push_back("the material '" + name + "' is not defined in the mesh's material libraries: written white");
+  return out;
+}
+
+std::string imageMimeType(const std::string& bytes) {
+  if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return "image/png";
+  if (bytes.compare(0, 3, "\xFF\xD8\xFF") == 0) return "image/jpeg";
+  return "";
+}
+
+}  // namespace somicage
