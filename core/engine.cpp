@@ -72,9 +72,17 @@ void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, co
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
                              const DeformParams& params, const std::string& posedSource,
                              const std::string& meshSource) {
+  CpuFrameEvaluator cpu(deformer);
+  return deformPoints(deformer, cpu, restCage, posed, params, posedSource, meshSource);
+}
+
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evaluator, const Cage& restCage,
+                             const Eigen::MatrixXd& posed, const DeformParams& params, const std::string& posedSource,
+                             const std::string& meshSource) {
   requirePosedVertices(restCage, posed, posedSource);
   deformer.method()->validateParams(params);
-  Eigen::MatrixXd deformed = deformer.deform(posed, params);
+  Eigen::MatrixXd deformed;
+  evaluator.evaluate(deformer.frameWeights(posed, params), deformed);
   Eigen::Index bad = 0, firstBad = -1;
   for (Eigen::Index p = 0; p < deformed.rows(); ++p)
     if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;

@@ -14,6 +14,7 @@
 
 #include "cage.h"
 #include "deformer.h"
+#include "frame_evaluator.h"
 #include "memory_estimate.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
@@ -70,5 +71,9 @@ void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, co
 // position).
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
                              const DeformParams& params, const std::string& posedSource, const std::string& meshSource);
+// The same with the frame evaluated by `evaluator` (frame_evaluator.h: one made for `deformer`).
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evaluator, const Cage& restCage,
+                             const Eigen::MatrixXd& posed, const DeformParams& params, const std::string& posedSource,
+                             const std::string& meshSource);
 
 }  // namespace somicage
