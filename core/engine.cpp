@@ -50,9 +50,11 @@ MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::siz
 
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
-                                         const ProgressCallback& progress) {
-  requirePrecomputeMemory(method, restCage, static_cast<std::size_t>(points.rows()), options, source,
-                          memoryHint(!options.floatStorage));
+                                         const ProgressCallback& progress, const MemoryCheck& memory) {
+  const MemoryEstimate estimate = requirePrecomputeMemory(
+      method, restCage, static_cast<std::size_t>(points.rows()), options, source,
+      memory.hint.empty() ? memoryHint(!options.floatStorage) : memory.hint, memory.withGradients);
+  if (memory.fits) memory.fits(estimate);
   return makeDeformer(method, restCage, points, options, progress);
 }
 

@@ -56,11 +56,18 @@ MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::siz
                                        const PrecomputeOptions& options, const std::string& source,
                                        const std::string& hint, bool withGradients = false);
 
-// requirePrecomputeMemory (with the usual hint), then the method's precompute of points (#P by d) in the rest
-// cage. Throws Cancelled when progress returns false.
+// How precompute checks the memory first.
+struct MemoryCheck {
+  std::string hint;            // what to do when it does not fit; empty: memoryHint(!options.floatStorage)
+  bool withGradients = false;  // the deformation gradients will be built too (jacobian.h: analyze)
+  std::function<void(const MemoryEstimate&)> fits;  // told the estimate when it fits, before the work; may be empty
+};
+
+// requirePrecomputeMemory (as `memory` says), then the method's precompute of points (#P by d) in the rest cage.
+// Throws Cancelled when progress returns false.
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
-                                         const ProgressCallback& progress = noProgress);
+                                         const ProgressCallback& progress = noProgress, const MemoryCheck& memory = {});
 
 // Throws InputError naming `source` when posed is not #V by d of the rest cage, or not finite.
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source);

@@ -102,11 +102,11 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
-  requirePrecomputeMemory(kCommand, session.method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(session.method) + " coordinates");
-    deformer = makeDeformer(session.method, cage, points, options, progress.callback());
+    deformer =
+        precompute(session.method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(kCommand));
   }
   std::vector<Eigen::MatrixXd> frames;
   {

@@ -148,15 +148,14 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
 
   // Precompute as the editor does: exact integrals, stored in float.
   const Method somigliana = methods::somigliana();
-  requirePrecomputeMemory(kCommand, somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
-                          options.text("--mesh"));
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
   for (int r = 0; r < repeat; ++r) {
     deformer.reset();
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
-    deformer = makeDeformer(somigliana, cage, points, precompute, progress.callback());
+    deformer = somicage::precompute(somigliana, cage, points, precompute, options.text("--mesh"), progress.callback(),
+                                    commandMemoryCheck(kCommand));
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;
@@ -262,10 +261,9 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   deformer.reset();
   for (Method method : allMethods()) {
     if (method == somigliana) continue;
-    requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), precompute,
-                            options.text("--mesh"));
     ProgressReporter progress("precompute " + methodName(method));
-    const std::unique_ptr<CageDeformer> other = makeDeformer(method, cage, points, precompute, progress.callback());
+    const std::unique_ptr<CageDeformer> other = somicage::precompute(
+        method, cage, points, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(kCommand));
     progress.finish();
     DeformParams params;
     params.nu = 0.3;

@@ -105,12 +105,11 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   options.threads = threads;
   options.integration.threads = threads;
   options.rowIntegrator = device.rowIntegrator;
-  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer = precompute(method, cage, points, options, meshPath, progress.callback());
+    deformer = precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(kCommand));
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
   const int exterior = deformer->diagnostics().exteriorCount();

@@ -102,18 +102,17 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
   if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
 }
 
-void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients) {
-  // No command offers another storage.
-  const MemoryEstimate estimate =
-      requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), withGradients);
-  const std::optional<std::size_t> available = availableMemoryBytes();
-  // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
-  const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
-  if (big)
-    std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
-              << formatBytes(estimate.total()) << " in all ("
-              << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
+MemoryCheck commandMemoryCheck(const std::string& command, bool withGradients) {
+  return {
+      memoryHint(false), withGradients, [command](const MemoryEstimate& estimate) {
+        const std::optional<std::size_t> available = availableMemoryBytes();
+        // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
+        const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
+        if (big)
+          std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
+                    << formatBytes(estimate.total()) << " in all ("
+                    << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
+      }};
 }
 
 }  // namespace somicage
