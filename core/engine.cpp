@@ -58,6 +58,15 @@ std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, co
   return makeDeformer(method, restCage, points, options, progress);
 }
 
+std::optional<Notice> exteriorPointsNotice(const CageDeformer& deformer, const std::string& meshSource) {
+  const int exterior = deformer.diagnostics().exteriorCount();
+  if (exterior == 0) return std::nullopt;
+  return Notice{Notice::Kind::Warning, meshSource,
+                std::to_string(exterior) + " of " + std::to_string(deformer.numPoints()) +
+                    " points lie outside the cage (or on it); they follow the cage's best-fit similarity, blended "
+                    "smoothly into the deformation inside (docs/engine.md, \"Points outside the cage\")"};
+}
+
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source) {
   requirePosedVertexCount(restCage, static_cast<long>(posed.rows()), source);
   if (posed.cols() != restCage.dim())

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cage.h"
@@ -68,6 +69,10 @@ struct MemoryCheck {
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
                                          const ProgressCallback& progress = noProgress, const MemoryCheck& memory = {});
+
+// The Warning notice naming meshSource when some of the deformer's points lie outside the cage (or on it), in the
+// words every front end shows (exterior_points.h); nullopt when none do.
+std::optional<Notice> exteriorPointsNotice(const CageDeformer& deformer, const std::string& meshSource);
 
 // Throws InputError naming `source` when posed is not #V by d of the rest cage, or not finite.
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source);

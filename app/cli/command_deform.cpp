@@ -112,12 +112,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
     deformer = precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(kCommand));
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
-  const int exterior = deformer->diagnostics().exteriorCount();
-  if (exterior > 0) {
-    std::cerr << kCommand << ": warning: " << exterior << " of " << points.rows() << " points of " << meshPath
-              << " lie outside the cage (or on it); they follow the cage's best-fit similarity, blended smoothly "
-              << "into the deformation inside (docs/engine.md, \"Points outside the cage\")\n";
-  }
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) printNotice(*outside);
   const CliClock::time_point deformStart = CliClock::now();
   const Eigen::MatrixXd deformed =
       deformPoints(*deformer, *makeEvaluator(device, *deformer), cage, posed, params, posedPath, meshPath);
