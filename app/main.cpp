@@ -3,23 +3,23 @@
 #include <string>
 
 #include "cli/cli.h"
+#include "cuda/cuda_backend.h"
 #ifdef SOMICAGE_HAVE_EDITOR
 #include "editor/editor.h"
-#include "gpu_benchmark.h"
+#include "gl_frame_evaluator.h"
 #endif
 
 int main(int argc, char** argv) {
+  // The frame devices of this executable: `somicage deform --device` and `somicage bench` use them.
+  somicage::FrameDevices devices = {somicage::cpuFrameDevice()};
 #ifdef SOMICAGE_HAVE_EDITOR
-  // `somicage bench` times the GPU frame too when this executable has the OpenGL backend.
-  somicage::setGpuFrameTimer([](const somicage::CageDeformer& deformer, const Eigen::MatrixXd& posed,
-                                const somicage::DeformParams& params, int frames, std::string& why) {
-    return somicage::render::timeGpuDeformMs(deformer, posed, params, frames, &why);
-  });
+  devices.push_back(somicage::render::openGlFrameDevice());
 #endif
-  if (argc > 1 && somicage::isCliCommand(argv[1])) return somicage::runCli(argc, argv);
+  devices.push_back(somicage::cudaFrameDevice());
+  if (argc > 1 && somicage::isCliCommand(argv[1])) return somicage::runCli(argc, argv, devices);
 #ifdef SOMICAGE_HAVE_EDITOR
   return somicage::runEditor(argc, argv);
 #else
-  return somicage::runCli(argc, argv);  // built without the editor: the CLI explains the commands
+  return somicage::runCli(argc, argv, devices);  // built without the editor: the CLI explains the commands
 #endif
 }

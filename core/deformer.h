@@ -73,6 +73,7 @@ class CageDeformer {
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
   int numPoints() const { return coordinates_.numPoints(); }
+  int threads() const { return threads_; }  // a frame's OpenMP threads (0: the default)
 
   // The deformed points (#P by d, resized) for a posed cage: evaluateFrame(C, frameWeights(...)).
   void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& out) const;

@@ -50,10 +50,21 @@ MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::siz
 
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
-                                         const ProgressCallback& progress) {
-  requirePrecomputeMemory(method, restCage, static_cast<std::size_t>(points.rows()), options, source,
-                          memoryHint(!options.floatStorage));
+                                         const ProgressCallback& progress, const MemoryCheck& memory) {
+  const MemoryEstimate estimate = requirePrecomputeMemory(
+      method, restCage, static_cast<std::size_t>(points.rows()), options, source,
+      memory.hint.empty() ? memoryHint(!options.floatStorage) : memory.hint, memory.withGradients);
+  if (memory.fits) memory.fits(estimate);
   return makeDeformer(method, restCage, points, options, progress);
+}
+
+std::optional<Notice> exteriorPointsNotice(const CageDeformer& deformer, const std::string& meshSource) {
+  const int exterior = deformer.diagnostics().exteriorCount();
+  if (exterior == 0) return std::nullopt;
+  return Notice{Notice::Kind::Warning, meshSource,
+                std::to_string(exterior) + " of " + std::to_string(deformer.numPoints()) +
+                    " points lie outside the cage (or on it); they follow the cage's best-fit similarity, blended "
+                    "smoothly into the deformation inside (docs/engine.md, \"Points outside the cage\")"};
 }
 
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source) {
@@ -72,9 +83,17 @@ void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, co
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
                              const DeformParams& params, const std::string& posedSource,
                              const std::string& meshSource) {
+  CpuFrameEvaluator cpu(deformer);
+  return deformPoints(deformer, cpu, restCage, posed, params, posedSource, meshSource);
+}
+
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evaluator, const Cage& restCage,
+                             const Eigen::MatrixXd& posed, const DeformParams& params, const std::string& posedSource,
+                             const std::string& meshSource) {
   requirePosedVertices(restCage, posed, posedSource);
   deformer.method()->validateParams(params);
-  Eigen::MatrixXd deformed = deformer.deform(posed, params);
+  Eigen::MatrixXd deformed;
+  evaluator.evaluate(deformer.frameWeights(posed, params), deformed);
   Eigen::Index bad = 0, firstBad = -1;
   for (Eigen::Index p = 0; p < deformed.rows(); ++p)
     if (!deformed.row(p).allFinite()) bad += 1, firstBad = firstBad < 0 ? p : firstBad;

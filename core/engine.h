@@ -10,10 +10,12 @@
 #include <Eigen/Core>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cage.h"
 #include "deformer.h"
+#include "frame_evaluator.h"
 #include "memory_estimate.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
@@ -55,11 +57,22 @@ MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::siz
                                        const PrecomputeOptions& options, const std::string& source,
                                        const std::string& hint, bool withGradients = false);
 
-// requirePrecomputeMemory (with the usual hint), then the method's precompute of points (#P by d) in the rest
-// cage. Throws Cancelled when progress returns false.
+// How precompute checks the memory first.
+struct MemoryCheck {
+  std::string hint;            // what to do when it does not fit; empty: memoryHint(!options.floatStorage)
+  bool withGradients = false;  // the deformation gradients will be built too (jacobian.h: analyze)
+  std::function<void(const MemoryEstimate&)> fits;  // told the estimate when it fits, before the work; may be empty
+};
+
+// requirePrecomputeMemory (as `memory` says), then the method's precompute of points (#P by d) in the rest cage.
+// Throws Cancelled when progress returns false.
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
-                                         const ProgressCallback& progress = noProgress);
+                                         const ProgressCallback& progress = noProgress, const MemoryCheck& memory = {});
+
+// The Warning notice naming meshSource when some of the deformer's points lie outside the cage (or on it), in the
+// words every front end shows (exterior_points.h); nullopt when none do.
+std::optional<Notice> exteriorPointsNotice(const CageDeformer& deformer, const std::string& meshSource);
 
 // Throws InputError naming `source` when posed is not #V by d of the rest cage, or not finite.
 void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, const std::string& source);
@@ -70,5 +83,9 @@ void requirePosedVertices(const Cage& restCage, const Eigen::MatrixXd& posed, co
 // position).
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage, const Eigen::MatrixXd& posed,
                              const DeformParams& params, const std::string& posedSource, const std::string& meshSource);
+// The same with the frame evaluated by `evaluator` (frame_evaluator.h: one made for `deformer`).
+Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evaluator, const Cage& restCage,
+                             const Eigen::MatrixXd& posed, const DeformParams& params, const std::string& posedSource,
+                             const std::string& meshSource);
 
 }  // namespace somicage

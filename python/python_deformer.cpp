@@ -52,11 +52,7 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
     bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it
     throw;
   }
-  const int exterior = deformer_->diagnostics().exteriorCount();
-  if (exterior > 0)
-    warn(std::to_string(exterior) + " of " + std::to_string(restPoints.rows()) +
-         " points lie outside the cage (or on it); they follow the cage's best-fit similarity, blended smoothly "
-         "into the deformation inside (docs/engine.md, \"Points outside the cage\")");
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer_, "points")) warn(describeNotice(*outside));
 }
 
 Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDeformOptions& options) const {

@@ -273,13 +273,21 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
 }
 
 void GpuDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, MeshRenderer& target) {
-  Impl& m = *impl_;
-  if (!m.deformer) throw std::logic_error("GpuDeformer::deform before upload()");
+  if (!impl_->deformer) throw std::logic_error("GpuDeformer::deform before upload()");
   const Clock::time_point t0 = Clock::now();
+  submit(impl_->deformer->frameWeights(posedVertices, params), target, t0);
+}
+
+void GpuDeformer::deform(const FrameWeights& W, MeshRenderer& target) {
+  if (!impl_->deformer) throw std::logic_error("GpuDeformer::deform before upload()");
+  submit(W, target, Clock::now());
+}
+
+void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chrono::steady_clock::time_point t0) {
+  Impl& m = *impl_;
   m.collectQueries();
 
   // ---- W (small) on the CPU, as float, row-major: W_main then W_tail ----
-  const FrameWeights W = m.deformer->frameWeights(posedVertices, params);
   const int d = m.dim, mainOutputs = W.outputs - W.mainOffset;
   SOMICAGE_ASSERT(W.outputs == d || W.outputs == d * d + d, "a frame has d or d^2 + d outputs");
   SOMICAGE_ASSERT(W.main.rows() == m.mainColumns && W.main.cols() == mainOutputs, "W_main shape");

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <chrono>
 #include <memory>
 #include <string>
 
@@ -51,6 +52,8 @@ class GpuDeformer {
   // CPU (CageDeformer::frameWeights, which validates params and may throw InputError). target must draw #P
   // vertices. Does not wait for the GPU.
   void deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params, MeshRenderer& target);
+  // The same with a frame's weights built by the caller (the uploaded deformer's frameWeights).
+  void deform(const FrameWeights& W, MeshRenderer& target);
 
   // Tests only (stalls): the positions (#P by d) and normals (#P by 3) that the last deform() wrote into target.
   Eigen::MatrixXd readBack(MeshRenderer& target) const;
@@ -75,6 +78,9 @@ class GpuDeformer {
   static bool softwareRenderer();
 
  private:
+  // deform()'s GPU part; t0: when the frame started, for lastCpuMilliseconds().
+  void submit(const FrameWeights& W, MeshRenderer& target, std::chrono::steady_clock::time_point t0);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

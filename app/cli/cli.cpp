@@ -15,29 +15,23 @@ namespace somicage {
 
 const std::vector<CliCommand>& cliCommands() {
   static const std::vector<CliCommand> commands = {
-      {"help", "show this help, or the options of one command", runHelpCommand, helpUsage},
-      {"deform", "deform a mesh (or point set) with a posed cage and write it (OBJ, PLY, GLB)", runDeformCommand, deformUsage},
-      {"animate", "write a session's keyframed animation as a GLB or an OBJ sequence", runAnimateCommand, animateUsage},
+      {"help", "show this help, or the options of one command",
+       [](const std::vector<std::string>& a, const FrameDevices&) { return runHelpCommand(a); }, helpUsage},
+      {"deform", "deform a mesh (or point set) with a posed cage and write it (OBJ, PLY, GLB)", runDeformCommand,
+       deformUsage},
+      {"animate", "write a session's keyframed animation as a GLB or an OBJ sequence",
+       [](const std::vector<std::string>& a, const FrameDevices&) { return runAnimateCommand(a); }, animateUsage},
       {"analyze", "measure a pose: volume change, det J, distortion and fold-overs of a deformed mesh",
-       runAnalyzeCommand, analyzeUsage},
-      {"check", "check a cage, and the partition of unity on the points of a mesh", runCheckCommand, checkUsage},
-      {"cage", "make a cage that strictly encloses a mesh, with at most N faces, and write it as OBJ", runCageCommand,
-       cageUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&) { return runAnalyzeCommand(a); }, analyzeUsage},
+      {"check", "check a cage, and the partition of unity on the points of a mesh",
+       [](const std::vector<std::string>& a, const FrameDevices&) { return runCheckCommand(a); }, checkUsage},
+      {"cage", "make a cage that strictly encloses a mesh, with at most N faces, and write it as OBJ",
+       [](const std::vector<std::string>& a, const FrameDevices&) { return runCageCommand(a); }, cageUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},
   };
   return commands;
 }
-
-namespace {
-GpuFrameTimer& gpuFrameTimerSlot() {
-  static GpuFrameTimer timer;
-  return timer;
-}
-}  // namespace
-
-void setGpuFrameTimer(GpuFrameTimer timer) { gpuFrameTimerSlot() = std::move(timer); }
-const GpuFrameTimer& gpuFrameTimer() { return gpuFrameTimerSlot(); }
 
 const CliCommand* findCliCommand(const std::string& name) {
   for (const CliCommand& command : cliCommands()) {
@@ -56,7 +50,7 @@ bool isCliCommand(const char* firstArgument) {
   return bareWord && !std::filesystem::exists(name);
 }
 
-int runCli(int argc, char** argv) {
+int runCli(int argc, char** argv, const FrameDevices& devices) {
   if (argc < 2) {
     std::cerr << helpUsage() << "\nsomicage: no command given (run 'somicage help')\n";
     return kExitBadInput;
@@ -77,7 +71,7 @@ int runCli(int argc, char** argv) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   const std::string prefix = std::string("somicage ") + command->name + ": ";
   try {
-    return command->run(args);
+    return command->run(args, devices);
   } catch (const InputError& e) {
     std::cerr << prefix << e.what() << "\n";
     return kExitBadInput;

@@ -121,12 +121,12 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
-  requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath, true);
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {
     ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer = makeDeformer(method, cage, points, options, progress.callback());
+    deformer =
+        precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(kCommand, true));
   }
   {
     ProgressReporter progress("integrating their gradients");

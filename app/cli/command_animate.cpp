@@ -105,16 +105,14 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   options.threads = threads;
   options.integration.threads = threads;
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
-  const std::size_t count = static_cast<std::size_t>(points.rows());
-  bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath);
-  if (normalsByGradient)
-    normalsByGradient = requirePrecomputeMemoryForNormals(kCommand, session.method, cage, count, options, meshPath);
-  else
-    requirePrecomputeMemory(kCommand, session.method, cage, count, options, meshPath);
+  const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath) &&
+                                 gradientsFitForNormals(kCommand, session.method, cage,
+                                                        static_cast<std::size_t>(points.rows()), options, meshPath);
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(session.method) + " coordinates");
-    deformer = makeDeformer(session.method, cage, points, options, progress.callback());
+    deformer = precompute(session.method, cage, points, options, meshPath, progress.callback(),
+                          commandMemoryCheck(kCommand, normalsByGradient));
   }
   std::vector<Eigen::MatrixXd> frames;
   {

@@ -1,6 +1,6 @@
 // somicage bench: precompute and per-frame timings, accuracy, and the speed-up over the paper's quadrature rule,
 // measured on one mesh and cage (median of repeated runs). The same engine calls as the editor: float storage of
-// the coordinates, the CPU frame kernel, and the GPU kernel when the editor's OpenGL backend is linked in.
+// the coordinates, the CPU frame kernel, and every other frame device the executable offers (OpenGL, CUDA).
 #include <omp.h>
 #include <sys/resource.h>
 
@@ -17,7 +17,6 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
-#include "cuda/cuda_backend.h"
 #include "deformation_analysis.h"
 #include "deformation_quantities.h"
 #include "jacobian.h"
@@ -82,16 +81,16 @@ double timeFrames(const CageDeformer& deformer, const Eigen::MatrixXd& posed, De
   return median(times);
 }
 
-// Median per-frame milliseconds on the CUDA backend: the weights built on the host, C already on the device, the
+// Median per-frame milliseconds on a frame device: the weights built on the host, C already on the device, the
 // points copied back (what a frame costs an application that uses the result on the CPU).
-double timeCudaFrames(const CageDeformer& deformer, CudaFrameEvaluator& cuda, const Eigen::MatrixXd& posed,
-                      const DeformParams& params, int frames) {
+double timeEvaluatorFrames(const CageDeformer& deformer, FrameEvaluator& evaluator, const Eigen::MatrixXd& posed,
+                           const DeformParams& params, int frames) {
   Eigen::MatrixXd out;
-  cuda.evaluate(deformer.frameWeights(posed, params), out);  // warm-up: weight buffer and kernel load
+  evaluator.evaluate(deformer.frameWeights(posed, params), out);  // warm-up: weight buffer and kernel load
   std::vector<double> times;
   for (int f = 0; f < frames; ++f) {
     const CliClock::time_point start = CliClock::now();
-    cuda.evaluate(deformer.frameWeights(posed, params), out);
+    evaluator.evaluate(deformer.frameWeights(posed, params), out);
     times.push_back(1e3 * secondsSince(start));
   }
   return median(times);
@@ -123,7 +122,7 @@ std::string benchUsage() {
          benchOptions().optionHelp();
 }
 
-int runBenchCommand(const std::vector<std::string>& args) {
+int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices) {
   ArgParser options = benchOptions();
   options.parse(args);
   if (options.helpRequested()) {
@@ -151,15 +150,14 @@ int runBenchCommand(const std::vector<std::string>& args) {
 
   // Precompute as the editor does: exact integrals, stored in float.
   const Method somigliana = methods::somigliana();
-  requirePrecomputeMemory(kCommand, somigliana, cage, static_cast<std::size_t>(points.rows()), precompute,
-                          options.text("--mesh"));
   std::vector<double> precomputeTimes;
   std::unique_ptr<CageDeformer> deformer;
   for (int r = 0; r < repeat; ++r) {
     deformer.reset();
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
-    deformer = makeDeformer(somigliana, cage, points, precompute, progress.callback());
+    deformer = somicage::precompute(somigliana, cage, points, precompute, options.text("--mesh"), progress.callback(),
+                                    commandMemoryCheck(kCommand));
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;
@@ -171,25 +169,18 @@ int runBenchCommand(const std::vector<std::string>& args) {
   std::vector<std::pair<std::string, double>> deformMs;
   deformMs.emplace_back("cpu_global", timeFrames(*deformer, posed, {0.0, 0.3, 1.0, true}, frames, false));
   deformMs.emplace_back("cpu_local", timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, false));
-  std::string gpuNote;
-  if (const GpuFrameTimer& gpu = gpuFrameTimer()) {
-    for (const auto& [name, blend] : {std::pair<const char*, double>{"gpu_global", 0.0}, {"gpu_local", 1.0}}) {
-      const double ms = gpu(*deformer, posed, {blend, 0.3, 1.0, true}, frames, gpuNote);
-      if (std::isfinite(ms)) deformMs.emplace_back(name, ms);
-    }
-  } else {
-    gpuNote = "built without the editor's OpenGL backend";
-  }
-  if (cudaStatus().available) {
+  // The other devices of this executable (the CPU is timed above, through deform() as the CPU front ends run it).
+  std::string deviceNotes;
+  for (const FrameDevice& device : devices) {
+    if (device.name == "cpu") continue;
     try {
-      CudaFrameEvaluator cuda(deformer->frameCoordinates(), deformer->dim());
-      for (const auto& [name, blend] : {std::pair<const char*, double>{"cuda_global", 0.0}, {"cuda_local", 1.0}})
-        deformMs.emplace_back(name, timeCudaFrames(*deformer, cuda, posed, {blend, 0.3, 1.0, true}, frames));
-    } catch (const CudaError& e) {
-      std::cerr << "CUDA: skipped (" << e.what() << ")\n";
+      const std::unique_ptr<FrameEvaluator> evaluator = device.make(*deformer);
+      for (const auto& [variant, blend] : {std::pair<const char*, double>{"_global", 0.0}, {"_local", 1.0}})
+        deformMs.emplace_back(device.benchKey + variant,
+                              timeEvaluatorFrames(*deformer, *evaluator, posed, {blend, 0.3, 1.0, true}, frames));
+    } catch (const std::exception& e) {  // no device, no context, or out of its memory: the other timings stand
+      deviceNotes += (deviceNotes.empty() ? "" : "; ") + device.name + " skipped (" + e.what() + ")";
     }
-  } else {
-    std::cerr << "CUDA: skipped (" << cudaStatus().reason << ")\n";
   }
   const double nuUpdateMs = timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, true);
 
@@ -284,10 +275,9 @@ int runBenchCommand(const std::vector<std::string>& args) {
   deformer.reset();
   for (Method method : allMethods()) {
     if (method == somigliana) continue;
-    requirePrecomputeMemory(kCommand, method, cage, static_cast<std::size_t>(points.rows()), precompute,
-                            options.text("--mesh"));
     ProgressReporter progress("precompute " + methodName(method));
-    const std::unique_ptr<CageDeformer> other = makeDeformer(method, cage, points, precompute, progress.callback());
+    const std::unique_ptr<CageDeformer> other = somicage::precompute(
+        method, cage, points, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(kCommand));
     progress.finish();
     DeformParams params;
     params.nu = 0.3;
@@ -337,7 +327,7 @@ int runBenchCommand(const std::vector<std::string>& args) {
                   bandwidth * 1e-9);
     std::printf("\n");
   }
-  if (!gpuNote.empty()) std::printf("gpu               %s\n", gpuNote.c_str());
+  if (!deviceNotes.empty()) std::printf("devices           %s\n", deviceNotes.c_str());
   std::printf("nu update         %.2f ms (a frame at a new nu: only the weights change)\n", nuUpdateMs);
   std::printf("bem factor        %.2f ms (the boundary matrix of %d unknowns, once per cage and nu)\n", bemFactorMs,
               cage.dim() * (cage.numFaces() + 1));

@@ -35,7 +35,30 @@ ArgParser deformOptions() {
           },
           {
               {"--threads", "N", "OpenMP threads (default: all cores)"},
+              {"--device", "NAME",
+               "where the frame is evaluated: cpu (default), opengl, cuda (which integrates the "
+               "3D Somigliana coordinates on the device too)"},
           }));
+}
+
+// The device of --device (default cpu), refused now, before any file is read, when it says it cannot run here.
+const FrameDevice& deviceOption(const ArgParser& args, const FrameDevices& devices) {
+  const std::string name = args.has("--device") ? args.text("--device") : "cpu";
+  std::string offered;
+  for (const FrameDevice& d : devices) offered += (offered.empty() ? "" : ", ") + d.name;
+  const FrameDevice* device = findFrameDevice(devices, name);
+  if (!device) throw InputError("--device", -1, "unknown device '" + name + "'", "this executable offers " + offered);
+  const std::string why = device->unavailable ? device->unavailable() : std::string();
+  if (!why.empty()) throw InputError("--device " + name, -1, "not usable here: " + why, "use --device cpu");
+  return *device;
+}
+
+std::unique_ptr<FrameEvaluator> makeEvaluator(const FrameDevice& device, const CageDeformer& deformer) {
+  try {
+    return device.make(deformer);
+  } catch (const FrameDeviceUnavailable& e) {
+    throw InputError("--device " + device.name, -1, std::string("not usable here: ") + e.what(), "use --device cpu");
+  }
 }
 
 }  // namespace
@@ -54,7 +77,7 @@ std::string deformUsage() {
   return out.str();
 }
 
-int runDeformCommand(const std::vector<std::string>& rawArgs) {
+int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices& devices) {
   ArgParser args = deformOptions();
   args.parse(rawArgs);
   if (args.helpRequested()) {
@@ -69,6 +92,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   setThreadCount(threads);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
+  const FrameDevice& device = deviceOption(args, devices);
 
   // Inputs.
   ReadOptions read;
@@ -84,28 +108,23 @@ int runDeformCommand(const std::vector<std::string>& rawArgs) {
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
+  options.rowIntegrator = device.rowIntegrator;
   // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
-  const std::size_t count = static_cast<std::size_t>(points.rows());
-  bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals");
-  if (normalsByGradient)
-    normalsByGradient = requirePrecomputeMemoryForNormals(kCommand, method, cage, count, options, meshPath);
-  else
-    requirePrecomputeMemory(kCommand, method, cage, count, options, meshPath);
+  const bool normalsByGradient =
+      document.normalCount > 0 && !args.has("--recompute-normals") &&
+      gradientsFitForNormals(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {
     ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer = precompute(method, cage, points, options, meshPath, progress.callback());
+    deformer = precompute(method, cage, points, options, meshPath, progress.callback(),
+                          commandMemoryCheck(kCommand, normalsByGradient));
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
-  const int exterior = deformer->diagnostics().exteriorCount();
-  if (exterior > 0) {
-    std::cerr << kCommand << ": warning: " << exterior << " of " << points.rows() << " points of " << meshPath
-              << " lie outside the cage (or on it); they follow the cage's best-fit similarity, blended smoothly "
-              << "into the deformation inside (docs/engine.md, \"Points outside the cage\")\n";
-  }
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) printNotice(*outside);
   const CliClock::time_point deformStart = CliClock::now();
-  const Eigen::MatrixXd deformed = deformPoints(*deformer, cage, posed, params, posedPath, meshPath);
+  const Eigen::MatrixXd deformed =
+      deformPoints(*deformer, *makeEvaluator(device, *deformer), cage, posed, params, posedPath, meshPath);
   const double deformSeconds = secondsSince(deformStart);
 
   Eigen::MatrixXd result = mesh.vertices;  // a 2D cage moves x, y and keeps z

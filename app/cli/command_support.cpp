@@ -102,27 +102,25 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
   if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
 }
 
-void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients) {
-  // No command offers another storage.
-  const MemoryEstimate estimate =
-      requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), withGradients);
-  const std::optional<std::size_t> available = availableMemoryBytes();
-  // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
-  const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
-  if (big)
-    std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
-              << formatBytes(estimate.total()) << " in all ("
-              << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
+MemoryCheck commandMemoryCheck(const std::string& command, bool withGradients) {
+  return {
+      memoryHint(false), withGradients, [command](const MemoryEstimate& estimate) {
+        const std::optional<std::size_t> available = availableMemoryBytes();
+        // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
+        const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
+        if (big)
+          std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
+                    << formatBytes(estimate.total()) << " in all ("
+                    << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
+      }};
 }
 
-bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                                       const PrecomputeOptions& options, const std::string& meshPath) {
+bool gradientsFitForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                            const PrecomputeOptions& options, const std::string& meshPath) {
   try {
-    requirePrecomputeMemory(command, method, cage, points, options, meshPath, true);
+    requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), true);
     return true;
   } catch (const InputError&) {
-    requirePrecomputeMemory(command, method, cage, points, options, meshPath, false);
     std::cerr << command << ": note: " << meshPath << ": the normals are recomputed from the deformed faces: "
               << "carrying them by the deformation's gradient would not fit in the free memory\n";
     return false;

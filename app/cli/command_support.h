@@ -44,17 +44,16 @@ void setThreadCount(int threads);
 // PATH: ..." for a warning. The commands load through the engine facade with it.
 void printNotice(const Notice& notice);
 
-// Before a precompute: throws InputError naming meshPath when it would not fit in the free memory
-// (core/memory_estimate.h); else, when it takes 1 GB or more, or 10% of the free memory or more, prints
-// "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" on stderr.
+// The memory check of the commands' precomputes (engine.h: precompute): the refusal's hint offers no float
+// storage (no command has that option), and when the precompute takes 1 GB or more, or 10% of the free memory or
+// more, "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" is printed on stderr before it starts.
 // withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
-void requirePrecomputeMemory(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                             const PrecomputeOptions& options, const std::string& meshPath, bool withGradients = false);
+MemoryCheck commandMemoryCheck(const std::string& command, bool withGradients = false);
 
-// requirePrecomputeMemory for a run that would also like the gradients (normals carried by J, normal_transform.h):
-// returns true when they fit as well; when only the coordinates fit, says on stderr that the normals will be
-// recomputed and returns false. Throws as requirePrecomputeMemory when not even the coordinates fit.
-bool requirePrecomputeMemoryForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
-                                       const PrecomputeOptions& options, const std::string& meshPath);
+// Whether the deformation gradients (normals carried by J, normal_transform.h) fit in the free memory next to the
+// coordinates; when they do not, says on stderr that the normals will be recomputed. The precompute's own check
+// (commandMemoryCheck) still refuses a run whose coordinates do not fit.
+bool gradientsFitForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+                            const PrecomputeOptions& options, const std::string& meshPath);
 
 }  // namespace somicage

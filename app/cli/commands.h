@@ -5,13 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "frame_evaluator.h"
+
 namespace somicage {
 
 struct CliCommand {
   const char* name;
-  const char* summary;                               // one line for `somicage help`
-  int (*run)(const std::vector<std::string>& args);  // the arguments after the command name; the exit code
-  std::string (*usage)();                            // the full help text
+  const char* summary;  // one line for `somicage help`
+  // The arguments after the command name and the frame devices the executable offers; the exit code.
+  int (*run)(const std::vector<std::string>& args, const FrameDevices& devices);
+  std::string (*usage)();  // the full help text
 };
 
 // Every command, in the order `somicage help` lists them.
@@ -25,7 +28,7 @@ constexpr int kExitBadInput = 2;  // the input (files, options) is not usable
 
 int runHelpCommand(const std::vector<std::string>& args);
 std::string helpUsage();
-int runDeformCommand(const std::vector<std::string>& args);
+int runDeformCommand(const std::vector<std::string>& args, const FrameDevices& devices);
 std::string deformUsage();
 int runAnimateCommand(const std::vector<std::string>& args);
 std::string animateUsage();
@@ -33,7 +36,7 @@ int runCheckCommand(const std::vector<std::string>& args);
 std::string checkUsage();
 int runCageCommand(const std::vector<std::string>& args);
 std::string cageUsage();
-int runBenchCommand(const std::vector<std::string>& args);
+int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices);
 std::string benchUsage();
 int runAnalyzeCommand(const std::vector<std::string>& args);
 std::string analyzeUsage();

@@ -102,7 +102,7 @@ struct AppState {
   // ---- background work ----
   PrecomputeWorker worker;
   CageMaker cageMaker;                         // File > Make cage... (its dialog and the preview)
-  ExportWorker exporter;  // File > Export deformed mesh / animation (export_jobs.h)
+  ExportWorker exporter;                       // File > Export deformed mesh / animation (export_jobs.h)
   bool loadingScene = false;                   // the running request replaces the scene
   std::optional<Eigen::MatrixXd> pendingPose;  // applied when the loading scene arrives
   std::optional<CameraState> pendingCamera;

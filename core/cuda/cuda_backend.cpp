@@ -138,4 +138,17 @@ RowIntegrator cudaRowIntegrator() {
   };
 }
 
+FrameDevice cudaFrameDevice() {
+  return {"cuda", "cuda",
+          [](const CageDeformer& deformer) -> std::unique_ptr<FrameEvaluator> {
+            if (!cudaStatus().available) throw FrameDeviceUnavailable(cudaStatus().reason);
+            try {
+              return std::make_unique<CudaFrameEvaluator>(deformer.frameCoordinates(), deformer.dim());
+            } catch (const CudaError& e) {
+              throw FrameDeviceUnavailable(e.what());
+            }
+          },
+          [] { return cudaStatus().available ? std::string() : cudaStatus().reason; }, cudaRowIntegrator()};
+}
+
 }  // namespace somicage

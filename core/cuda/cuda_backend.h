@@ -13,6 +13,7 @@
 #include "cage.h"
 #include "cuda/cuda_device.h"  // CudaError
 #include "frame_evaluation.h"
+#include "frame_evaluator.h"
 #include "progress.h"
 #include "somigliana_coordinates.h"
 
@@ -34,17 +35,17 @@ const CudaStatus& cudaStatus();
 // float), then T_p^-1 b_p for d^2 + d outputs (Eq. 11), for every row of C; the exterior points are then blended on
 // the host (blendExteriorPoints). Each call uploads W (K by at most 12) and downloads the rows' points,
 // synchronously. Not thread-safe: one evaluator per thread.
-class CudaFrameEvaluator {
+class CudaFrameEvaluator final : public FrameEvaluator {
  public:
   CudaFrameEvaluator(const FrameCoordinates& C, int dim);
-  ~CudaFrameEvaluator();
+  ~CudaFrameEvaluator() override;
   CudaFrameEvaluator(CudaFrameEvaluator&& other) noexcept;
   CudaFrameEvaluator& operator=(CudaFrameEvaluator&& other) noexcept;
   CudaFrameEvaluator(const CudaFrameEvaluator&) = delete;
   CudaFrameEvaluator& operator=(const CudaFrameEvaluator&) = delete;
 
   // out: #P by d (resized).
-  void evaluate(const FrameWeights& W, Eigen::MatrixXd& out);
+  void evaluate(const FrameWeights& W, Eigen::MatrixXd& out) override;
 
   int dim() const { return dim_; }
 
@@ -53,6 +54,10 @@ class CudaFrameEvaluator {
   int rows_ = 0, columns_ = 0, mainColumns_ = 0, dim_ = 3;  // rows: #P + 2 #E
   std::vector<ExteriorBlend> blends_;
 };
+
+// The CUDA frame device ("cuda", bench key "cuda"): a CudaFrameEvaluator, or FrameDeviceUnavailable with
+// cudaStatus().reason when there is no usable device (or the upload fails).
+FrameDevice cudaFrameDevice();
 
 // integrateSomiglianaCoordinates with the closed-form rule on the device, for 3D cages: the same rows (the layout of
 // C, coordinate_layout.h; double precision, one thread per point summing the faces in the CPU's order) and

@@ -268,5 +268,35 @@ TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
   EXPECT_GT((recomputed[0] - carried[0]).norm(), 0.05) << "the two differ on this mesh";
 }
 
+// --device: an unknown name lists the devices; cuda either gives the CPU's result (with a device) or, without one
+// (this build machine), fails before any precompute with what is missing and what to use, writing nothing.
+TEST(CliDeform, DeviceOptionRunsOnTheDeviceOrSaysWhyNot) {
+  ScratchDir dir;
+  const std::string cage = dataFile("cube_quads.obj"), mesh = dataFile("pyramid_mesh.obj");
+  const Cage rest = loadCage(cage);
+  const std::string posed = dir.file("posed.obj");
+  saveObj(posed, similarity(rest.vertices, 3), cageTopology(rest));
+
+  const RunResult unknown = deform(cage, posed, mesh, dir.file("unknown.obj"), {"--device", "tpu"});
+  EXPECT_EQ(unknown.exitCode, 2) << unknown;
+  EXPECT_NE(unknown.err.find("unknown device 'tpu' (this executable offers cpu"), std::string::npos) << unknown;
+  EXPECT_FALSE(fs::exists(dir.file("unknown.obj")));
+
+  const RunResult cpu = deform(cage, posed, mesh, dir.file("cpu.obj"), {"--variant", "local", "--device", "cpu"});
+  ASSERT_EQ(cpu.exitCode, 0) << cpu;
+  const RunResult cuda = deform(cage, posed, mesh, dir.file("cuda.obj"), {"--variant", "local", "--device", "cuda"});
+  if (cuda.exitCode == 0) {
+    const double size = 1.7 * cageDiameter(rest.vertices);
+    EXPECT_LE(maxDistance(loadMesh(dir.file("cuda.obj")).vertices, loadMesh(dir.file("cpu.obj")).vertices),
+              1e-9 * size);
+  } else {
+    EXPECT_EQ(cuda.exitCode, 2) << cuda;
+    EXPECT_NE(cuda.err.find("somicage deform: --device cuda: not usable here: "), std::string::npos) << cuda;
+    EXPECT_NE(cuda.err.find("(use --device cpu)"), std::string::npos) << cuda;
+    EXPECT_EQ(cuda.err.find("precompute"), std::string::npos) << "refused before the precompute: " << cuda;
+    EXPECT_FALSE(fs::exists(dir.file("cuda.obj")));
+  }
+}
+
 }  // namespace
 }  // namespace somicage

@@ -1,5 +1,5 @@
-// The memory check of somicage deform and bench, run as a process with SOMICAGE_MEMORY_LIMIT_BYTES standing in for
-// the free memory: a precompute that would not fit is refused (exit 2, one line naming the mesh, the sizes and what
+// The memory check of somicage deform, analyze and bench, run as a process with SOMICAGE_MEMORY_LIMIT_BYTES standing in
+// for the free memory: a precompute that would not fit is refused (exit 2, one line naming the mesh, the sizes and what
 // to do, nothing written); a big one announces its estimate first; a small one keeps its single summary line.
 #include <cstdlib>
 
@@ -52,6 +52,23 @@ TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
   EXPECT_NE(r.err.find(" in all (50 kB free)\n"), std::string::npos) << r;
   EXPECT_LT(r.err.find("estimated memory"), r.err.find("precompute")) << "the estimate comes first: " << r;
   EXPECT_TRUE(fs::exists(dir.file("out.obj")));
+}
+
+// analyze checks the deformation gradients too (3 more matrices the size of C): at a limit where deform's ~8 kB
+// fit, analyze's ~27 kB do not, and it is refused before its precompute with the same message.
+TEST(CliMemory, AnalyzeCountsTheGradients) {
+  ScratchDir dir;
+  const MemoryLimit limit("30000");
+  const RunResult deform = runSomicage(cubeDeformArgs(dir.file("out.obj")));
+  EXPECT_EQ(deform.exitCode, 0) << deform;
+  const RunResult analyze = runSomicage({"analyze", "--cage", dataFile("cube_cage.obj"), "--posed",
+                                         dataFile("cube_cage.obj"), "--mesh", dataFile("pyramid_mesh.obj")});
+  EXPECT_EQ(analyze.exitCode, 2) << analyze;
+  EXPECT_EQ(analyze.errLines(), 1) << analyze;
+  for (const char* part : {"somicage analyze: ", "pyramid_mesh.obj: the coordinates of 5 points need",
+                           "but only 30 kB are free", "decimate the mesh"})
+    EXPECT_NE(analyze.err.find(part), std::string::npos) << part << "\n" << analyze;
+  EXPECT_EQ(analyze.err.find("store the coordinates in float"), std::string::npos) << "no such option: " << analyze;
 }
 
 TEST(CliMemory, ASmallPrecomputeKeepsItsSingleSummaryLine) {

@@ -141,3 +141,21 @@ def test_save_obj_round_trip_and_errors(tmp_path, cube_cage):
     with pytest.raises(somicage.InputError, match="face 0 refers to vertex 99 of 8"):
         somicage.save_obj(str(tmp_path / "bad.obj"), vertices, [[0, 1, 99]])
     assert not (tmp_path / "bad.obj").exists()  # nothing written on failure
+
+
+def test_points_outside_warn_in_the_cli_words(tmp_path, cube_cage, cube_points):
+    """Both front ends show the engine's one notice (engine.h: exteriorPointsNotice), each naming its own source."""
+    outside = np.vstack([cube_points, [[2.0, 0.5, 0.5]]])
+    cage_path, mesh_path = str(tmp_path / "cage.obj"), str(tmp_path / "points.obj")
+    somicage.save_obj(cage_path, *unit_cube())
+    somicage.save_obj(mesh_path, outside)
+    result = run_cli("deform", "--cage", cage_path, "--posed", cage_path, "--mesh", mesh_path,
+                     "--out", str(tmp_path / "out.obj"))
+    assert result.returncode == 0, result.stderr
+    cli = [line for line in result.stderr.splitlines() if "lie outside" in line]
+    prefix = f"somicage: warning: {mesh_path}: "
+    assert len(cli) == 1 and cli[0].startswith(prefix + "1 of 201 points lie outside the cage"), result.stderr
+    with pytest.warns(somicage.SomiCageWarning) as caught:
+        somicage.Deformer(cube_cage, outside)
+    python = [str(w.message) for w in caught if "lie outside" in str(w.message)]
+    assert python == ["warning: points: " + cli[0][len(prefix):]]

@@ -1,0 +1,20 @@
+#include "frame_evaluator.h"
+
+namespace somicage {
+
+void CpuFrameEvaluator::evaluate(const FrameWeights& W, Eigen::MatrixXd& out) {
+  evaluateFrame(deformer_.frameCoordinates(), W, deformer_.dim(), deformer_.threads(), out);
+}
+
+FrameDevice cpuFrameDevice() {
+  return {
+      "cpu", "cpu", [](const CageDeformer& deformer) { return std::make_unique<CpuFrameEvaluator>(deformer); }, {}, {}};
+}
+
+const FrameDevice* findFrameDevice(const FrameDevices& devices, const std::string& name) {
+  for (const FrameDevice& device : devices)
+    if (device.name == name) return &device;
+  return nullptr;
+}
+
+}  // namespace somicage
