@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds everything with warnings as errors and runs every test, then builds the core once more under
 # AddressSanitizer + UndefinedBehaviorSanitizer and runs the core tests again, then runs each libFuzzer target for
-# a minute (clang, tests/fuzz/run_fuzzers.sh). This is the README's test command and what CI runs.
+# 40 s (clang, tests/fuzz/run_fuzzers.sh). This is the README's test command and what CI runs.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -21,5 +21,5 @@ cmake --build build-sanitize -j"$jobs" --target somicage_core_tests
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L core
 
-echo "== fuzzing (60 s per target)"
-bash tests/fuzz/run_fuzzers.sh 60
+echo "== fuzzing (40 s per target)"
+bash tests/fuzz/run_fuzzers.sh 40

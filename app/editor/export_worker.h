@@ -6,14 +6,12 @@
 // leaves nothing behind. No GL, no ImGui.
 #pragma once
 
-#include <atomic>
 #include <functional>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "background_job.h"
 #include "progress.h"
 
 namespace somicage::editor {
@@ -31,30 +29,22 @@ class ExportWorker {
   // The work: reports progress in [0, 1] (returning false means stop: throw Cancelled) and returns the notes.
   using Job = std::function<std::vector<std::string>(const ProgressCallback& progress)>;
 
-  ExportWorker() = default;
-  ~ExportWorker();  // cancels and joins
-  ExportWorker(const ExportWorker&) = delete;
-  ExportWorker& operator=(const ExportWorker&) = delete;
-
-  // Starts job on the worker; false (nothing started) while another export runs.
+  // Starts job on the worker; false (nothing started) while another export runs: an export is never cancelled by
+  // starting another one.
   bool start(std::string target, std::string doneMessage, Job job);
-  void cancel();  // the running job stops at its next progress report, with cancelled = true
-  bool busy() const { return busy_.load(); }
-  double progress() const { return progress_.load(); }
-  std::string target() const;
+  void cancel() { job_.cancel(); }  // the running job stops at its next progress report, with cancelled = true
+  bool busy() const { return job_.busy(); }
+  double progress() const { return job_.progress(); }
+  const std::string& target() const { return target_; }  // of the last export started
 
   // The outcome of the finished job, once; empty while running or when already taken.
-  std::optional<ExportOutcome> poll();
+  std::optional<ExportOutcome> poll() { return job_.poll(); }
   // Blocks until the running job ends and returns its outcome (empty when nothing ran).
-  std::optional<ExportOutcome> wait();
+  std::optional<ExportOutcome> wait() { return job_.wait(); }
 
  private:
-  std::thread thread_;
-  std::atomic<bool> busy_{false}, cancel_{false};
-  std::atomic<double> progress_{0.0};
-  mutable std::mutex mutex_;
-  std::optional<ExportOutcome> outcome_;
-  std::string target_;
+  std::string target_;  // written and read by the UI thread only
+  BackgroundJob<ExportOutcome> job_;
 };
 
 // Progress of one stage of a job: maps the stage's [0, 1] onto [from, to] of the whole.

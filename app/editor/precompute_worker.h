@@ -3,17 +3,15 @@
 // the free memory fails before any precompute, with the estimate in its error (core/memory_estimate.h). No GL.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "background_job.h"
 #include "deformer.h"
 #include "scene.h"
 
@@ -48,33 +46,20 @@ struct PrecomputeOutcome {
 
 class PrecomputeWorker {
  public:
-  PrecomputeWorker() = default;
-  ~PrecomputeWorker();  // cancels and joins
-  PrecomputeWorker(const PrecomputeWorker&) = delete;
-  PrecomputeWorker& operator=(const PrecomputeWorker&) = delete;
-
   // Cancels (and joins) any running request, then starts this one. Returns its id.
   std::uint64_t start(PrecomputeRequest request);
-  void cancel();  // asks the running request to stop; it finishes with cancelled = true
-  bool busy() const { return busy_.load(); }
-  double progress() const { return progress_.load(); }  // 0..1 over all methods of the request
-  std::string stage() const;                            // e.g. "Loading files", "Somigliana 2/3"
+  void cancel() { job_.cancel(); }  // asks the running request to stop; it finishes with cancelled = true
+  bool busy() const { return job_.busy(); }
+  double progress() const { return job_.progress(); }  // 0..1 over all methods of the request
+  std::string stage() const { return job_.stage(); }    // e.g. "Loading files", "Somigliana 2/3"
   // The outcome of the last finished request, once; empty while running or when already taken.
-  std::optional<PrecomputeOutcome> poll();
+  std::optional<PrecomputeOutcome> poll() { return job_.poll(); }
   // Blocks until the running request finishes and returns its outcome (empty when nothing ran).
-  std::optional<PrecomputeOutcome> wait();
+  std::optional<PrecomputeOutcome> wait() { return job_.wait(); }
 
  private:
-  void run(PrecomputeRequest request, std::uint64_t id);
-  void setStage(std::string s);
-
-  std::thread thread_;
-  std::atomic<bool> busy_{false}, cancel_{false};
-  std::atomic<double> progress_{0.0};
-  mutable std::mutex mutex_;
-  std::string stage_;
-  std::optional<PrecomputeOutcome> outcome_;
   std::uint64_t nextId_ = 1;
+  BackgroundJob<PrecomputeOutcome> job_;
 };
 
 }  // namespace somicage::editor
