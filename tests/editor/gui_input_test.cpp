@@ -249,7 +249,7 @@ TEST(GuiInput, MakeCageAcceptAndUndoReplaceTheCageAndGiveItBack) {
       dir,
       "start\nxdotool mousemove 150 690; settle; shot before.png\n"
       "xdotool mousemove 18 9 click 1; sleep 0.5; shot menu.png\n"
-      "xdotool mousemove 70 160 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
+      "xdotool mousemove 60 140 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
       "waitfor 'cage candidate' 1 60 || exit 4\nsettle; shot dialog.png\n"
       "xdotool mousemove 760 76; xdotool keydown ctrl click 1 keyup ctrl; sleep 0.3\n"
       "xdotool key ctrl+a; xdotool type --delay 20 '60'; xdotool key Return\n"
