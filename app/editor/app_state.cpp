@@ -64,16 +64,26 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
   state.worker.start(std::move(request));
 }
 
-void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
-                       const std::string& posedPath) {
+namespace {
+
+// Starts loading a scene on the worker with `load`, then precomputing the views' deformers.
+void requestLoad(AppState& state, std::function<Scene()> load) {
   PrecomputeRequest request;
-  request.loadScene = [meshPath, cagePath]() { return loadScene(meshPath, cagePath); };
+  request.loadScene = std::move(load);
   request.methods = state.viewMethods();
   request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
   state.loadingScene = true;
+  state.pendingRecent.reset();
+  state.worker.start(std::move(request));
+}
+
+}  // namespace
+
+void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
+                       const std::string& posedPath) {
+  requestLoad(state, [meshPath, cagePath]() { return loadScene(meshPath, cagePath); });
   state.pendingPosedPath = posedPath;
   state.pendingRecent = RecentEntry::files(meshPath, cagePath, posedPath);
-  state.worker.start(std::move(request));
 }
 
 void requestDemo(AppState& state, int dim) { requestScene(state, std::make_shared<const Scene>(makeDemoScene(dim))); }
@@ -251,14 +261,15 @@ Document currentDocument(const AppState& state) {
           state.params,
           state.animation.poses,
           state.animation.timeline,
-          state.scene ? state.scene->restCage : Cage{}};
+          state.scene ? state.scene->restCage : Cage{},
+          state.scene ? state.scene->cagePath : std::string()};
 }
 
-void replaceRestCage(AppState& state, const Cage& cage) {
+void replaceRestCage(AppState& state, const Cage& cage, const std::string& cagePath) {
   if (!state.scene) return;
   auto scene = std::make_shared<Scene>(*state.scene);
   scene->restCage = cage;
-  scene->cagePath.clear();  // the cage is no longer the file's
+  scene->cagePath = cagePath;
   state.scene = std::move(scene);
   ++state.sceneGeneration;
   state.deformers.clear();
@@ -271,8 +282,9 @@ void replaceRestCage(AppState& state, const Cage& cage) {
 }
 
 void applyDocument(AppState& state, const Document& document) {
-  if (state.scene && document.restCage.numVertices() > 0 && !sameCage(document.restCage, state.scene->restCage))
-    replaceRestCage(state, document.restCage);
+  if (state.scene && document.restCage.numVertices() > 0 &&
+      (!sameCage(document.restCage, state.scene->restCage) || document.cagePath != state.scene->cagePath))
+    replaceRestCage(state, document.restCage, document.cagePath);
   if (document.pose.rows() == state.pose.rows() && document.pose.cols() == state.pose.cols())
     setPose(state, document.pose);
   setParams(state, document.params);
@@ -385,6 +397,7 @@ Session makeSession(const AppState& state) {
     s.meshPath = state.scene->meshPath;
     s.cagePath = state.scene->cagePath;
     s.demoDim = state.scene->dim();
+    if (s.cagePath.empty()) s.restCage = state.scene->restCage;  // no file holds it: the session does
   }
   s.pose = state.pose;
   s.method = state.method;
@@ -405,9 +418,11 @@ void applySession(AppState& state, const Session& s) {
   state.params = s.params;
   state.compare = s.compare;
   if (!s.compareMethods.empty()) state.compareMethods = s.compareMethods;
+  const bool inlineCage = s.restCage.numVertices() > 0;
   const bool sameScene = state.scene && !state.loadingScene && state.scene->meshPath == s.meshPath &&
                          state.scene->cagePath == s.cagePath &&
-                         (!s.meshPath.empty() || state.scene->dim() == s.demoDim);
+                         (!s.meshPath.empty() || state.scene->dim() == s.demoDim) &&
+                         (!inlineCage || sameCage(state.scene->restCage, s.restCage));
   if (sameScene) {
     if (s.pose.rows() == state.pose.rows() && s.pose.cols() == state.pose.cols()) setPose(state, s.pose);
     commitEdit(state, "Load session");
@@ -418,7 +433,13 @@ void applySession(AppState& state, const Session& s) {
   }
   if (s.pose.rows() > 0) state.pendingPose = s.pose;
   state.pendingCamera = s.camera;
-  if (s.meshPath.empty()) {
+  if (inlineCage) {
+    requestLoad(state, [mesh = s.meshPath, cage = s.restCage, notices = s.cageNotices]() {
+      Scene scene = loadSceneWithCage(mesh, cage, "the session's cage");
+      for (const Notice& n : notices) scene.notices.push_back(sceneNotice(n));
+      return scene;
+    });
+  } else if (s.meshPath.empty()) {
     requestDemo(state, s.demoDim);
   } else {
     requestSceneFiles(state, s.meshPath, s.cagePath);

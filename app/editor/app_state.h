@@ -187,8 +187,9 @@ bool hasDeformer(const AppState& state, Method method);
 // commit once, when they end.
 Document currentDocument(const AppState& state);
 void applyDocument(AppState& state, const Document& document);  // restores exactly; no history
-// Makes `cage` the scene's rest cage, at rest, and precomputes its deformers (no history; Make cage commits).
-void replaceRestCage(AppState& state, const Cage& cage);
+// Makes `cage` (read from cagePath; empty: from no file) the scene's rest cage, at rest, and precomputes its deformers
+// (no history; Make cage commits).
+void replaceRestCage(AppState& state, const Cage& cage, const std::string& cagePath = "");
 bool commitEdit(AppState& state, const std::string& name);
 void setPose(AppState& state, const Eigen::MatrixXd& pose);   // no history; marks dirty
 void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty

@@ -38,7 +38,7 @@ bool operator==(const Document& a, const Document& b) {
   return a.method == b.method && a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose &&
          p.nu == q.nu && p.gamma == q.gamma && p.blend == q.blend && p.tractionCorrection == q.tractionCorrection &&
          p.corotational == q.corotational && samePoses(a.poses, b.poses) && sameTimeline(a.timeline, b.timeline) &&
-         sameCage(a.restCage, b.restCage);
+         sameCage(a.restCage, b.restCage) && a.cagePath == b.cagePath;
 }
 
 }  // namespace somicage::editor

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <string>
 
 #include "cage.h"
 #include "deformer.h"
@@ -22,6 +23,7 @@ struct Document {
   PoseLibrary poses;  // the pose library and the timeline (pose_keys.h)
   Timeline timeline;
   Cage restCage;  // the scene's rest cage: File > Make cage replaces it (cage_maker.h); empty: not recorded
+  std::string cagePath;  // the file restCage is read from; empty: none (generated, or the demo's): sessions hold it
 };
 
 // Exact comparison (bitwise for the numbers: undo must restore exactly, and "no change" must be no step).

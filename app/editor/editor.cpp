@@ -182,7 +182,12 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
   feedInput(window, queue);
   pollWorker(state);
+  const std::uint64_t candidateShown = state.cageMaker.candidateGeneration();
   state.cageMaker.poll();
+  if (state.logActions && state.cageMaker.candidateGeneration() != candidateShown && state.cageMaker.candidate()) {
+    std::printf("cage candidate %d faces\n", state.cageMaker.candidate()->generated.cage.numFaces());  // GUI tests
+    std::fflush(stdout);
+  }
   pollExport(state);
   if (!state.droppedPaths.empty()) {
     std::vector<std::string> dropped;

@@ -57,8 +57,10 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
     commandItem(state, "Export deformed mesh...", "export");
     const bool meshReady = state.scene && !state.loadingScene && state.dim() == 3;
-    if (ImGui::MenuItem("Make cage...", nullptr, false, meshReady))  // cage_maker.h
+    if (ImGui::MenuItem("Make cage...", nullptr, false, meshReady)) {  // cage_maker.h
       openCageMaker(state, std::clamp(state.scene->restCage.numFaces(), CageGenerationOptions::kMinFaces, 2000));
+      if (state.logActions) std::printf("dialog Make cage\n"), std::fflush(stdout);
+    }
     if (ImGui::MenuItem("Export animation...")) {
       state.animation.exportDialogRequested = true;
       state.animation.showPanels = true;  // the dialog is drawn with the panels' code

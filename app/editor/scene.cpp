@@ -2,10 +2,10 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "cage_generation.h"
-#include "engine.h"
 #include "mesh_formats.h"
 
 namespace somicage::editor {
@@ -124,26 +124,49 @@ Cage generatedCage(const PolygonMesh& mesh, const std::string& meshPath, std::ve
   return generated.cage;
 }
 
-Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
+namespace {
+
+// MESH around the cage makeCage gives for it (called with the mesh and the notice sink, after the mesh loaded and
+// before its points are placed), in the engine's one order (engine.h); the notices go to the status bar.
+Scene meshScene(const std::string& meshPath, const std::string& cageSource,
+                const std::function<Cage(const PolygonMesh&, Scene&, const NoticeSink&)>& makeCage) {
   Scene s;
   auto document = std::make_shared<const MeshDocument>(loadMeshDocument(meshPath));
   const PolygonMesh& mesh = document->geometry;
-  // The engine's one order (engine.h), for a generated cage too; its notices go to the status bar. The placement
-  // warning names both files itself (no source); every other notice is about the cage.
-  auto notice = [&](const Notice& n) {
-    s.notices.push_back(std::string(n.source.empty() ? "mesh " : "cage ") +
-                        (n.kind == Notice::Kind::Repair ? "repaired: " : "warning: ") + n.text);
-  };
-  s.restCage = cagePath.empty() ? prepareCage(generatedCage(mesh, meshPath, s.notices), meshPath, notice)
-                                : loadUsableCage(cagePath, notice);
+  const NoticeSink notice = [&](const Notice& n) { s.notices.push_back(sceneNotice(n)); };
+  s.restCage = makeCage(mesh, s, notice);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
-  s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cagePath, notice);
+  s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cageSource, notice);
   s.document = std::move(document);
   s.meshPath = meshPath;
-  s.cagePath = cagePath;
   const std::size_t slash = meshPath.find_last_of('/');
   s.name = slash == std::string::npos ? meshPath : meshPath.substr(slash + 1);
   return s;
+}
+
+}  // namespace
+
+std::string sceneNotice(const Notice& n) {
+  return std::string(n.source.empty() ? "mesh " : "cage ") +
+         (n.kind == Notice::Kind::Repair ? "repaired: " : "warning: ") + n.text;
+}
+
+Scene loadScene(const std::string& meshPath, const std::string& cagePath) {
+  Scene s = meshScene(meshPath, cagePath, [&](const PolygonMesh& mesh, Scene& scene, const NoticeSink& notice) {
+    return cagePath.empty() ? prepareCage(generatedCage(mesh, meshPath, scene.notices), meshPath, notice)
+                            : loadUsableCage(cagePath, notice);
+  });
+  s.cagePath = cagePath;
+  return s;
+}
+
+Scene loadSceneWithCage(const std::string& meshPath, const Cage& cage, const std::string& cageSource) {
+  if (meshPath.empty()) {
+    Scene demo = makeDemoScene(cage.dim());
+    demo.restCage = cage;
+    return demo;
+  }
+  return meshScene(meshPath, cageSource, [&](const PolygonMesh&, Scene&, const NoticeSink&) { return cage; });
 }
 
 void bounds3(const Eigen::MatrixXd& points, Eigen::Vector3d& lo, Eigen::Vector3d& hi) {

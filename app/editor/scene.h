@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cage.h"
+#include "engine.h"
 #include "mesh_document.h"
 
 namespace somicage::editor {
@@ -35,6 +36,14 @@ Scene makeDemoScene(int dim);
 // 200 faces), which the notices say too. Throws InputError on any problem with the files, and when the repaired cage
 // is still not valid.
 Scene loadScene(const std::string& meshPath, const std::string& cagePath);
+// MESH (as loadScene) around a cage given in memory, already prepared (a session's inline cage, session.h): cagePath
+// stays empty and cageSource names the cage in the placement warning. An empty meshPath: the built-in demo of the
+// cage's dimension, with this cage.
+Scene loadSceneWithCage(const std::string& meshPath, const Cage& cage, const std::string& cageSource);
+
+// A line of Scene::notices: "cage repaired: TEXT", "cage warning: TEXT", or "mesh warning: TEXT" for a notice without
+// a source (the placement warning, which names both files itself).
+std::string sceneNotice(const Notice& notice);
 
 // Axis-aligned bounds of #V by 2 or 3 points as 3D corners (z = 0 for 2D).
 void bounds3(const Eigen::MatrixXd& points, Eigen::Vector3d& lo, Eigen::Vector3d& hi);

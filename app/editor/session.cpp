@@ -23,6 +23,18 @@ JsonValue numberOrInfinity(double x) {
   return JsonValue::number(x);
 }
 
+// A matrix as an array of rows (the pose, the inline cage's vertices and faces).
+template <typename Matrix>
+JsonValue rows(const Matrix& m) {
+  JsonValue out = JsonValue::array();
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    JsonValue row = JsonValue::array();
+    for (Eigen::Index c = 0; c < m.cols(); ++c) row.push(JsonValue::number(static_cast<double>(m(i, c))));
+    out.push(std::move(row));
+  }
+  return out;
+}
+
 JsonValue vec3(const Eigen::Vector3d& v) {
   JsonValue a = JsonValue::array();
   for (int i = 0; i < 3; ++i) a.push(JsonValue::number(v[i]));
@@ -67,6 +79,48 @@ struct Reader {
       fail("unknown method \"" + name + "\" (expected " + methodNameList() + ")");
     }
   }
+  // An array of rows of 2 or 3 numbers each, all of the first row's length; may be empty (0 by 0).
+  Eigen::MatrixXd rows(const JsonValue& v, const std::string& name) const {
+    if (!v.isArray()) fail(name + " must be an array of rows");
+    if (v.items().empty()) return Eigen::MatrixXd();
+    const std::size_t cols = v.items()[0].items().size();
+    if (cols != 2 && cols != 3) fail(name + " rows must have 2 or 3 numbers");
+    Eigen::MatrixXd out(static_cast<Eigen::Index>(v.items().size()), static_cast<Eigen::Index>(cols));
+    for (std::size_t i = 0; i < v.items().size(); ++i) {
+      const JsonValue& row = v.items()[i];
+      if (!row.isArray() || row.items().size() != cols)
+        fail(name + " row " + std::to_string(i) + " has the wrong size");
+      for (std::size_t c = 0; c < cols; ++c) {
+        if (!row.items()[c].isNumber()) fail(name + " row " + std::to_string(i) + " holds a non-number");
+        out(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = row.items()[c].asNumber();
+      }
+    }
+    return out;
+  }
+  // The inline cage: its shape here, then everything a cage file gets (prepareCage: repair, validation, warnings).
+  Cage cage(const JsonValue& v, const Session& s, std::vector<Notice>& notices) const {
+    if (!v.isObject()) fail("\"restCage\" must be an object with \"vertices\" and \"faces\"");
+    if (!s.cagePath.empty()) fail("\"restCage\" and a \"cage\" file: a session holds one or the other");
+    Cage cage;
+    cage.vertices = rows(get(v, "vertices"), "\"restCage\" vertices");
+    const Eigen::MatrixXd faces = rows(get(v, "faces"), "\"restCage\" faces");
+    if (cage.numVertices() == 0 || faces.rows() == 0) fail("\"restCage\" needs vertices and faces");
+    if (faces.cols() != cage.dim())
+      fail("\"restCage\" faces must have " + std::to_string(cage.dim()) + " vertex indices each, as its vertices " +
+           std::to_string(cage.dim()) + " coordinates");
+    if (s.meshPath.empty() && cage.dim() != s.demoDim)
+      fail("the demo's \"restCage\" must have \"demoDim\" coordinates per vertex");
+    // Checked as doubles, before the cast: a huge or fractional index has no int.
+    if (!(faces.array() >= 0).all() || !(faces.array() < cage.numVertices()).all() ||
+        !(faces.array() == faces.array().floor()).all())
+      fail("\"restCage\" faces must hold vertex indices from 0 to " + std::to_string(cage.numVertices() - 1));
+    cage.faces = faces.cast<int>();
+    try {
+      return prepareCage(std::move(cage), source, [&](const Notice& n) { notices.push_back(n); });
+    } catch (const InputError& e) {
+      fail("\"restCage\": " + e.problem());
+    }
+  }
   Eigen::Vector3d vec3(const JsonValue& obj, const std::string& key) const {
     const JsonValue& v = get(obj, key);
     if (!v.isArray() || v.items().size() != 3) fail("field \"" + key + "\" must be an array of 3 numbers");
@@ -84,17 +138,17 @@ struct Reader {
 std::string sessionToJson(const Session& s) {
   JsonValue root = JsonValue::object();
   root.set("format", JsonValue::string("somicage-session"));
-  root.set("version", JsonValue::number(2));
+  root.set("version", JsonValue::number(3));
   root.set("mesh", JsonValue::string(s.meshPath));
   root.set("cage", JsonValue::string(s.cagePath));
   root.set("demoDim", JsonValue::number(s.demoDim));
-  JsonValue pose = JsonValue::array();
-  for (Eigen::Index i = 0; i < s.pose.rows(); ++i) {
-    JsonValue row = JsonValue::array();
-    for (Eigen::Index c = 0; c < s.pose.cols(); ++c) row.push(JsonValue::number(s.pose(i, c)));
-    pose.push(std::move(row));
+  if (s.restCage.numVertices() > 0) {
+    JsonValue cage = JsonValue::object();
+    cage.set("vertices", rows(s.restCage.vertices));
+    cage.set("faces", rows(s.restCage.faces));
+    root.set("restCage", std::move(cage));
   }
-  root.set("pose", std::move(pose));
+  root.set("pose", rows(s.pose));
   root.set("method", JsonValue::string(methodName(s.method)));
   JsonValue params = JsonValue::object();
   params.set("blend", JsonValue::number(s.params.blend));
@@ -124,29 +178,23 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   if (!root.isObject()) r.fail("a session file must hold a JSON object");
   if (r.string(root, "format") != "somicage-session") r.fail("not a SomiCage session (\"format\" differs)");
   const double version = r.number(root, "version");
-  if (version != 1 && version != 2) r.fail("unsupported session version (this build reads versions 1 and 2)");
+  if (version != 1 && version != 2 && version != 3)
+    r.fail("unsupported session version (this build reads versions 1 to 3)");
   Session s;
   s.meshPath = r.string(root, "mesh");
   s.cagePath = r.string(root, "cage");
   const double demoDim = r.number(root, "demoDim");  // compared before the cast: a huge value does not fit an int
   if (demoDim != 2 && demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
   s.demoDim = static_cast<int>(demoDim);
-  const JsonValue& pose = r.get(root, "pose");
-  if (!pose.isArray()) r.fail("\"pose\" must be an array of rows");
-  if (!pose.items().empty()) {
-    const std::size_t cols = pose.items()[0].items().size();
-    if (cols != 2 && cols != 3) r.fail("\"pose\" rows must have 2 or 3 numbers");
-    s.pose.resize(static_cast<Eigen::Index>(pose.items().size()), static_cast<Eigen::Index>(cols));
-    for (std::size_t i = 0; i < pose.items().size(); ++i) {
-      const JsonValue& row = pose.items()[i];
-      if (!row.isArray() || row.items().size() != cols)
-        r.fail("\"pose\" row " + std::to_string(i) + " has the wrong size");
-      for (std::size_t c = 0; c < cols; ++c) {
-        if (!row.items()[c].isNumber()) r.fail("\"pose\" row " + std::to_string(i) + " holds a non-number");
-        s.pose(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = row.items()[c].asNumber();
-      }
-    }
+  s.pose = r.rows(r.get(root, "pose"), "\"pose\"");
+  if (version >= 3) {
+    if (const JsonValue* cage = root.find("restCage")) s.restCage = r.cage(*cage, s, s.cageNotices);
   }
+  if (s.restCage.numVertices() > 0 && s.pose.size() > 0 &&
+      (s.pose.rows() != s.restCage.numVertices() || s.pose.cols() != s.restCage.dim()))
+    r.fail("\"pose\" has " + std::to_string(s.pose.rows()) + " rows but \"restCage\" " +
+           std::to_string(s.restCage.numVertices()) + " vertices of " + std::to_string(s.restCage.dim()) +
+           " coordinates");
   s.method = r.method(r.string(root, "method"));
   const JsonValue& params = r.get(root, "params");
   s.params.blend = r.number(params, "blend");

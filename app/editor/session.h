@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "cage.h"
 #include "camera.h"
 #include "deformer.h"
+#include "engine.h"
 #include "pose_timeline.h"
 
 namespace somicage::editor {
@@ -19,6 +21,11 @@ std::vector<Method> defaultCompareMethods();
 struct Session {
   std::string meshPath, cagePath;  // both empty: the built-in demo of dimension demoDim
   int demoDim = 3;
+  // The rest cage when it has no file (File > Make cage, a mesh opened without a cage, the demos): written inline so
+  // that loading gives back this very cage, not a new default one. Empty (no vertices) when cagePath names its file.
+  Cage restCage;
+  // Read, not written: what loading repaired in restCage and warned about (prepareCage).
+  std::vector<Notice> cageNotices;
   Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
   Method method;         // the registry's first (method.h)
   DeformParams params;
@@ -29,11 +36,13 @@ struct Session {
   Timeline timeline;
 };
 
-// JSON text with "format": "somicage-session", "version": 2 (version 2 adds "poses" and "timeline",
-// core/pose_timeline_json.h; version 1 files load with an empty library and timeline). nu = +-infinity is written as
-// "inf" / "-inf".
+// JSON text with "format": "somicage-session", "version": 3 (version 2 adds "poses" and "timeline",
+// core/pose_timeline_json.h; version 3 adds "restCage": {"vertices": [[x, y, z], ...], "faces": [[a, b, c], ...]},
+// 0-based, when the cage has no file). Versions 1 and 2 load with an empty library and timeline and no inline cage.
+// nu = +-infinity is written as "inf" / "-inf"; every number with %.17g, so doubles read back bitwise.
 std::string sessionToJson(const Session& session);
-// Throws InputError naming `source` on a syntax error, a missing or mistyped field, or an unknown method.
+// Throws InputError naming `source` on a syntax error, a missing or mistyped field, an unknown method, or an inline
+// cage that is malformed or that a cage file with the same content would be refused for (prepareCage, engine.h).
 Session sessionFromJson(const std::string& text, const std::string& source);
 
 void saveSession(const std::string& path, const Session& session);  // atomic

@@ -1,19 +1,24 @@
 // File > Make cage... (cage_maker.h): the worker's state machine with a generator the test controls (a newer
 // request supersedes the running one, which sees its progress callback refuse and never shows its result; Stop;
-// errors), a real generation on the 3D demo checked by the exact enclosure test, and Accept as one undo step that
-// undo reverts to the old cage, pose and pose library bitwise, with the unsaved-changes state following.
+// errors), a real generation on the 3D demo checked by the exact enclosure test, Accept as one undo step that
+// undo reverts to the old cage, pose and pose library bitwise, with the unsaved-changes state following, and the made
+// cage kept by the session file and the autosave (it has no file of its own).
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
+#include <filesystem>
 #include <thread>
 
 #include "app_state.h"
+#include "autosave.h"
 #include "cage_enclosure.h"
 #include "cage_maker.h"
 #include "core/test_shapes.h"
+#include "editor_test_support.h"
 #include "errors.h"
 #include "methods/method_descriptors.h"
+#include "obj_io.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -55,15 +60,26 @@ void waitUntil(const std::atomic<int>& counter, int value) {
   ASSERT_GE(counter.load(), value) << "the worker did not get there in 20 s";
 }
 
+// A folder under the test temp dir, removed at the end.
+class TempFolder {
+ public:
+  explicit TempFolder(const std::string& name) : root_(std::filesystem::path(::testing::TempDir()) / name) {
+    std::filesystem::remove_all(root_);
+    std::filesystem::create_directories(root_);
+  }
+  ~TempFolder() {
+    std::error_code ignored;
+    std::filesystem::remove_all(root_, ignored);
+  }
+  std::string path(const std::string& name) const { return (root_ / name).string(); }
+
+ private:
+  std::filesystem::path root_;
+};
+
 class CageMakerTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    requestDemo(state, 3);
-    std::optional<PrecomputeOutcome> out = state.worker.wait();
-    ASSERT_TRUE(out.has_value());
-    installOutcome(state, std::move(*out));
-    ASSERT_TRUE(state.scene);
-  }
+  void SetUp() override { openDemoScene(state); }
   AppState state;
 };
 
@@ -132,10 +148,7 @@ TEST_F(CageMakerTest, AGenerationErrorIsShown) {
 }
 
 TEST_F(CageMakerTest, TwoDimensionalScenesAreRefused) {
-  requestDemo(state, 2);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
-  ASSERT_TRUE(out.has_value());
-  installOutcome(state, std::move(*out));
+  openDemoScene(state, 2);
   openCageMaker(state, 40);
   EXPECT_FALSE(state.cageMaker.isOpen());
   ASSERT_EQ(state.errors.size(), 1u);
@@ -176,9 +189,7 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   const Document after = currentDocument(state);
 
   // The new cage deforms right away: its rest pose reproduces the mesh (Somigliana, to its integration error).
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
-  ASSERT_TRUE(out.has_value());
-  installOutcome(state, std::move(*out));
+  installNextOutcome(state);
   ASSERT_TRUE(hasDeformer(state, methods::somigliana()));
   updateDeformation(state);
   const Eigen::MatrixXd& shown = displayedPoints(state, methods::somigliana());
@@ -194,4 +205,94 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   redo(state);
   EXPECT_EQ(currentDocument(state), after);
   EXPECT_TRUE(hasUnsavedChanges(state));
+}
+
+// The lost-work bug: a made cage has no file, so the session holds it inline. A fresh editor that opens the saved
+// session, or restores the autosave of a crashed run, gets this very cage (bitwise) and the pose on it, where it used
+// to make a new default cage for the mesh.
+TEST_F(CageMakerTest, TheSessionAndTheAutosaveKeepTheMadeCageAndItsPose) {
+  openCageMaker(state, 60);  // not the default 200: a regenerated default cage could not pass for it
+  state.cageMaker.wait();
+  ASSERT_EQ(state.cageMaker.status(), CageMaker::Status::Ready) << state.cageMaker.error();
+  ASSERT_TRUE(acceptGeneratedCage(state));
+  installNextOutcome(state);  // its deformers
+  const Cage made = state.scene->restCage;
+  ASSERT_LE(made.numFaces(), 60);
+  ASSERT_FALSE(sameCage(made, makeDemoScene(3).restCage));
+  Eigen::MatrixXd posed = state.pose;
+  posed.row(0) += Eigen::RowVector3d(0.1, 1.0 / 3.0, -0.2);
+  posed.row(made.numVertices() - 1) *= 1.0 + 1e-15;  // the last bits count
+  setPose(state, posed);
+  ASSERT_TRUE(commitEdit(state, "Grab"));
+
+  TempFolder folder("somicage_made_cage_session");
+  const std::string sessionPath = folder.path("made.json");
+  ASSERT_TRUE(saveSessionFile(state, sessionPath)) << state.errors.front();
+  AppState reopened;
+  ASSERT_TRUE(loadSessionFile(reopened, sessionPath)) << reopened.errors.front();
+  installNextOutcome(reopened);
+  ASSERT_TRUE(reopened.errors.empty()) << reopened.errors.front();
+  ASSERT_TRUE(reopened.scene);
+  EXPECT_TRUE(reopened.scene->cagePath.empty());
+  EXPECT_TRUE(sameCage(reopened.scene->restCage, made)) << reopened.scene->restCage.numFaces() << " faces";
+  EXPECT_EQ(reopened.pose, posed);
+  EXPECT_FALSE(hasUnsavedChanges(reopened));
+  EXPECT_EQ(reopened.documentPath, sessionPath);
+
+  // A crash: the autosave holds the same, and restoring it in a new editor gives it back (unsaved, as it exists
+  // nowhere else).
+  const AutosavePaths paths = autosavePaths(folder.path("config").c_str(), nullptr);
+  {
+    Autosave autosave(paths, 1.0);
+    autosave.begin();
+    autosave.tick(makeSession(state), 0.0);
+    ASSERT_TRUE(autosave.tick(makeSession(state), 1.0));
+  }  // no finish()
+  const AutosaveLeftover leftover = Autosave(paths, 1.0).begin();
+  ASSERT_TRUE(leftover.session.has_value()) << leftover.error;
+  AppState restored;
+  restored.restoreOffer = leftover.session;
+  acceptRestoreOffer(restored);
+  installNextOutcome(restored);
+  ASSERT_TRUE(restored.errors.empty()) << restored.errors.front();
+  ASSERT_TRUE(restored.scene);
+  EXPECT_TRUE(sameCage(restored.scene->restCage, made));
+  EXPECT_EQ(restored.pose, posed);
+  EXPECT_TRUE(hasUnsavedChanges(restored));
+}
+
+// A scene whose cage comes from a file: Make cage drops the file (the session then holds the cage inline), and undo
+// brings the file back with the cage, so the session names it again instead of copying it.
+TEST_F(CageMakerTest, UndoingMakeCageGivesTheCageItsFileBack) {
+  TempFolder folder("somicage_make_cage_file");
+  const std::string meshPath = folder.path("bar.obj"), cagePath = folder.path("bar_cage.obj");
+  PolygonMesh triangles;
+  for (Eigen::Index f = 0; f < state.scene->meshTriangles.rows(); ++f) {
+    const Eigen::RowVector3i t = state.scene->meshTriangles.row(f);
+    triangles.faces.push_back({t[0], t[1], t[2]});
+  }
+  saveObj(meshPath, state.scene->meshVertices, triangles);
+  saveObj(cagePath, state.scene->restCage.vertices, cageTopology(state.scene->restCage));
+  requestSceneFiles(state, meshPath, cagePath);
+  installNextOutcome(state);
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_EQ(state.scene->cagePath, cagePath);
+  EXPECT_EQ(makeSession(state).cagePath, cagePath);
+  EXPECT_EQ(makeSession(state).restCage.numVertices(), 0) << "a cage with a file is named, not copied";
+
+  SteeredGenerator steered;
+  steered.release = true;
+  state.cageMaker.setGenerator(steered.generator());
+  openCageMaker(state, 20);
+  state.cageMaker.wait();
+  ASSERT_TRUE(acceptGeneratedCage(state));
+  const Session afterMake = makeSession(state);
+  EXPECT_TRUE(afterMake.cagePath.empty());
+  EXPECT_TRUE(sameCage(afterMake.restCage, state.scene->restCage));
+
+  undo(state);
+  EXPECT_EQ(state.scene->cagePath, cagePath);
+  EXPECT_EQ(makeSession(state).restCage.numVertices(), 0);
+  redo(state);
+  EXPECT_TRUE(state.scene->cagePath.empty());
 }

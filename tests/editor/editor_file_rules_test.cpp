@@ -9,6 +9,7 @@
 
 #include "app_state.h"
 #include "autosave.h"
+#include "editor_test_support.h"
 #include "file_util.h"
 
 using namespace somicage;
@@ -30,15 +31,6 @@ class Folder : public ::testing::Test {
   void write(const std::string& name, const std::string& text) const { std::ofstream(root / name) << text; }
   fs::path root;
 };
-
-// The 3D demo, installed.
-void openDemo(AppState& state) {
-  requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
-  ASSERT_TRUE(out.has_value());
-  installOutcome(state, std::move(*out));
-  ASSERT_TRUE(state.scene);
-}
 
 void makeAChange(AppState& state) {
   Eigen::MatrixXd p = state.pose;
@@ -111,7 +103,7 @@ TEST_F(Folder, TheBrowserListsFoldersThenFilesOfTheKind) {
 
 TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   AppState state;
-  openDemo(state);
+  openDemoScene(state);
   makeAChange(state);
   // Save session to my_session.json through the dialog.
   openFileDialog(state, FileDialogPurpose::SaveSession);
@@ -151,7 +143,7 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
 
 TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   AppState state;
-  openDemo(state);
+  openDemoScene(state);
   requestQuit(state);  // nothing changed: quits at once
   EXPECT_TRUE(state.quitRequested);
   state.quitRequested = false;

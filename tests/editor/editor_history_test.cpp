@@ -10,6 +10,7 @@
 #include <limits>
 
 #include "app_state.h"
+#include "editor_test_support.h"
 #include "history.h"
 #include "methods/method_descriptors.h"
 #include "obj_io.h"
@@ -30,11 +31,7 @@ Document doc(double x) {
 class DocumentCommands : public ::testing::Test {
  protected:
   void SetUp() override {
-    requestDemo(state, 3);
-    std::optional<PrecomputeOutcome> out = state.worker.wait();
-    ASSERT_TRUE(out.has_value());
-    installOutcome(state, std::move(*out));
-    ASSERT_TRUE(state.scene);
+    openDemoScene(state);
     rest = state.pose;
   }
   // Runs a command and checks: one new step named `name`, undo gives back the state before exactly, redo the

@@ -1,10 +1,12 @@
-// Session JSON: exact round trip (numbers written with %.17g), infinities, and errors that name the problem.
+// Session JSON: exact round trip (numbers written with %.17g), infinities, the inline cage of a cage without a file,
+// and errors that name the problem.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "core/test_shapes.h"
 #include "errors.h"
 #include "json.h"
 #include "methods/method_descriptors.h"
@@ -33,6 +35,36 @@ Session sample() {
   s.camera.yaw = -1.25;
   s.camera.pitch = 0.5;
   return s;
+}
+
+// A session whose cage has no file: an icosahedron with coordinates that need all 17 digits, posed.
+Session inlineCageSample() {
+  Session s = sample();
+  s.cagePath.clear();
+  s.restCage = test::makeIcosphere(0);
+  s.restCage.vertices *= 1.0 / 3.0;
+  s.restCage.vertices.col(0).array() += 1e-9;
+  s.pose = s.restCage.vertices;
+  s.pose(0, 0) += 0.1;
+  return s;
+}
+
+// The message of the InputError that reading `text` as s.json throws ("accepted" when it reads).
+std::string rejection(const std::string& text) {
+  try {
+    sessionFromJson(text, "s.json");
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "s.json");
+    return e.what();
+  }
+  return "accepted";
+}
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
 }
 }  // namespace
 
@@ -144,10 +176,9 @@ TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
     return std::string("accepted");
   };
   std::string newer = good;
-  ASSERT_NE(newer.find("\"version\": 2"), std::string::npos);
-  newer.replace(newer.find("\"version\": 2"), 12, "\"version\": 3");
-  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 and 2)"),
-            std::string::npos)
+  ASSERT_NE(newer.find("\"version\": 3"), std::string::npos);
+  newer.replace(newer.find("\"version\": 3"), 12, "\"version\": 4");
+  EXPECT_NE(messageFor(newer).find("unsupported session version (this build reads versions 1 to 3)"), std::string::npos)
       << messageFor(newer);
   std::string other = good;
   other.replace(other.find("somicage-session"), 16, "somicage-recent!");
@@ -156,4 +187,68 @@ TEST(EditorSession, AnotherVersionOrFormatIsRefusedWithWhatThisBuildReads) {
   const std::string truncated = good.substr(0, good.size() / 2);
   EXPECT_NE(messageFor(truncated).find("s.json:"), std::string::npos) << messageFor(truncated);
   EXPECT_NE(messageFor("").find("s.json"), std::string::npos) << messageFor("");
+}
+
+TEST(EditorSession, AnInlineCageRoundTripsBitwise) {
+  const Session a = inlineCageSample();
+  const std::string text = sessionToJson(a);
+  EXPECT_NE(text.find("\"restCage\""), std::string::npos);
+  const Session b = sessionFromJson(text, "test");
+  EXPECT_TRUE(b.cagePath.empty());
+  ASSERT_EQ(b.restCage.vertices.rows(), a.restCage.vertices.rows());
+  ASSERT_EQ(b.restCage.faces.rows(), a.restCage.faces.rows());
+  EXPECT_EQ(b.restCage.vertices, a.restCage.vertices);
+  EXPECT_EQ(b.restCage.faces, a.restCage.faces);
+  EXPECT_EQ(b.pose, a.pose);
+  EXPECT_TRUE(b.cageNotices.empty()) << b.cageNotices.front().text;
+  // A cage with a file is named, not copied.
+  EXPECT_EQ(sessionToJson(sample()).find("restCage"), std::string::npos);
+}
+
+// Versions 1 and 2 have no inline cage: they still load, as before (a cage-less mesh gets the default cage).
+TEST(EditorSession, VersionTwoStillLoads) {
+  const std::string v2 = replaced(sessionToJson(sample()), "\"version\": 3", "\"version\": 2");
+  const Session b = sessionFromJson(v2, "old.json");
+  EXPECT_EQ(b.cagePath, sample().cagePath);
+  EXPECT_EQ(b.restCage.numVertices(), 0);
+  EXPECT_EQ(b.pose, sample().pose);
+}
+
+// An inline cage gets the checks of a cage file: the repair of its orientation (a notice) and the validation (an
+// InputError naming the session and "restCage"), after the shape checks of its own.
+TEST(EditorSession, AMalformedInlineCageIsRefusedWithWhatIsWrong) {
+  const std::string good = sessionToJson(inlineCageSample());
+  const std::string face0 = "[0, 11, 5]";  // the icosahedron's first face (12 vertices, 20 faces)
+  const auto expectRejected = [](const std::string& text, const std::string& expected) {
+    const std::string message = rejection(text);
+    EXPECT_NE(message.find(expected), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("s.json: ", 0), 0u) << message;
+  };
+  EXPECT_EQ(rejection(good), "accepted");
+  for (const char* index : {"12", "-1", "0.5", "1e300"})
+    expectRejected(replaced(good, face0, "[" + std::string(index) + ", 11, 5]"), "vertex indices from 0 to 11");
+  expectRejected(replaced(good, face0, "[0, 0, 5]"), "\"restCage\": the cage cannot be used");
+  expectRejected(replaced(good, face0, "[0, 11, 5, 1]"), "\"restCage\" faces rows must have 2 or 3 numbers");
+  expectRejected(replaced(good, face0, "[0, 11]"), "\"restCage\" faces row 1 has the wrong size");
+  expectRejected(replaced(good, "[0, 5, 1]", "[0, 5]"), "\"restCage\" faces row 1 has the wrong size");
+  expectRejected(replaced(good, face0, "[0, \"11\", 5]"), "\"restCage\" faces row 0 holds a non-number");
+  expectRejected(replaced(good, "\"faces\": [", "\"faces\": [], \"x\": ["), "\"restCage\" needs vertices and faces");
+  expectRejected(replaced(good, "\"faces\": [", "\"x\": ["), "missing field \"faces\"");
+  expectRejected(replaced(good, "\"restCage\": {", "\"restCage\": 3, \"x\": {"), "\"restCage\" must be an object");
+  expectRejected(replaced(good, "\"cage\": \"\"", "\"cage\": \"c.obj\""), "a session holds one or the other");
+  expectRejected(replaced(good, "\"pose\": [", "\"pose\": [[0, 0, 0], "), "\"pose\" has 13 rows");
+  // Every face but one: a hole, as a cage file with a missing face is refused.
+  expectRejected(replaced(good, face0 + ",", ""), "\"restCage\": the cage cannot be used");
+}
+
+// A face listed the wrong way round is repaired as in a cage file, and said.
+TEST(EditorSession, AnInlineCageIsRepairedLikeACageFile) {
+  Session a = inlineCageSample();
+  const Eigen::RowVector3i f = a.restCage.faces.row(0);
+  a.restCage.faces.row(0) << f[2], f[1], f[0];
+  const Session b = sessionFromJson(sessionToJson(a), "s.json");
+  EXPECT_EQ(b.restCage.faces, inlineCageSample().restCage.faces);
+  ASSERT_EQ(b.cageNotices.size(), 1u);
+  EXPECT_EQ(b.cageNotices[0].kind, Notice::Kind::Repair);
+  EXPECT_EQ(b.cageNotices[0].source, "s.json");
 }

@@ -1,6 +1,7 @@
 // The editor driven by real X events (xdotool, XTEST) under xvfb-run, as a user would: a handle drag, Reset pose
 // and Ctrl+Z give the dragged picture back; eight instant taps at a low frame rate all act; Export after
-// Save session cannot overwrite the session; Ctrl+Q with unsaved changes asks, Esc keeps the editor open, D quits.
+// Save session cannot overwrite the session; Ctrl+Q with unsaved changes asks, Esc keeps the editor open, D quits;
+// File > Make cage with another face count, Accept and Ctrl+Z, observed in the saved sessions and the pictures.
 // Each scenario runs one editor (a few seconds). Progress is read from --log-actions (the keyboard commands and
 // the new undo steps, one line each), polled with bounded timeouts, never fixed sleeps alone. Skips visibly
 // without xvfb-run, xdotool or ImageMagick's import.
@@ -17,6 +18,7 @@
 #include "app_state.h"
 #include "layout.h"
 #include "panels.h"
+#include "session.h"
 
 namespace {
 
@@ -232,4 +234,56 @@ TEST(GuiInput, QuitWithUnsavedChangesAsks) {
   EXPECT_NE(out.find("asked: still running"), std::string::npos) << out;
   EXPECT_NE(out.find("cancelled: still running"), std::string::npos) << out;
   EXPECT_NE(out.find("exit 0"), std::string::npos) << out;  // D (Don't save) quits cleanly
+}
+
+// File > Make cage... on the 3D demo by mouse and keyboard: the menu, the face count typed into the slider
+// (Ctrl+click makes an ImGui slider a text field), the preview, Accept. Ctrl+S saves the session, which must hold
+// the made cage inline (it has no file); Ctrl+Z gives the demo's cage back, in the picture and in the session saved
+// again. Pixel positions: the menu and the dialog at 1000x700 with ImGui 1.86's default font (19-pixel rows), read
+// off the screenshots; a miss shows as a timeout on the dialog or candidate line.
+TEST(GuiInput, MakeCageAcceptAndUndoReplaceTheCageAndGiveItBack) {
+  SKIP_WITHOUT_X_TOOLS();
+  const DemoView demo = demoView();
+  const fs::path dir = kOut / "make_cage";
+  const std::string out = runScenario(
+      dir,
+      "start\nxdotool mousemove 150 690; settle; shot before.png\n"
+      "xdotool mousemove 18 9 click 1; sleep 0.5; shot menu.png\n"
+      "xdotool mousemove 60 140 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
+      "waitfor 'cage candidate' 1 60 || exit 4\nsettle; shot dialog.png\n"
+      "xdotool mousemove 760 76; xdotool keydown ctrl click 1 keyup ctrl; sleep 0.3\n"
+      "xdotool key ctrl+a; xdotool type --delay 20 '60'; xdotool key Return\n"
+      "waitfor 'cage candidate' 2 120 || exit 4\nxdotool mousemove 150 690; settle; shot preview.png\n"
+      "xdotool mousemove 680 214 click 1; waitfor 'step Make cage' 1 15 || exit 4\n"
+      "xdotool mousemove 150 690; settle; shot accepted.png\n"
+      "xdotool key ctrl+s; waitfor 'dialog Save session' 1 15 || exit 4\n"
+      "settle; xdotool key ctrl+a; xdotool type --delay 20 'made.json'; xdotool key Return\n"
+      "for i in $(seq 1 300); do [ -f made.json ] && break; sleep 0.1; done; cp made.json made_copy.json\n"
+      "xdotool key ctrl+z; waitfor 'action undo' 1 15 || exit 4\nsettle; shot undone.png\n"
+      "xdotool key ctrl+s; for i in $(seq 1 300); do cmp -s made.json made_copy.json || break; sleep 0.1; done\n"
+      "xdotool key ctrl+q; settle; alive && xdotool key d; finish\n");
+  ASSERT_TRUE(fs::exists(dir / "made_copy.json")) << out;
+  const Session made = loadSession((dir / "made_copy.json").string());
+  const Cage demoCage = makeDemoScene(3).restCage;
+  EXPECT_TRUE(made.cagePath.empty());
+  EXPECT_GT(made.restCage.numFaces(), 0) << "the made cage is not in the session";
+  EXPECT_LE(made.restCage.numFaces(), 60) << "the typed face count did not reach the generator";
+  EXPECT_FALSE(sameCage(made.restCage, demoCage));
+  EXPECT_EQ(made.pose, made.restCage.vertices) << "Accept puts the cage at rest";
+  const Session undone = loadSession((dir / "made.json").string());
+  EXPECT_TRUE(sameCage(undone.restCage, demoCage)) << "Ctrl+Z did not give the demo's cage back";
+
+  const Image before = load(dir / "before.png"), accepted = load(dir / "accepted.png"),
+              restored = load(dir / "undone.png");
+  ASSERT_FALSE(restored.rgb.empty()) << out;
+  ViewRect r = demo.view;  // without the method label
+  r.y += 40;
+  r.height -= 40;
+  const double replaced = changedShare(before, accepted, r, 4), back = changedShare(before, restored, r, 4);
+  // The demo's box cage and a 60-face generated cage differ in most of their edges: well over 0.2 % of the view;
+  // after undo the picture is the first one again, to rasterisation noise.
+  EXPECT_GT(replaced, 0.002) << out;
+  EXPECT_LT(back, 0.0001) << out;
+  std::printf("changed pixels: accepted vs before %.4f %%, undone vs before %.4f %%\n", 100 * replaced, 100 * back);
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
 }

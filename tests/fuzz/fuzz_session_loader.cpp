@@ -1,6 +1,6 @@
 // libFuzzer target: the editor's session reader (app/editor/session.h, json.h) on arbitrary text.
 // Contract: no crash and no sanitizer report; bad input throws InputError; an accepted session has finite numbers
-// where the editor needs them, and saving it and reading it back gives the same session.
+// where the editor needs them, an inline cage is well-formed, and saving it and reading it back gives the same session.
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -24,11 +24,15 @@ void require(bool condition, const char* what) {
 // Exact equality; nu may be +-infinity, which compares equal to itself.
 bool sameSession(const Session& a, const Session& b) {
   return a.meshPath == b.meshPath && a.cagePath == b.cagePath && a.demoDim == b.demoDim &&
-         a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose &&
-         a.method == b.method && a.params.blend == b.params.blend && a.params.nu == b.params.nu &&
-         a.params.gamma == b.params.gamma && a.params.tractionCorrection == b.params.tractionCorrection &&
-         a.compare == b.compare && a.compareMethods == b.compareMethods && a.camera.target == b.camera.target &&
-         a.camera.distance == b.camera.distance && a.camera.yaw == b.camera.yaw && a.camera.pitch == b.camera.pitch;
+         a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose && a.method == b.method &&
+         a.params.blend == b.params.blend && a.params.nu == b.params.nu && a.params.gamma == b.params.gamma &&
+         a.params.tractionCorrection == b.params.tractionCorrection && a.compare == b.compare &&
+         a.compareMethods == b.compareMethods && a.camera.target == b.camera.target &&
+         a.camera.distance == b.camera.distance && a.camera.yaw == b.camera.yaw && a.camera.pitch == b.camera.pitch &&
+         a.restCage.vertices.rows() == b.restCage.vertices.rows() &&
+         a.restCage.vertices.cols() == b.restCage.vertices.cols() && a.restCage.vertices == b.restCage.vertices &&
+         a.restCage.faces.rows() == b.restCage.faces.rows() && a.restCage.faces.cols() == b.restCage.faces.cols() &&
+         a.restCage.faces == b.restCage.faces;
 }
 
 }  // namespace
@@ -51,6 +55,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   }
   require(session.demoDim == 2 || session.demoDim == 3, "demoDim is 2 or 3");
   require(session.pose.allFinite(), "pose coordinates are finite");
+  require(session.restCage.numVertices() == 0 ||
+              ((session.restCage.faces.array() >= 0).all() &&
+               (session.restCage.faces.array() < session.restCage.numVertices()).all() &&
+               session.restCage.vertices.allFinite() && session.restCage.faces.cols() == session.restCage.dim()),
+          "an inline cage has finite vertices and in-range faces of d corners");
   require(session.camera.target.allFinite() && std::isfinite(session.camera.yaw) &&
               std::isfinite(session.camera.pitch) && std::isfinite(session.camera.distance),
           "camera numbers are finite");
