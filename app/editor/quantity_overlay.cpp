@@ -389,7 +389,7 @@ void drawShowChoice(AppState& state) {
   const std::size_t viewCount = state.views().size();
   for (std::size_t v = 0; v < viewCount; ++v) {
     int quantity = show.view(v).quantity;
-    const std::string label = viewCount > 1 ? viewShortName(state, v) : "show";
+    const std::string label = viewCount > 1 ? "view " + std::to_string(v + 1) : "show";  // the panel's pane numbers
     ImGui::PushID(static_cast<int>(v));
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Mean value ").x);
     if (quantityCombo(label.c_str(), quantity)) show.setView(v, quantity, viewCount);

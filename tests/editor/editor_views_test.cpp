@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app_state.h"
+#include "coordinate_fields.h"
 #include "editor_options.h"
 #include "editor_test_support.h"
 #include "errors.h"
@@ -18,6 +19,7 @@
 #include "methods/method_descriptors.h"
 #include "quantity_overlay.h"
 #include "session.h"
+#include "somigliana_coordinates.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -140,6 +142,34 @@ TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
     std::printf("view %d (nu %.2f): volume change %+.4f %%\n", static_cast<int>(v), nu, 100 * m->volumeChange);
   }
   EXPECT_GT(std::abs(changes[0] - changes[1]), 1e-2);  // nu changes how much volume the pose gains
+}
+
+// Paper Fig. 3: the field |T_i(x) n_i| of one cage vertex in two panes at nu 0 and 0.45, each against the
+// coordinate columns at its nu.
+TEST(EditorViews, TheCoordinateFieldOfEachViewIsAtItsOwnNu) {
+  AppState state;
+  state.compare = true;
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45)};
+  openDemoScene(state, 2);
+  const int vertex = 0;
+  state.selection.setIndices({vertex});
+  state.quantities.show.setAll(quantityIndex("field", "test"));
+  waitForMeasurements(state);
+  const Scene& scene = *state.scene;
+  const SomiglianaCoordinates all = computeSomiglianaCoordinates(scene.restCage, scene.meshVertices);
+  double largestChange = 0;
+  for (std::size_t v = 0; v < 2; ++v) {
+    const ViewMeasurement* m = state.quantities.measurement(v);
+    ASSERT_NE(m, nullptr) << "view " << v;
+    const Eigen::MatrixXd field = vertexCoordinateField(all, scene.restCage, vertex, v == 0 ? 0.0 : 0.45);
+    for (Eigen::Index p = 0; p < field.rows(); ++p) {
+      if (all.winding[p] < 0.5) continue;
+      EXPECT_NEAR(m->values[p], field.row(p).norm(), 1e-12 * (1 + field.row(p).norm())) << "view " << v;
+      if (v == 1)
+        largestChange = std::max(largestChange, std::abs(m->values[p] - state.quantities.measurement(0)->values[p]));
+    }
+  }
+  EXPECT_GT(largestChange, 1e-3);  // nu changes the field
 }
 
 TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
