@@ -351,9 +351,15 @@ void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views) {
     const std::string label = viewLabel(state, v);
     const ImVec2 pos(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8));
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    // Clipped to the pane: a view with several own parameters in a narrow pane must not run into the next one.
+    draw->PushClipRect(
+        ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y)),
+        ImVec2(static_cast<float>(views[v].x + views[v].width - 4), static_cast<float>(views[v].y + views[v].height)),
+        true);
     draw->AddRectFilled(ImVec2(pos.x - 4, pos.y - 2), ImVec2(pos.x + size.x + 4, pos.y + size.y + 2),
                         IM_COL32(20, 20, 24, 170), 3.0f);
     draw->AddText(pos, IM_COL32(235, 235, 240, 255), label.c_str());
+    draw->PopClipRect();
     if (v > 0) {
       draw->AddLine(ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y)),
                     ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y + views[v].height)),
