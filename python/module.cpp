@@ -17,6 +17,33 @@ namespace somicage {
 
 namespace {
 
+// Deformer.deform's keyword arguments that set each DeformParameter (method.h), for method_info().
+struct ParameterKeyword {
+  DeformParameter parameter;
+  const char* keyword;
+};
+constexpr ParameterKeyword kParameterKeywords[] = {
+    {kParamBlend, "variant"},
+    {kParamBlend, "blend"},
+    {kParamNu, "nu"},
+    {kParamGamma, "gamma"},
+    {kParamTractionFix, "traction_fix"},
+    {kParamCorotational, "corotational"},
+};
+
+// A method's descriptor as a dict: what front ends list (Blender's method menu, its tooltips, which settings apply).
+py::dict methodInfo(Method method) {
+  std::vector<std::string> parameters;
+  for (const ParameterKeyword& k : kParameterKeywords)
+    if (readsParameter(method, k.parameter)) parameters.emplace_back(k.keyword);
+  py::dict info;
+  info["name"] = method->name;
+  info["display_name"] = method->displayName;
+  info["description"] = method->description;
+  info["parameters"] = parameters;
+  return info;
+}
+
 void defineCage(py::module_& module) {
   py::class_<PythonCage>(module, "Cage",
                          "A cage as `somicage deform` uses it: face orientation repaired, validated, warned about.")
@@ -108,6 +135,15 @@ PYBIND11_MODULE(_somicage, module) {
         return names;
       },
       "The method names Deformer takes (the engine's registry, core/method.h).");
+  module.def(
+      "method_info",
+      [] {
+        py::list info;
+        for (Method method : allMethods()) info.append(methodInfo(method));
+        return info;
+      },
+      "One dict per method, in the order of methods(): name, display_name, description and parameters (the "
+      "keyword arguments of Deformer.deform it reads; it ignores the others).");
   module.def(
       "load_mesh",
       [](const std::string& path) {

@@ -93,7 +93,8 @@ std::string analyzeUsage() {
       << "fold-overs (det J <= 0) and the face area ratios. Vertices outside the cage follow the exterior rule and\n"
       << "have no J (outside_points; nan in the CSV).\n\n"
       << "options:\n"
-      << analyzeOptions().optionHelp();
+      << analyzeOptions().optionHelp() << "\n"
+      << methodsHelp();
   return out.str();
 }
 

@@ -73,7 +73,8 @@ std::string deformUsage() {
       << "The cage is 2D when every z is 0. Reads " << readableExtensions() << "; writes " << writableExtensions()
       << ".\n\n"
       << "options:\n"
-      << deformOptions().optionHelp();
+      << deformOptions().optionHelp() << "\n"
+      << methodsHelp();
   return out.str();
 }
 

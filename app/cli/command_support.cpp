@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -75,6 +76,18 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
                 });
   before.insert(before.end(), after.begin(), after.end());
   return before;
+}
+
+std::string methodsHelp() {
+  std::size_t width = 0;
+  for (Method m : allMethods()) width = std::max(width, std::string(m->name).size());
+  std::string text = "methods (--method):\n";
+  for (Method m : allMethods()) {
+    std::string name = m->name;
+    name.resize(width, ' ');
+    text += "  " + name + "  " + m->displayName + ": " + m->description + "\n";
+  }
+  return text;
 }
 
 DeformParams deformParamsOptions(const ArgParser& args, Method method) {

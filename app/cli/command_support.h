@@ -30,6 +30,10 @@ Method methodOption(const ArgParser& args);
 // --no-traction-fix, --corotational: read them with methodOption and deformParamsOptions), then after.
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
 
+// "methods (--method):" and a line per method of the registry: "  NAME  DISPLAY NAME: DESCRIPTION", for the help
+// texts of the commands that deform.
+std::string methodsHelp();
+
 // --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
 // (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);

@@ -80,9 +80,22 @@ rest_cage, posed_vertices = coordinates(cage), somicage.load_mesh(POSED)[0]
 diameter = np.linalg.norm(rest_cage.max(axis=0) - rest_cage.min(axis=0))
 expected = reference()
 
+binding = hydrant.somicage
+# The method menu is the engine's registry: every method of somicage.method_info(), named and described as there.
+info = somicage.method_info()
+assert addon.method_items(binding, bpy.context) == [(m["name"], m["display_name"], m["description"], k)
+                                                    for k, m in enumerate(info)]
+for m in info:  # through Blender's RNA: each is a value of the property, with its name and tooltip
+    binding.method = m["name"]
+    assert binding.method == m["name"]
+    assert bpy.types.UILayout.enum_item_name(binding, "method", m["name"]) == m["display_name"], m
+    assert bpy.types.UILayout.enum_item_description(binding, "method", m["name"]) == m["description"], m
+    assert addon.method_parameters(m["name"]) == set(m["parameters"]), m
+binding.method = "somigliana"
+print(f"method menu: {', '.join(m['name'] for m in info)}")
+
 # Bind: the mesh stays where it is at rest.
 bpy.context.view_layer.objects.active = hydrant
-binding = hydrant.somicage
 binding.cage = cage
 binding.nu, binding.gamma, binding.variant = SETTINGS["nu"], SETTINGS["gamma"], SETTINGS["variant"]
 assert bpy.ops.somicage.bind() == {"FINISHED"}
