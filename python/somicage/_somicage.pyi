@@ -54,6 +54,12 @@ class Deformer:
                blend: Optional[float] = None, traction_fix: bool = True,
                corotational: bool = False) -> npt.NDArray[np.float64]:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
+    def analyze(self, posed: ArrayLike, faces: Sequence[Sequence[int]] = ..., *, nu: float = 0.0, gamma: float = 0.0,
+                variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
+                corotational: bool = False,
+                nu_sweep: Optional[tuple[float, float, int]] = None) -> dict[str, object]:
+        """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
+        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked."""
     @property
     def method(self) -> str: ...
     @property
