@@ -36,7 +36,7 @@ ArgParser analyzeOptions() {
               {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
               {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
               {"--json", "", "print one JSON object"},
-              {"--threads", "N", "OpenMP threads (default: all cores)"},
+              threadsOptionSpec(),
           }));
 }
 
@@ -100,8 +100,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const DeformParams params = deformParamsOptions(args, method);
   const std::vector<double> nus = args.has("--nu-sweep") ? sweepOption(args) : std::vector<double>();
   const bool json = args.has("--json");
-  const int threads = args.integer("--threads", 0, 0, 4096);
-  setThreadCount(threads);
+  const int threads = threadsOption(args);
   const std::string meshPath = args.text("--mesh");
 
   const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
@@ -110,9 +109,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
   noteIgnoredParameters(kCommand, args, method);
 
-  PrecomputeOptions options;
-  options.threads = threads;
-  options.integration.threads = threads;
+  const PrecomputeOptions options = precomputeOptions(threads);
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {

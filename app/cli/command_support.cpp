@@ -33,6 +33,21 @@ void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
 }
 
+OptionSpec threadsOptionSpec() { return {"--threads", "N", "OpenMP threads (default: all cores)"}; }
+
+int threadsOption(const ArgParser& args) {
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+  return threads;
+}
+
+PrecomputeOptions precomputeOptions(int threads) {
+  PrecomputeOptions options;
+  options.threads = threads;
+  options.integration.threads = threads;
+  return options;
+}
+
 void printNotice(const Notice& notice) { std::cerr << "somicage: " << describeNotice(notice) << "\n"; }
 
 Method methodOption(const ArgParser& args) {

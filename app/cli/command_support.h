@@ -44,6 +44,13 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
 
+// The --threads N option of the commands that compute (default 0: all cores).
+OptionSpec threadsOptionSpec();
+// --threads (0 to 4096), set for everything that follows (setThreadCount).
+int threadsOption(const ArgParser& args);
+// The options of a precompute on that many threads (0: all cores), its integration's included.
+PrecomputeOptions precomputeOptions(int threads);
+
 // Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
 // PATH: ..." for a warning. The commands load through the engine facade with it.
 void printNotice(const Notice& notice);
