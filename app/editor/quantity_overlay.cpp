@@ -32,30 +32,10 @@ void selectedElement(const AppState& state, int& vertex, int& face) {
   if (!selected.empty()) vertex = selected.front();
 }
 
-double cageDiameter(const Scene& scene) {
-  const Eigen::MatrixXd& v = scene.restCage.vertices;
-  return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
-}
-
-void computeDifferences(AppState& state) {
-  const std::vector<ViewSpec> views = state.views();
-  const ShowSettings& show = state.quantities.show;
-  state.quantities.measured.resize(views.size());
-  for (std::size_t v = 0; v < views.size(); ++v) {
-    if (quantityDescriptor(show.view(v).quantity).source != QuantitySource::Difference) continue;
-    const int other = show.otherView(v, views.size());
-    state.quantities.measured[v].reset();
-    if (other < 0) continue;
-    const std::size_t w = static_cast<std::size_t>(other);
-    if (!hasDeformer(state, views[v].method) || !hasDeformer(state, views[w].method)) continue;
-    ensureCpuPoints(state, v);
-    ensureCpuPoints(state, w);
-    ViewMeasurement m;
-    m.values = pointDifference(displayedPoints(state, v), displayedPoints(state, w), cageDiameter(*state.scene));
-    state.quantities.measured[v] = std::move(m);
-  }
-  state.quantities.differenceGeneration = state.deformGeneration;
-  ++state.quantities.generation;
+// View v's deformer (null while its method's precompute runs).
+std::shared_ptr<const CageDeformer> deformerOf(const AppState& state, std::size_t v) {
+  const auto d = state.deformers.find(state.views()[v].method);
+  return d == state.deformers.end() ? nullptr : d->second;
 }
 
 // The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
@@ -85,9 +65,11 @@ MeasureRequest measureRequest(const AppState& state) {
     view.quantity = state.quantities.show.view(v).quantity;
     view.params = state.viewParams(v);  // each view is measured at its own nu (the field too)
     const QuantitySource source = quantityDescriptor(view.quantity).source;
-    if (source == QuantitySource::Jacobian) {
-      auto d = state.deformers.find(views[v].method);
-      if (d != state.deformers.end()) view.deformer = d->second;
+    if (source == QuantitySource::Jacobian || source == QuantitySource::Difference) view.deformer = deformerOf(state, v);
+    const int other = state.quantities.show.otherView(v, views.size());
+    if (source == QuantitySource::Difference && other >= 0) {
+      view.otherDeformer = deformerOf(state, static_cast<std::size_t>(other));
+      view.otherParams = state.viewParams(static_cast<std::size_t>(other));
     } else if (source == QuantitySource::Field &&
                readsParameter(views[v].method, kParamNu)) {  // T_i(nu): Somigliana, BEM
       view.fieldVertex = vertex;
@@ -115,22 +97,22 @@ void measureViews(AppState& state) {
       q.nuSweepGeneration = outcome->key.poseGeneration;
     } else if (outcome->key == key) {
       for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
-        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference)
-          q.measured[v] = std::move(outcome->views[v]);
+        q.measured[v] = std::move(outcome->views[v]);
       q.installed = key;
       ++q.generation;
     } else {
       ++q.droppedStale;  // its pose (or scene, or choice) is gone: the current one is measured next
     }
   }
-  if (q.show.usesSource(QuantitySource::Difference, viewCount) && q.differenceGeneration != state.deformGeneration)
-    computeDifferences(state);
   if (q.worker.busy()) return;
   if (q.sweepRequested) {
     q.sweepRequested = false;
     if (const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state)) {
       MeasureRequest sweep = request;
-      sweep.views.assign(1, MeasureView{*deformer, 0, state.params, -1, -1});
+      MeasureView view;
+      view.deformer = *deformer;
+      view.params = state.params;
+      sweep.views.assign(1, view);
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
       q.worker.start(std::move(sweep));
@@ -141,8 +123,7 @@ void measureViews(AppState& state) {
     if (q.installed != MeasureKey{}) {  // nothing uses the gradients or field terms any more: free them
       q.worker.release();
       q.installed = MeasureKey{};
-      for (std::size_t v = 0; v < viewCount; ++v)
-        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference) q.measured[v].reset();
+      for (std::size_t v = 0; v < viewCount; ++v) q.measured[v].reset();
       ++q.generation;
     }
     return;
@@ -401,7 +382,6 @@ void drawShowChoice(AppState& state) {
           if (w != v && ImGui::Selectable(viewShortName(state, w).c_str(), static_cast<int>(w) == other)) {
             show.setView(v, quantity, viewCount);
             show.views[v].other = static_cast<int>(w);
-            state.quantities.differenceGeneration = ~0ull;
           }
         ImGui::EndCombo();
       }

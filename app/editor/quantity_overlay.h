@@ -10,11 +10,12 @@
 
 namespace somicage::editor {
 
-// What the worker should measure now (the views' deformers, quantities, the selected element, the pose).
+// What the worker should measure now (the views' deformers, quantities, the selected element, the pose; for a
+// difference the other view's deformer and parameters).
 MeasureRequest measureRequest(const AppState& state);
 // Every frame: installs a finished outcome whose key is still current (drops a stale one), starts the worker on the
-// current pose when the installed measurements are not of it, frees the gradients when no view uses them, and
-// computes the Difference views. Errors go to state.errors and turn the quantities off. Never blocks.
+// current pose when the installed measurements are not of it and frees the gradients when no view uses them.
+// Errors go to state.errors and turn the quantities off. Never blocks, never deforms.
 void measureViews(AppState& state);
 // Blocks until the views' measurements (and a requested sweep) are installed, or failed: the screenshot path.
 void waitForMeasurements(AppState& state);
