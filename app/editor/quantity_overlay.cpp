@@ -277,16 +277,16 @@ void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect)
   }
 }
 
-void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
-  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return;
+HoverReadout drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
+  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return {};
   const ImVec2 mp = ImGui::GetIO().MousePos;
   const Eigen::Vector2d mouse(mp.x, mp.y);
   for (std::size_t v = 0; v < views.size() && v < state.views().size(); ++v) {
     if (!views[v].contains(mouse)) continue;
     const ViewMeasurement* m = state.quantities.measurement(v);
-    if (!m) return;
+    if (!m) return {};
     const int i = hoveredVertex(state, v, views[v], mouse);
-    if (i < 0 || i >= m->values.size()) return;
+    if (i < 0 || i >= m->values.size()) return {};
     const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
     char buf[200];
     int n = std::isfinite(m->values[i]) ? std::snprintf(buf, sizeof buf, "%s %.6g", d.name, m->values[i])
@@ -295,15 +295,16 @@ void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
       n += std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "  (det J %.4g)", m->detJ[i]);
     if (n > 0) std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "\nvertex %d", i);
     drawBoxedText(ImGui::GetForegroundDrawList(), ImVec2(mp.x + 16, mp.y + 12), buf);
-    return;
+    return {static_cast<int>(v), i, d.id, m->values[i]};
   }
+  return {};
 }
 
 }  // namespace
 
-void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
+HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
   const std::size_t n = std::min(views.size(), state.views().size());
-  if (!state.quantities.show.anyShown(n)) return;
+  if (!state.quantities.show.anyShown(n)) return {};
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   for (std::size_t v = 0; v < n; ++v) {
@@ -319,7 +320,22 @@ void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& vie
     for (std::size_t w = v + 1; w < n && last; ++w) last = state.quantities.show.view(w).quantity != quantity;
     if (last) drawLegend(state, quantity, views[v]);
   }
-  if (!state.hideUi && state.screenshotRequest.empty()) drawHoverValue(state, views);  // not in a capture
+  if (state.hideUi || !state.screenshotRequest.empty()) return {};  // not in a capture
+  return drawHoverValue(state, views);
+}
+
+void logHoverReadout(AppState& state, const HoverReadout& hover) {
+  if (!state.logActions) return;
+  char line[160];
+  if (hover.vertex < 0)
+    std::snprintf(line, sizeof line, "hover none");
+  else
+    std::snprintf(line, sizeof line, "hover view %d vertex %d %s %.17g", hover.view, hover.vertex, hover.quantity,
+                  hover.value);
+  if (state.hoverLogged == line) return;
+  state.hoverLogged = line;
+  std::printf("%s\n", line);
+  std::fflush(stdout);
 }
 
 namespace {
