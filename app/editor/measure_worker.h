@@ -1,10 +1,10 @@
 // Measures the views' quantities on a worker thread (background_job.h), so the editor keeps drawing while the
 // exact J is set up (seconds on FIREHYDRANT) and each pose is measured: the J-based quantities, the difference
 // between two views (both deformed here, so the UI thread never deforms on the CPU for it, whatever the backend),
-// the coordinate field of a cage element, and the nu sweep. The worker keeps what is expensive to make and independent of the pose (the
-// deformation gradients per deformer, the field's terms per element) between requests, and frees it as soon as no
-// view uses it. An outcome carries the key of its request; the editor installs it only when that key is still the
-// current one (a result from a stale pose, scene or choice is dropped, and the current pose measured next).
+// the coordinate field of a cage element, and the nu sweep. The worker keeps what is expensive to make and independent
+// of the pose (the deformation gradients per deformer, the field's terms per element) between requests, and frees it as
+// soon as no view uses it. An outcome carries the key of its request; the editor installs it only when that key is
+// still the current one (a result from a stale pose, scene or choice is dropped, and the current pose measured next).
 // No GL, no ImGui.
 #pragma once
 
@@ -29,9 +29,9 @@ namespace somicage::editor {
 struct MeasureView {
   std::shared_ptr<const CageDeformer> deformer;  // Jacobian, Difference: the view's deformer (null: nothing to measure)
   int quantity = 0;
-  DeformParams params;   // the view's parameters (the field: its nu)
-  int fieldVertex = -1;  // Field: the selected cage vertex, else
-  int fieldFace = -1;    // the selected cage face (-1 both: nothing selected)
+  DeformParams params;                                // the view's parameters (the field: its nu)
+  int fieldVertex = -1;                               // Field: the selected cage vertex, else
+  int fieldFace = -1;                                 // the selected cage face (-1 both: nothing selected)
   std::shared_ptr<const CageDeformer> otherDeformer;  // Difference: the other view's deformer (null: no other view)
   DeformParams otherParams;                           // and its parameters
 };

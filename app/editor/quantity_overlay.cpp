@@ -65,7 +65,8 @@ MeasureRequest measureRequest(const AppState& state) {
     view.quantity = state.quantities.show.view(v).quantity;
     view.params = state.viewParams(v);  // each view is measured at its own nu (the field too)
     const QuantitySource source = quantityDescriptor(view.quantity).source;
-    if (source == QuantitySource::Jacobian || source == QuantitySource::Difference) view.deformer = deformerOf(state, v);
+    if (source == QuantitySource::Jacobian || source == QuantitySource::Difference)
+      view.deformer = deformerOf(state, v);
     const int other = state.quantities.show.otherView(v, views.size());
     if (source == QuantitySource::Difference && other >= 0) {
       view.otherDeformer = deformerOf(state, static_cast<std::size_t>(other));

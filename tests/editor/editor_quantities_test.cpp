@@ -150,7 +150,7 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   EXPECT_EQ(state.quantities.measurement(0), nullptr);  // on the worker, not in this call
   waitForMeasurements(state);
   EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);  // the methods differ on a bend
-  EXPECT_EQ(state.quantities.measurement(1), nullptr);  // the other views show shading only
+  EXPECT_EQ(state.quantities.measurement(1), nullptr);                              // the other views show shading only
   bend(state, -0.3);
   waitForMeasurements(state);
   EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);

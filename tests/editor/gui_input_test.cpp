@@ -299,25 +299,13 @@ TEST(GuiInput, HoverShowsDetJOfAUniformScaleAndGoesOffTheMesh) {
   const gui_test::TestFiles f = gui_test::writeTestFiles();
   const double s = 1.2;
   const fs::path dir = kOut / "hover";
-  const fs::path scaled = kOut / "cube_cage_scaled.obj";  // outside `dir`: runScenario empties it
-  {
-    fs::create_directories(kOut);
-    std::ifstream in(f.cage);
-    std::ofstream out(scaled);
-    out.precision(17);
-    for (std::string line; std::getline(in, line);) {
-      double x, y, z;
-      if (std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3)
-        out << "v " << s * x << " " << s * y << " " << s * z << "\n";
-      else
-        out << line << "\n";
-    }
-  }
+  // Outside `dir`: runScenario empties it.
+  const std::string scaled = gui_test::writeScaledCage(f.cage, s, kOut / "cube_cage_scaled.obj");
   const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
   const int y = static_cast<int>(view.y + view.height / 2), x0 = static_cast<int>(view.x + 40),
             x1 = static_cast<int>(view.x + view.width - 40);
   std::ostringstream script;
-  script << "start '" << f.mesh << "' '" << f.cage << "' '" << scaled.string() << "' --show detj\n"
+  script << "start " << f.files(scaled) << " --show detj\n"
          << "for pass in 1 2 3 4 5 6; do for x in $(seq " << x0 << " 3 " << x1 << "); do xdotool mousemove $x " << y
          << "; sleep 0.02; done; grep -q '^hover view' \"$log\" && break; done\n"
          << "waitfor 'hover view' 1 5 || exit 4\n"
