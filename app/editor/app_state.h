@@ -136,6 +136,7 @@ struct AppState {
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
   bool quitRequested = false;     // set by the (guarded) quit command; the frame loop ends, then the autosave goes
   bool logActions = false;        // --log-actions: keyboard commands are printed to stdout
+  std::string hoverLogged;        // --log-actions: the hover readout line printed last (quantity_overlay.h)
   double viewAspect = 1.6;        // width / height of the first viewport, set by the frame loop
   bool frameRequested = false;    // frame the rest scene once the viewports are known
   std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop

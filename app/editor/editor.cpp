@@ -235,7 +235,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     state.frameRequested = false;
   }
   measureViews(state);
-  drawQuantityOverlay(state, views);
+  logHoverReadout(state, drawQuantityOverlay(state, views));
   renderer.sync(state);
   ImGui::Render();
 

@@ -7,6 +7,8 @@
 #include <new>
 #include <tuple>
 
+#include "cage.h"
+#include "deformation_quantities.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
@@ -17,6 +19,14 @@ namespace {
 QuantitySource sourceOf(const MeasureView& v) { return quantityDescriptor(v.quantity).source; }
 
 bool usesGradients(const MeasureView& v) { return sourceOf(v) == QuantitySource::Jacobian && v.deformer; }
+
+bool measuresDifference(const MeasureView& v) {
+  return sourceOf(v) == QuantitySource::Difference && v.deformer && v.otherDeformer;
+}
+
+MeasureKey::Params paramsKey(const DeformParams& p) {
+  return {p.blend, p.nu, p.gamma, p.tractionCorrection, p.corotational};
+}
 
 std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {
   std::vector<std::vector<int>> faces(static_cast<std::size_t>(triangles.rows()));
@@ -61,7 +71,8 @@ MeasureKey measureKey(const MeasureRequest& r) {
   key.poseGeneration = r.poseGeneration;
   key.sweep = !r.sweepNus.empty();
   for (const MeasureView& v : r.views)
-    key.views.emplace_back(v.deformer.get(), v.quantity, v.fieldVertex, v.fieldFace, v.params.nu);
+    key.views.emplace_back(v.deformer.get(), v.quantity, v.fieldVertex, v.fieldFace, paramsKey(v.params),
+                           v.otherDeformer.get(), paramsKey(v.otherParams));
   return key;
 }
 
@@ -69,7 +80,7 @@ bool needsWorker(const MeasureRequest& r) {
   if (!r.scene) return false;
   if (!r.sweepNus.empty()) return true;
   for (const MeasureView& v : r.views)
-    if (usesGradients(v) || sourceOf(v) == QuantitySource::Field) return true;
+    if (usesGradients(v) || measuresDifference(v) || sourceOf(v) == QuantitySource::Field) return true;
   return false;
 }
 
@@ -140,13 +151,21 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
     } else {
       for (std::size_t v = 0; v < request.views.size(); ++v) {
         const MeasureView& view = request.views[v];
-        if (usesGradients(view)) {
+        if (usesGradients(view) || measuresDifference(view)) {
           context.setStage("measuring view " + std::to_string(v + 1));
           if (!context.report(0.8 + 0.2 * static_cast<double>(v) / static_cast<double>(request.views.size())))
             throw Cancelled();
+        }
+        if (usesGradients(view)) {
           const DeformationAnalysis a = analyzeDeformation(*caches.gradients[view.deformer.get()].gradients,
                                                            scene.meshVertices, faces, request.pose, view.params);
           out.views[v] = jacobianMeasurement(a, scene.meshTriangles, view.quantity);
+        } else if (measuresDifference(view)) {  // both views deformed here, at their own parameters
+          ViewMeasurement m;
+          m.values = pointDifference(view.deformer->deform(request.pose, view.params),
+                                     view.otherDeformer->deform(request.pose, view.otherParams),
+                                     cageDiameter(scene.restCage.vertices));
+          out.views[v] = std::move(m);
         } else if (sourceOf(view) == QuantitySource::Field && (view.fieldVertex >= 0 || view.fieldFace >= 0)) {
           const ElementTerms::Kind kind = view.fieldVertex >= 0 ? ElementTerms::Kind::Vertex : ElementTerms::Kind::Face;
           const int index = view.fieldVertex >= 0 ? view.fieldVertex : view.fieldFace;

@@ -1,9 +1,10 @@
 // Measures the views' quantities on a worker thread (background_job.h), so the editor keeps drawing while the
-// exact J is set up (seconds on FIREHYDRANT) and each pose is measured: the J-based quantities, the coordinate field
-// of a cage element, and the nu sweep. The worker keeps what is expensive to make and independent of the pose (the
-// deformation gradients per deformer, the field's terms per element) between requests, and frees it as soon as no
-// view uses it. An outcome carries the key of its request; the editor installs it only when that key is still the
-// current one (a result from a stale pose, scene or choice is dropped, and the current pose measured next).
+// exact J is set up (seconds on FIREHYDRANT) and each pose is measured: the J-based quantities, the difference
+// between two views (both deformed here, so the UI thread never deforms on the CPU for it, whatever the backend),
+// the coordinate field of a cage element, and the nu sweep. The worker keeps what is expensive to make and independent
+// of the pose (the deformation gradients per deformer, the field's terms per element) between requests, and frees it as
+// soon as no view uses it. An outcome carries the key of its request; the editor installs it only when that key is
+// still the current one (a result from a stale pose, scene or choice is dropped, and the current pose measured next).
 // No GL, no ImGui.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "background_job.h"
@@ -25,11 +27,13 @@
 namespace somicage::editor {
 
 struct MeasureView {
-  std::shared_ptr<const CageDeformer> deformer;  // Jacobian: the view's deformer (null: nothing to measure)
+  std::shared_ptr<const CageDeformer> deformer;  // Jacobian, Difference: the view's deformer (null: nothing to measure)
   int quantity = 0;
-  DeformParams params;   // the view's parameters (the field: its nu)
-  int fieldVertex = -1;  // Field: the selected cage vertex, else
-  int fieldFace = -1;    // the selected cage face (-1 both: nothing selected)
+  DeformParams params;                                // the view's parameters (the field: its nu)
+  int fieldVertex = -1;                               // Field: the selected cage vertex, else
+  int fieldFace = -1;                                 // the selected cage face (-1 both: nothing selected)
+  std::shared_ptr<const CageDeformer> otherDeformer;  // Difference: the other view's deformer (null: no other view)
+  DeformParams otherParams;                           // and its parameters
 };
 
 struct MeasureRequest {
@@ -43,15 +47,17 @@ struct MeasureRequest {
 
 // What a request is of: two requests with equal keys measure the same thing.
 struct MeasureKey {
+  using Params = std::tuple<double, double, double, bool, bool>;  // DeformParams' fields
   const Scene* scene = nullptr;
   std::uint64_t poseGeneration = 0;
-  std::vector<std::tuple<const CageDeformer*, int, int, int, double>> views;  // deformer, quantity, vertex, face, nu
+  // deformer, quantity, vertex, face, parameters; the other view's deformer and parameters (a difference)
+  std::vector<std::tuple<const CageDeformer*, int, int, int, Params, const CageDeformer*, Params>> views;
   bool sweep = false;
   bool operator==(const MeasureKey& other) const;
   bool operator!=(const MeasureKey& other) const { return !(*this == other); }
 };
 MeasureKey measureKey(const MeasureRequest& request);
-// Whether a request has anything for the worker (a J-based or field view, or a sweep).
+// Whether a request has anything for the worker (a J-based, difference or field view, or a sweep).
 bool needsWorker(const MeasureRequest& request);
 
 struct MeasureOutcome {

@@ -32,30 +32,10 @@ void selectedElement(const AppState& state, int& vertex, int& face) {
   if (!selected.empty()) vertex = selected.front();
 }
 
-double cageDiameter(const Scene& scene) {
-  const Eigen::MatrixXd& v = scene.restCage.vertices;
-  return (v.colwise().maxCoeff() - v.colwise().minCoeff()).norm();
-}
-
-void computeDifferences(AppState& state) {
-  const std::vector<ViewSpec> views = state.views();
-  const ShowSettings& show = state.quantities.show;
-  state.quantities.measured.resize(views.size());
-  for (std::size_t v = 0; v < views.size(); ++v) {
-    if (quantityDescriptor(show.view(v).quantity).source != QuantitySource::Difference) continue;
-    const int other = show.otherView(v, views.size());
-    state.quantities.measured[v].reset();
-    if (other < 0) continue;
-    const std::size_t w = static_cast<std::size_t>(other);
-    if (!hasDeformer(state, views[v].method) || !hasDeformer(state, views[w].method)) continue;
-    ensureCpuPoints(state, v);
-    ensureCpuPoints(state, w);
-    ViewMeasurement m;
-    m.values = pointDifference(displayedPoints(state, v), displayedPoints(state, w), cageDiameter(*state.scene));
-    state.quantities.measured[v] = std::move(m);
-  }
-  state.quantities.differenceGeneration = state.deformGeneration;
-  ++state.quantities.generation;
+// View v's deformer (null while its method's precompute runs).
+std::shared_ptr<const CageDeformer> deformerOf(const AppState& state, std::size_t v) {
+  const auto d = state.deformers.find(state.views()[v].method);
+  return d == state.deformers.end() ? nullptr : d->second;
 }
 
 // The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
@@ -85,9 +65,12 @@ MeasureRequest measureRequest(const AppState& state) {
     view.quantity = state.quantities.show.view(v).quantity;
     view.params = state.viewParams(v);  // each view is measured at its own nu (the field too)
     const QuantitySource source = quantityDescriptor(view.quantity).source;
-    if (source == QuantitySource::Jacobian) {
-      auto d = state.deformers.find(views[v].method);
-      if (d != state.deformers.end()) view.deformer = d->second;
+    if (source == QuantitySource::Jacobian || source == QuantitySource::Difference)
+      view.deformer = deformerOf(state, v);
+    const int other = state.quantities.show.otherView(v, views.size());
+    if (source == QuantitySource::Difference && other >= 0) {
+      view.otherDeformer = deformerOf(state, static_cast<std::size_t>(other));
+      view.otherParams = state.viewParams(static_cast<std::size_t>(other));
     } else if (source == QuantitySource::Field &&
                readsParameter(views[v].method, kParamNu)) {  // T_i(nu): Somigliana, BEM
       view.fieldVertex = vertex;
@@ -115,22 +98,22 @@ void measureViews(AppState& state) {
       q.nuSweepGeneration = outcome->key.poseGeneration;
     } else if (outcome->key == key) {
       for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
-        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference)
-          q.measured[v] = std::move(outcome->views[v]);
+        q.measured[v] = std::move(outcome->views[v]);
       q.installed = key;
       ++q.generation;
     } else {
       ++q.droppedStale;  // its pose (or scene, or choice) is gone: the current one is measured next
     }
   }
-  if (q.show.usesSource(QuantitySource::Difference, viewCount) && q.differenceGeneration != state.deformGeneration)
-    computeDifferences(state);
   if (q.worker.busy()) return;
   if (q.sweepRequested) {
     q.sweepRequested = false;
     if (const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state)) {
       MeasureRequest sweep = request;
-      sweep.views.assign(1, MeasureView{*deformer, 0, state.params, -1, -1});
+      MeasureView view;
+      view.deformer = *deformer;
+      view.params = state.params;
+      sweep.views.assign(1, view);
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
       q.worker.start(std::move(sweep));
@@ -141,8 +124,7 @@ void measureViews(AppState& state) {
     if (q.installed != MeasureKey{}) {  // nothing uses the gradients or field terms any more: free them
       q.worker.release();
       q.installed = MeasureKey{};
-      for (std::size_t v = 0; v < viewCount; ++v)
-        if (quantityDescriptor(q.show.view(v).quantity).source != QuantitySource::Difference) q.measured[v].reset();
+      for (std::size_t v = 0; v < viewCount; ++v) q.measured[v].reset();
       ++q.generation;
     }
     return;
@@ -296,16 +278,16 @@ void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect)
   }
 }
 
-void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
-  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return;
+HoverReadout drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
+  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return {};
   const ImVec2 mp = ImGui::GetIO().MousePos;
   const Eigen::Vector2d mouse(mp.x, mp.y);
   for (std::size_t v = 0; v < views.size() && v < state.views().size(); ++v) {
     if (!views[v].contains(mouse)) continue;
     const ViewMeasurement* m = state.quantities.measurement(v);
-    if (!m) return;
+    if (!m) return {};
     const int i = hoveredVertex(state, v, views[v], mouse);
-    if (i < 0 || i >= m->values.size()) return;
+    if (i < 0 || i >= m->values.size()) return {};
     const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
     char buf[200];
     int n = std::isfinite(m->values[i]) ? std::snprintf(buf, sizeof buf, "%s %.6g", d.name, m->values[i])
@@ -314,15 +296,16 @@ void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
       n += std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "  (det J %.4g)", m->detJ[i]);
     if (n > 0) std::snprintf(buf + n, sizeof buf - static_cast<std::size_t>(n), "\nvertex %d", i);
     drawBoxedText(ImGui::GetForegroundDrawList(), ImVec2(mp.x + 16, mp.y + 12), buf);
-    return;
+    return {static_cast<int>(v), i, d.id, m->values[i]};
   }
+  return {};
 }
 
 }  // namespace
 
-void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
+HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
   const std::size_t n = std::min(views.size(), state.views().size());
-  if (!state.quantities.show.anyShown(n)) return;
+  if (!state.quantities.show.anyShown(n)) return {};
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   for (std::size_t v = 0; v < n; ++v) {
@@ -338,7 +321,22 @@ void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& vie
     for (std::size_t w = v + 1; w < n && last; ++w) last = state.quantities.show.view(w).quantity != quantity;
     if (last) drawLegend(state, quantity, views[v]);
   }
-  if (!state.hideUi && state.screenshotRequest.empty()) drawHoverValue(state, views);  // not in a capture
+  if (state.hideUi || !state.screenshotRequest.empty()) return {};  // not in a capture
+  return drawHoverValue(state, views);
+}
+
+void logHoverReadout(AppState& state, const HoverReadout& hover) {
+  if (!state.logActions) return;
+  char line[160];
+  if (hover.vertex < 0)
+    std::snprintf(line, sizeof line, "hover none");
+  else
+    std::snprintf(line, sizeof line, "hover view %d vertex %d %s %.17g", hover.view, hover.vertex, hover.quantity,
+                  hover.value);
+  if (state.hoverLogged == line) return;
+  state.hoverLogged = line;
+  std::printf("%s\n", line);
+  std::fflush(stdout);
 }
 
 namespace {
@@ -401,7 +399,6 @@ void drawShowChoice(AppState& state) {
           if (w != v && ImGui::Selectable(viewShortName(state, w).c_str(), static_cast<int>(w) == other)) {
             show.setView(v, quantity, viewCount);
             show.views[v].other = static_cast<int>(w);
-            state.quantities.differenceGeneration = ~0ull;
           }
         ImGui::EndCombo();
       }

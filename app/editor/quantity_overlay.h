@@ -10,19 +10,29 @@
 
 namespace somicage::editor {
 
-// What the worker should measure now (the views' deformers, quantities, the selected element, the pose).
+// What the worker should measure now (the views' deformers, quantities, the selected element, the pose; for a
+// difference the other view's deformer and parameters).
 MeasureRequest measureRequest(const AppState& state);
 // Every frame: installs a finished outcome whose key is still current (drops a stale one), starts the worker on the
-// current pose when the installed measurements are not of it, frees the gradients when no view uses them, and
-// computes the Difference views. Errors go to state.errors and turn the quantities off. Never blocks.
+// current pose when the installed measurements are not of it and frees the gradients when no view uses them.
+// Errors go to state.errors and turn the quantities off. Never blocks, never deforms.
 void measureViews(AppState& state);
 // Blocks until the views' measurements (and a requested sweep) are installed, or failed: the screenshot path.
 void waitForMeasurements(AppState& state);
 // The colour range of a quantity as drawn: fixed when typed, else shared by the views that show it.
 ColorRange shownRange(const AppState& state, int quantity);
+// The value under the cursor: view -1 and vertex -1 when none is shown.
+struct HoverReadout {
+  int view = -1, vertex = -1;
+  const char* quantity = "";  // the quantity's id
+  double value = 0;
+};
 // Volume change, fold-over count and p95 distortion under each view's label, one legend per shown quantity (in the
-// last view that shows it) and, on hover, the value under the cursor.
-void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views);
+// last view that shows it) and, on hover, the value under the cursor, which it returns.
+HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views);
+// --log-actions: prints "hover view V vertex I QUANTITY VALUE" (full precision) or "hover none" when the readout
+// changes (the GUI tests read it).
+void logHoverReadout(AppState& state, const HoverReadout& hover);
 // The Show choices of the control panel (one per view in the compare view), the range, the worker's progress and
 // Cancel.
 void drawShowChoice(AppState& state);

@@ -16,7 +16,6 @@ struct ViewQuantities {
   MeasureWorker worker;
   std::vector<std::optional<ViewMeasurement>> measured;  // per view: the installed measurement, if any
   MeasureKey installed;                                  // the key of the worker's measurements in `measured`
-  std::uint64_t differenceGeneration = ~0ull;            // the pose the Difference views were computed for
   std::uint64_t generation = 0;                          // bumps when `measured` changes (the renderer re-uploads)
   int droppedStale = 0;                                  // outcomes dropped because their key was no longer current
 

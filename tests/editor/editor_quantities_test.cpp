@@ -109,8 +109,37 @@ TEST(EditorQuantities, ShowParsesOnePerViewAndTheFieldVertex) {
   }
 }
 
-// The Somigliana view's difference to the Green view, against both methods deformed by deformers built here in
-// double precision, over the cage's bounding-box diagonal. 2e-5: the editor stores its coordinates in float.
+namespace {
+
+// The bounding-box diagonal of the rest cage, computed here.
+double restCageDiameter(const Scene& scene) {
+  Eigen::Vector3d lo, hi;
+  bounds3(scene.restCage.vertices, lo, hi);
+  return (hi - lo).norm();
+}
+
+// |x_v - x_w| / diameter per vertex from two deform calls made here; the largest, after checking m against it.
+double expectDifference(const AppState& state, const ViewMeasurement* m, std::size_t v, std::size_t w) {
+  EXPECT_NE(m, nullptr);
+  if (!m) return 0;
+  const std::vector<ViewSpec> views = state.views();
+  const Eigen::MatrixXd a = state.deformers.at(views[v].method)->deform(state.pose, state.viewParams(v));
+  const Eigen::MatrixXd b = state.deformers.at(views[w].method)->deform(state.pose, state.viewParams(w));
+  const double diameter = restCageDiameter(*state.scene);
+  EXPECT_EQ(m->values.size(), a.rows());
+  double largest = 0;
+  for (Eigen::Index p = 0; p < a.rows() && p < m->values.size(); ++p) {
+    const double expected = (a.row(p) - b.row(p)).norm() / diameter;
+    EXPECT_NEAR(m->values[p], expected, 1e-12) << "vertex " << p;
+    largest = std::max(largest, expected);
+  }
+  return largest;
+}
+
+}  // namespace
+
+// The Somigliana view's difference to the Green view, measured on the worker, against both views deformed here
+// over the cage's bounding-box diagonal; another pose measures it again.
 TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters) {
   AppState state;
   loadDemo(state, 3, true);
@@ -118,33 +147,31 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   state.quantities.show.setView(0, quantity("difference"), 3);
   state.quantities.show.views[0].other = 1;  // Green
   measureViews(state);
-  const ViewMeasurement* m = state.quantities.measurement(0);
-  ASSERT_NE(m, nullptr);
-  const Scene& scene = *state.scene;
-  const Eigen::MatrixXd a =
-      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
-  const Eigen::MatrixXd b =
-      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
-  Eigen::Vector3d lo, hi;
-  bounds3(scene.restCage.vertices, lo, hi);
-  const double diameter = (hi - lo).norm();
-  ASSERT_EQ(m->values.size(), a.rows());
-  double largest = 0;
-  for (Eigen::Index p = 0; p < a.rows(); ++p) {
-    const double expected = (a.row(p) - b.row(p)).norm() / diameter;
-    EXPECT_NEAR(m->values[p], expected, 2e-5) << "vertex " << p;
-    largest = std::max(largest, expected);
-  }
-  EXPECT_GT(largest, 1e-3);                             // the methods differ on a bend: the test sees something
-  EXPECT_EQ(state.quantities.measurement(1), nullptr);  // the other views show shading only
-  // Another pose recomputes it.
+  EXPECT_EQ(state.quantities.measurement(0), nullptr);  // on the worker, not in this call
+  waitForMeasurements(state);
+  EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);  // the methods differ on a bend
+  EXPECT_EQ(state.quantities.measurement(1), nullptr);                              // the other views show shading only
   bend(state, -0.3);
-  measureViews(state);
-  const Eigen::MatrixXd a2 =
-      makeDeformer(methods::somigliana(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
-  const Eigen::MatrixXd b2 =
-      makeDeformer(methods::green(), scene.restCage, scene.meshVertices)->deform(state.pose, state.params);
-  EXPECT_NEAR(state.quantities.measurement(0)->values[0], (a2.row(0) - b2.row(0)).norm() / diameter, 2e-5);
+  waitForMeasurements(state);
+  EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);
+  EXPECT_EQ(state.quantities.droppedStale, 0);
+}
+
+// With the GPU backend the UI thread's CPU points stay stale (the Renderer deforms): the difference is measured on
+// the worker all the same, and nothing on the UI thread deforms on the CPU for it (cpuStale untouched).
+TEST(EditorQuantities, DifferenceWithTheGpuBackendIsMeasuredOnTheWorker) {
+  AppState state;
+  loadDemo(state, 3, true);
+  state.backend.requested = DeformBackend::Gpu;
+  state.backend.gpuAvailable = true;  // as the frame loop sets it once a GL 4.3 context exists
+  bend(state, 0.6);
+  const std::vector<std::size_t> stale = state.cpuStale;
+  ASSERT_EQ(stale.size(), 3u);
+  state.quantities.show.setView(2, quantity("difference"), 3);
+  state.quantities.show.views[2].other = 0;  // the third method to the first
+  waitForMeasurements(state);
+  EXPECT_EQ(state.cpuStale, stale);
+  EXPECT_GT(expectDifference(state, state.quantities.measurement(2), 2, 0), 1e-3);
 }
 
 // The field of a selected cage vertex (and face) is |T_i(x) n_i| (|K_j(x) n_j|) of the full coordinate matrix.

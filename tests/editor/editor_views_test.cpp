@@ -172,6 +172,34 @@ TEST(EditorViews, TheCoordinateFieldOfEachViewIsAtItsOwnNu) {
   EXPECT_GT(largestChange, 1e-3);  // nu changes the field
 }
 
+// One method at two nu: the difference between the panes (measured on the worker, each deformed at its own nu)
+// against |x(nu 0) - x(nu 0.45)| / the rest cage's bounding-box diagonal from two deform calls made here; picking
+// the third pane (the panel's nu 0.2) as the other one measures that instead.
+TEST(EditorViews, TheDifferenceBetweenTwoViewsOfOneMethodIsAtEachViewsNu) {
+  AppState state;
+  loadTwoNu(state);
+  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
+  const Eigen::MatrixXd rest = state.scene->restCage.vertices;
+  const double diameter = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
+  for (int other : {1, 2}) {
+    state.quantities.show.setView(0, quantityIndex("difference", "test"), 3);
+    state.quantities.show.views[0].other = other;
+    waitForMeasurements(state);
+    const ViewMeasurement* m = state.quantities.measurement(0);
+    ASSERT_NE(m, nullptr) << "to view " << other;
+    const Eigen::MatrixXd a = deformer.deform(state.pose, withNu(state.params, 0.0));
+    const Eigen::MatrixXd b = deformer.deform(state.pose, withNu(state.params, other == 1 ? 0.45 : 0.2));
+    ASSERT_EQ(m->values.size(), a.rows());
+    double largest = 0;
+    for (Eigen::Index p = 0; p < a.rows(); ++p) {
+      const double expected = (a.row(p) - b.row(p)).norm() / diameter;
+      EXPECT_NEAR(m->values[p], expected, 1e-12) << "to view " << other << ", vertex " << p;
+      largest = std::max(largest, expected);
+    }
+    EXPECT_GT(largest, 1e-3) << "to view " << other;  // nu shows
+  }
+}
+
 TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
   const EditorOptions o = parseEditorArgs({"--demo", "2d", "--view", "somigliana:nu=0", "--view",
                                            "somigliana:nu=0.45:gamma=2:variant=local:traction=off", "--view", "mvc"});

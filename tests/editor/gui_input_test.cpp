@@ -14,8 +14,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "app_state.h"
+#include "gui_screenshot_support.h"
 #include "layout.h"
 #include "panels.h"
 #include "session.h"
@@ -285,5 +287,50 @@ TEST(GuiInput, MakeCageAcceptAndUndoReplaceTheCageAndGiveItBack) {
   EXPECT_GT(replaced, 0.002) << out;
   EXPECT_LT(back, 0.0001) << out;
   std::printf("changed pixels: accepted vs before %.4f %%, undone vs before %.4f %%\n", 100 * replaced, 100 * back);
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
+
+// The value under the cursor, read from the real editor: the sphere in the cube cage scaled uniformly by s = 1.2
+// about its centre, --show detj. det J of a uniform scale is s^3 at every point (a closed form independent of the
+// code), so every readout the mouse finds while sweeping a line across the view must be 1.728 (1e-6: the editor's
+// float coordinates), at a vertex of the sphere; moved off the mesh, the readout goes ("hover none" last).
+TEST(GuiInput, HoverShowsDetJOfAUniformScaleAndGoesOffTheMesh) {
+  SKIP_WITHOUT_X_TOOLS();
+  const gui_test::TestFiles f = gui_test::writeTestFiles();
+  const double s = 1.2;
+  const fs::path dir = kOut / "hover";
+  // Outside `dir`: runScenario empties it.
+  const std::string scaled = gui_test::writeScaledCage(f.cage, s, kOut / "cube_cage_scaled.obj");
+  const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
+  const int y = static_cast<int>(view.y + view.height / 2), x0 = static_cast<int>(view.x + 40),
+            x1 = static_cast<int>(view.x + view.width - 40);
+  std::ostringstream script;
+  script << "start " << f.files(scaled) << " --show detj\n"
+         << "for pass in 1 2 3 4 5 6; do for x in $(seq " << x0 << " 3 " << x1 << "); do xdotool mousemove $x " << y
+         << "; sleep 0.02; done; grep -q '^hover view' \"$log\" && break; done\n"
+         << "waitfor 'hover view' 1 5 || exit 4\n"
+         << "xdotool mousemove " << x0 << " " << static_cast<int>(view.y + 60) << "; settle\n"
+         << "xdotool key ctrl+q; finish\n";
+  const std::string out = runScenario(dir, script.str());
+  std::istringstream log(readText(dir / "app.log"));
+  int readouts = 0;
+  std::string last;
+  for (std::string line; std::getline(log, line);) {
+    if (line.rfind("hover ", 0) != 0) continue;
+    last = line;
+    int v = -1, vertex = -1;
+    char quantity[32] = "";
+    double value = 0;
+    if (std::sscanf(line.c_str(), "hover view %d vertex %d %31s %lf", &v, &vertex, quantity, &value) != 4) continue;
+    ++readouts;
+    EXPECT_EQ(v, 0) << line;
+    EXPECT_STREQ(quantity, "detj") << line;
+    EXPECT_GE(vertex, 0) << line;
+    EXPECT_LT(vertex, 2 + 23 * 48) << line;  // the sphere's vertices
+    EXPECT_NEAR(value, s * s * s, 1e-6) << line;
+  }
+  EXPECT_GT(readouts, 0) << out;
+  EXPECT_EQ(last, "hover none") << out;
+  std::printf("%d hover readouts over the mesh\n", readouts);
   EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
 }

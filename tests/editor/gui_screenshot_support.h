@@ -15,6 +15,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gui_test {
@@ -112,10 +113,48 @@ inline Image screenshot(const std::string& args, const std::string& name) {
   return img;
 }
 
+// The range a --screenshot run printed for a quantity's legend ("legend detj: LO HI"); NaN when absent.
+inline std::pair<double, double> legendRange(const std::string& log, const std::string& id = "detj") {
+  const std::string key = "legend " + id + ": ";
+  const std::size_t at = log.find(key);
+  if (at == std::string::npos) return {NAN, NAN};
+  char* end = nullptr;
+  const double lo = std::strtod(log.c_str() + at + key.size(), &end);
+  return {lo, std::strtod(end, nullptr)};
+}
+
+// Takes the screenshot and returns the legend range it printed for quantity `id`.
+inline std::pair<double, double> screenshotLegend(const std::string& args, const std::string& name,
+                                                  const std::string& id = "detj") {
+  screenshot(args, name);
+  return legendRange(readLog(name), id);
+}
+
 // A sphere mesh inside the cube cage [-1, 1]^3, and a pose that twists and shifts the top of the cage.
 struct TestFiles {
   std::string mesh, cage, posed;
+  // The editor's file arguments: MESH CAGE POSED-CAGE (quoted).
+  std::string files(const std::string& posedCage) const {
+    return quote(mesh) + " " + quote(cage) + " " + quote(posedCage);
+  }
+  std::string posedFiles() const { return files(posed); }
 };
+
+// `cage` (an OBJ) scaled by s about the origin, written to `path`: a uniform scale, det J = s^3 at every point.
+inline std::string writeScaledCage(const std::string& cage, double s, const fs::path& path) {
+  fs::create_directories(path.parent_path());
+  std::ifstream in(cage);
+  std::ofstream out(path);
+  out.precision(17);
+  for (std::string line; std::getline(in, line);) {
+    double x, y, z;
+    if (std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3)
+      out << "v " << s * x << " " << s * y << " " << s * z << "\n";
+    else
+      out << line << "\n";
+  }
+  return path.string();
+}
 
 inline TestFiles writeTestFiles() {
   const fs::path dir = outputDir();

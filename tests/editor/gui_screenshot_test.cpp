@@ -57,9 +57,9 @@ TEST(GuiScreenshot, PosedDiffersFromRest) {
 TEST(GuiScreenshot, CompareViewShowsThreeDifferentMeshes) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
-  const Image img = screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
-                                   " --compare somigliana,green,mvc --nu 0.3 --gamma 1 --hide-ui --size 1200x400",
-                               "sphere_compare");
+  const Image img =
+      screenshot(f.posedFiles() + " --compare somigliana,green,mvc --nu 0.3 --gamma 1 --hide-ui --size 1200x400",
+                 "sphere_compare");
   ASSERT_EQ(img.width, 1200);
   const int w = img.width / 3;
   for (int v = 0; v < 3; ++v) EXPECT_GT(img.coverage(v * w, (v + 1) * w), 0.03) << "view " << v;
@@ -150,16 +150,6 @@ std::pair<double, double> centreMeshPixels(const Image& img, Want want) {
           mesh ? static_cast<double>(good) / static_cast<double>(mesh) : 0.0};
 }
 
-// "legend ID: LO HI" from the screenshot's log.
-std::pair<double, double> legendRange(const std::string& log, const std::string& id = "detj") {
-  const std::string key = "legend " + id + ": ";
-  const std::size_t at = log.find(key);
-  if (at == std::string::npos) return {NAN, NAN};
-  char* end = nullptr;
-  const double lo = std::strtod(log.c_str() + at + key.size(), &end);
-  return {lo, std::strtod(end, nullptr)};
-}
-
 double jsonNumberAfter(const std::string& json, const std::string& object, const std::string& key) {
   const std::size_t o = json.find("\"" + object + "\"");
   const std::size_t k = o == std::string::npos ? o : json.find("\"" + key + "\"", o);
@@ -188,22 +178,8 @@ TEST(GuiScreenshot, DetJOfAUniformScaleIsTheCubeOfTheScale) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
   const double s = 1.25;  // det J = s^3 = 1.953125 at every vertex
-  const std::string scaled = (outputDir() / "cube_cage_scaled.obj").string();
-  {
-    std::ifstream in(f.cage);
-    std::ofstream out(scaled);
-    std::string line;
-    while (std::getline(in, line)) {
-      double x, y, z;
-      if (std::sscanf(line.c_str(), "v %lf %lf %lf", &x, &y, &z) == 3)
-        out << "v " << s * x << " " << s * y << " " << s * z << "\n";
-      else
-        out << line << "\n";
-    }
-  }
-  const Image img = screenshot(
-      quote(f.mesh) + " " + quote(f.cage) + " " + quote(scaled) + " --show detj --hide-ui --hide-cage --size 640x480",
-      "detj_scaled");
+  const std::string scaled = f.files(writeScaledCage(f.cage, s, outputDir() / "cube_cage_scaled.obj"));
+  const Image img = screenshot(scaled + " --show detj --hide-ui --hide-cage --size 640x480", "detj_scaled");
   const auto [lo, hi] = legendRange(readLog("detj_scaled"));
   EXPECT_NEAR(hi, s * s * s, 1e-6 * s * s * s);
   EXPECT_NEAR(lo, 1 / (s * s * s), 1e-6);
@@ -213,9 +189,8 @@ TEST(GuiScreenshot, DetJOfAUniformScaleIsTheCubeOfTheScale) {
   EXPECT_GT(red, 0.99);
   // Every triangle's area grows by s^2. 1e-4: the area ratio comes from positions, whose rounding-sized error (the
   // editor's interactive integration) is divided by triangles with edges of ~0.08.
-  screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(scaled) + " --show area --hide-ui --size 320x240",
-             "area_scaled");
-  const auto [areaLo, areaHi] = legendRange(readLog("area_scaled"), "area");
+  const auto [areaLo, areaHi] =
+      screenshotLegend(scaled + " --show area --hide-ui --size 320x240", "area_scaled", "area");
   EXPECT_NEAR(areaHi, s * s, 1e-4 * s * s);
   EXPECT_NEAR(areaLo, 1 / (s * s), 1e-4);
 }
@@ -223,10 +198,8 @@ TEST(GuiScreenshot, DetJOfAUniformScaleIsTheCubeOfTheScale) {
 TEST(GuiScreenshot, DetJLegendRangeIsWhatAnalyzeReports) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
-  screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
-                 " --show detj --nu 0.3 --gamma 1 --hide-ui --size 640x480",
-             "detj_posed");
-  const auto [lo, hi] = legendRange(readLog("detj_posed"));
+  const auto [lo, hi] =
+      screenshotLegend(f.posedFiles() + " --show detj --nu 0.3 --gamma 1 --hide-ui --size 640x480", "detj_posed");
   ASSERT_EQ(runSomicage("analyze --cage " + quote(f.cage) + " --posed " + quote(f.posed) + " --mesh " + quote(f.mesh) +
                             " --nu 0.3 --gamma 1 --json",
                         "detj_posed_analyze"),
@@ -305,7 +278,7 @@ std::vector<std::array<double, 3>> objVertices(const std::string& path) {
 TEST(GuiScreenshot, DifferenceViewIsTheDistanceToTheOtherPaneInCageDiameters) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
-  const Image img = screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
+  const Image img = screenshot(f.posedFiles() +
                                    " --compare somigliana,green --show shading,difference --hide-ui --hide-cage "
                                    "--size 800x400",
                                "difference");
@@ -338,10 +311,8 @@ TEST(GuiScreenshot, DifferenceViewIsTheDistanceToTheOtherPaneInCageDiameters) {
 TEST(GuiScreenshot, FixedRangeIsTheTypedOneAndABadOneIsRefused) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
-  screenshot(quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
-                 " --show detj --range 0.5:2 --hide-ui --size 320x240",
-             "fixed_range");
-  const auto [lo, hi] = legendRange(readLog("fixed_range"));
+  const auto [lo, hi] =
+      screenshotLegend(f.posedFiles() + " --show detj --range 0.5:2 --hide-ui --size 320x240", "fixed_range");
   EXPECT_EQ(lo, 0.5);
   EXPECT_EQ(hi, 2.0);
   EXPECT_EQ(runSomicage("--show detj --range 1.5:3 --screenshot x.png", "bad_range"), 2);
