@@ -195,7 +195,7 @@ bool pollWorker(AppState& state) {
 bool updateDeformation(AppState& state) {
   if (!state.deformDirty || !state.scene) return false;
   state.deformDirty = false;
-  if (state.activeBackend() == DeformBackend::Gpu) {
+  if (state.devices.inPlace()) {
     state.cpuStale = state.viewMethods();
     ++state.deformGeneration;  // the Renderer deforms on the GPU and reports the timing (Renderer::sync)
     return true;
@@ -208,7 +208,7 @@ bool updateDeformation(AppState& state) {
     auto it = state.deformers.find(m);
     if (it == state.deformers.end()) continue;
     try {
-      it->second->deform(state.pose, state.params, state.deformed[m]);
+      deformOnDevice(state, it->second, state.deformed[m]);
       changed = true;
     } catch (const std::exception& e) {
       state.errors.push_back(std::string("deformation failed: ") + e.what());
@@ -228,20 +228,17 @@ void ensureCpuPoints(AppState& state, Method method) {
   auto it = state.deformers.find(method);
   if (it == state.deformers.end()) return;
   try {
-    it->second->deform(state.pose, state.params, state.deformed[method]);
+    deformOnDevice(state, it->second, state.deformed[method]);
   } catch (const std::exception& e) {
     state.errors.push_back(std::string("deformation failed: ") + e.what());
   }
 }
 
-void setBackend(AppState& state, DeformBackend backend) {
-  if (state.backend.requested == backend) return;
-  state.backend.requested = backend;
+void setDevice(AppState& state, const std::string& device) {
+  if (state.devices.requested == device) return;
+  state.devices.requested = device;
+  state.devices.evaluators.clear();  // the old device's copies of C go
   state.deformDirty = true;
-}
-
-const char* backendDisplayName(DeformBackend backend) {
-  return backend == DeformBackend::Gpu ? "GPU (compute shader)" : "CPU (OpenMP)";
 }
 
 const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
