@@ -238,6 +238,24 @@ TEST(EditorDevices, CudaIsListedAndSaysWhyItCannotRun) {
   EXPECT_EQ(state.devices.active(), kCpuDevice);
 }
 
+// With a usable CUDA device the editor's frames are computed there: the CPU's points within 1e-9 cage diameters
+// (double C on both; only the order of the sums differs, cuda_backend_test.cpp).
+TEST(EditorDevices, CudaDeviceDeformsLikeTheCpu) {
+  if (!cudaStatus().available) GTEST_SKIP() << "no CUDA device: " << cudaStatus().reason;
+  AppState state;
+  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""), "");
+  openDemoScene(state, 3);
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_EQ(state.devices.active(), "cuda");
+  EXPECT_EQ(state.devices.evaluators.size(), 1u);
+  const Cage& cage = state.scene->restCage;
+  const double diameter = (cage.vertices.colwise().maxCoeff() - cage.vertices.colwise().minCoeff()).norm();
+  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expectedPoints(state, methods::somigliana())),
+            1e-9 * diameter);
+}
+
 TEST(EditorDevices, CommandLineOption) {
   EXPECT_FALSE(parseEditorArgs({}).device.has_value());
   EXPECT_EQ(parseEditorArgs({"--device", "cuda"}).device.value_or(""), "cuda");
