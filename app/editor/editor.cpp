@@ -71,14 +71,13 @@ void chooseDevices(AppState& state, const EditorOptions& options, const FrameDev
   std::string glProblem;
   const bool gl = render::GpuDeformer::available(&glProblem);
   const bool software = gl && render::GpuDeformer::softwareRenderer();
-  state.devices.note = software ? "this OpenGL renders on the CPU (" + state.glRenderer +
-                                      "): opengl works but is slower than cpu here"
-                                : "";
+  state.devices.note =
+      software ? "this OpenGL renders on the CPU (" + state.glRenderer + "): opengl works but is slower than cpu here"
+               : "";
   const std::string refused =
       chooseDevice(state.devices, devices, options.device, gl && !software ? kInPlaceDevice : kCpuDevice, glProblem);
   if (!refused.empty())
-    std::fprintf(stderr, "somicage: --device %s: %s; deforming on the CPU\n", options.device->c_str(),
-                 refused.c_str());
+    std::fprintf(stderr, "somicage: --device %s: %s; deforming on the CPU\n", options.device->c_str(), refused.c_str());
 }
 
 // What the GLFW callbacks reach through the window user pointer: the state (drops), the input queue, and whether

@@ -36,7 +36,7 @@ std::string chooseDevice(DeviceState& state, FrameDevices devices, const std::op
   state.requested = requested.value_or(preferred);
   if (state.usable(state.requested)) return "";
   const std::string why = findFrameDevice(state.offered, state.requested) ? state.unavailable.at(state.requested)
-                                                                           : "not offered by this executable";
+                                                                          : "not offered by this executable";
   state.requested = kCpuDevice;
   return requested ? why : "";  // the default falls back quietly: the panel says why
 }

@@ -296,8 +296,9 @@ void drawControlPanel(AppState& state) {
       ImGui::BeginDisabled(!devices.usable(name));
       if (ImGui::RadioButton(name.c_str(), name == active)) setDevice(state, name);
       ImGui::EndDisabled();
-      tooltip("Where every frame is deformed (--device): cpu = OpenMP, opengl = a compute shader writing the vertex "
-              "buffers, cuda = an NVIDIA GPU");
+      tooltip(
+          "Where every frame is deformed (--device): cpu = OpenMP, opengl = a compute shader writing the vertex "
+          "buffers, cuda = an NVIDIA GPU");
     }
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
     for (const auto& [name, why] : devices.unavailable) ImGui::TextWrapped("%s: %s", name.c_str(), why.c_str());

@@ -40,33 +40,38 @@ class CountingEvaluator final : public FrameEvaluator {
 };
 
 FrameDevice countingDevice(const std::string& name, const std::shared_ptr<Counts>& counts) {
-  return {name, name,
+  return {name,
+          name,
           [counts](const CageDeformer& deformer) {
             ++counts->made;
             return std::make_unique<CountingEvaluator>(deformer, *counts);
           },
-          {}, {}};
+          {},
+          {}};
 }
 
 // A device whose factory refuses (no device after all), optionally saying so beforehand too.
 FrameDevice refusingDevice(const std::string& name, const std::string& reason, bool saysSoBeforehand) {
-  FrameDevice device{name, name,
-                     [reason](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> {
-                       throw FrameDeviceUnavailable(reason);
-                     },
-                     {}, {}};
+  FrameDevice device{
+      name,
+      name,
+      [reason](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> { throw FrameDeviceUnavailable(reason); },
+      {},
+      {}};
   if (saysSoBeforehand) device.unavailable = [reason] { return reason; };
   return device;
 }
 
 // The editor evaluates "opengl" in place (the Renderer's GpuDeformer): its factory must never be called.
 FrameDevice inPlaceDevice() {
-  return {kInPlaceDevice, "gpu",
+  return {kInPlaceDevice,
+          "gpu",
           [](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> {
             ADD_FAILURE() << "the editor made the in-place device's evaluator";
             throw FrameDeviceUnavailable("not here");
           },
-          {}, {}};
+          {},
+          {}};
 }
 
 // The demo cage with its right half sheared upwards: not a similarity, so every coordinate block matters.
