@@ -106,4 +106,45 @@ Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evalu
   return deformed;
 }
 
+namespace {
+
+// The quantiles of values by name: "min", "max", or "pNN" (the NN-th percentile).
+NamedNumbers quantiles(const Eigen::VectorXd& values, const std::vector<std::string>& names) {
+  NamedNumbers result;
+  for (const std::string& name : names) {
+    const double q = name == "min" ? 0.0 : name == "max" ? 1.0 : std::stod(name.substr(1)) / 100;
+    result.emplace_back(name, quantile(values, q));
+  }
+  return result;
+}
+
+void requireFaceIndices(const std::vector<std::vector<int>>& faces, Eigen::Index points, const std::string& source) {
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    for (const int i : faces[k])
+      if (i < 0 || i >= points)
+        throw InputError(
+            source, -1,
+            "face " + std::to_string(k) + " refers to vertex " + std::to_string(i) + " of " + std::to_string(points),
+            "give faces over the deformer's points, 0-based");
+}
+
+}  // namespace
+
+PoseAnalysis analyzePose(const CageDeformer& deformer, const DeformationGradients& gradients, const Cage& restCage,
+                         const Eigen::MatrixXd& restPoints, const std::vector<std::vector<int>>& faces,
+                         const Eigen::MatrixXd& posed, const DeformParams& params, const std::vector<double>& nus,
+                         const std::string& posedSource, const std::string& facesSource,
+                         const ProgressCallback& progress) {
+  requirePosedVertices(restCage, posed, posedSource);
+  deformer.method()->validateParams(params);
+  requireFaceIndices(faces, restPoints.rows(), facesSource);
+  PoseAnalysis a;
+  a.fields = analyzeDeformation(gradients, restPoints, faces, posed, params);
+  a.jacobianDet = quantiles(a.fields.points.detJ, {"min", "p05", "p50", "p95", "max"});
+  a.conformalDistortion = quantiles(a.fields.points.distortion, {"p50", "p95", "max"});
+  a.areaRatio = quantiles(a.fields.faces.areaRatio, {"p05", "p50", "p95", "max"});
+  if (!nus.empty()) a.nuSweep = sweepNu(gradients, restPoints, faces, posed, params, nus, progress);
+  return a;
+}
+
 }  // namespace somicage

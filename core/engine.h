@@ -3,7 +3,8 @@
 //   2. the points of a mesh for that cage, with the placement warning (meshPointsFor);
 //   3. precompute (precompute): the memory check, then the method's precompute (method.h), CPU or with an
 //      injected integrator (PrecomputeOptions::rowIntegrator), with progress and cancel;
-//   4. deform to positions (deformPoints), with the posed cage checked against the rest cage.
+//   4. deform to positions (deformPoints), with the posed cage checked against the rest cage;
+//   5. deform to quantities (analyzePose): the numbers of `somicage analyze`, from the exact J (jacobian.h).
 // Plain Eigen in and out; every problem with an input is an InputError with the message the command line prints.
 #pragma once
 
@@ -12,8 +13,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cage.h"
+#include "deformation_analysis.h"
 #include "deformer.h"
 #include "frame_evaluator.h"
 #include "memory_estimate.h"
@@ -87,5 +91,27 @@ Eigen::MatrixXd deformPoints(const CageDeformer& deformer, const Cage& restCage,
 Eigen::MatrixXd deformPoints(const CageDeformer& deformer, FrameEvaluator& evaluator, const Cage& restCage,
                              const Eigen::MatrixXd& posed, const DeformParams& params, const std::string& posedSource,
                              const std::string& meshSource);
+
+// Numbers by name, in order: the quantiles {"min", ..., "max"} of a quantity.
+using NamedNumbers = std::vector<std::pair<std::string, double>>;
+
+// One pose measured: what `somicage analyze --json` prints (and Python's Deformer.analyze returns).
+struct PoseAnalysis {
+  DeformationAnalysis fields;         // positions, J, det J and distortion per point, area ratios, the volume
+  NamedNumbers jacobianDet;           // min, p05, p50, p95, max of det J over the points with a J
+  NamedNumbers conformalDistortion;   // p50, p95, max of sigma_max / sigma_min
+  NamedNumbers areaRatio;             // p05, p50, p95, max of the faces' deformed / rest area
+  std::vector<NuSweepEntry> nuSweep;  // one entry per nu of the sweep asked for
+};
+
+// For the deformer the gradients were made of: the pose and the parameters checked as deformPoints checks them
+// (InputError naming posedSource or the parameter) and the faces' indices (naming facesSource); then
+// analyzeDeformation (deformation_analysis.h) of the deformer's points (restPoints) with faces over them, its
+// quantiles, and sweepNu over nus (none: no sweep; progress is the sweep's).
+PoseAnalysis analyzePose(const CageDeformer& deformer, const DeformationGradients& gradients, const Cage& restCage,
+                         const Eigen::MatrixXd& restPoints, const std::vector<std::vector<int>>& faces,
+                         const Eigen::MatrixXd& posed, const DeformParams& params, const std::vector<double>& nus,
+                         const std::string& posedSource, const std::string& facesSource,
+                         const ProgressCallback& progress = noProgress);
 
 }  // namespace somicage

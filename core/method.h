@@ -33,6 +33,7 @@ enum DeformParameter : unsigned {
 struct MethodDescriptor {
   const char* name;         // the command line's --method, session files, Python: "somigliana"
   const char* displayName;  // the editor's menus and labels: "Somigliana"
+  const char* description;  // one line for help texts and tooltips (the CLI's help, Blender): what it is, its source
   int listOrder;            // position in lists (help text, menus): ascending
   unsigned parameters;      // the DeformParameter bits it reads
   bool reproducesOutside;   // reproduces a still cage outside it too (no exterior rule needed)

@@ -17,6 +17,33 @@ namespace somicage {
 
 namespace {
 
+// Deformer.deform's keyword arguments that set each DeformParameter (method.h), for method_info().
+struct ParameterKeyword {
+  DeformParameter parameter;
+  const char* keyword;
+};
+constexpr ParameterKeyword kParameterKeywords[] = {
+    {kParamBlend, "variant"},
+    {kParamBlend, "blend"},
+    {kParamNu, "nu"},
+    {kParamGamma, "gamma"},
+    {kParamTractionFix, "traction_fix"},
+    {kParamCorotational, "corotational"},
+};
+
+// A method's descriptor as a dict: what front ends list (Blender's method menu, its tooltips, which settings apply).
+py::dict methodInfo(Method method) {
+  std::vector<std::string> parameters;
+  for (const ParameterKeyword& k : kParameterKeywords)
+    if (readsParameter(method, k.parameter)) parameters.emplace_back(k.keyword);
+  py::dict info;
+  info["name"] = method->name;
+  info["display_name"] = method->displayName;
+  info["description"] = method->description;
+  info["parameters"] = parameters;
+  return info;
+}
+
 void defineCage(py::module_& module) {
   py::class_<PythonCage>(module, "Cage",
                          "A cage as `somicage deform` uses it: face orientation repaired, validated, warned about.")
@@ -71,6 +98,21 @@ void defineDeformer(py::module_& module) {
           "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation "
           "before "
           "the linear-elastic solve. Green and mvc ignore all but posed; bem reads nu and corotational.")
+      .def(
+          "analyze",
+          [](const PythonDeformer& deformer, const py::handle& posed, const std::vector<std::vector<int>>& faces,
+             double nu, double gamma, const std::string& variant, std::optional<double> blend, bool tractionFix,
+             bool corotational, const std::optional<std::tuple<double, double, int>>& nuSweep) {
+            return deformer.analyze(posed, faces, {nu, gamma, variant, blend, tractionFix, corotational}, nuSweep);
+          },
+          py::arg("posed"), py::arg("faces") = std::vector<std::vector<int>>{}, py::kw_only(), py::arg("nu") = 0.0,
+          py::arg("gamma") = 0.0, py::arg("variant") = "global", py::arg("blend") = py::none(),
+          py::arg("traction_fix") = true, py::arg("corotational") = false, py::arg("nu_sweep") = py::none(),
+          "The numbers of `somicage analyze --json` for the cage's vertices moved to posed, as a dict with its keys: "
+          "volume change of the mesh faces (0-based index lists over the points; None when open, "
+          "volume_change_capped then), det J, conformal distortion and area ratio quantiles, fold-overs; "
+          "nu_sweep=(from, to, count) adds the sweep. The exact J is integrated on the first call (GIL released) "
+          "and kept.")
       .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })
       .def_property_readonly("dim", &PythonDeformer::dim)
       .def_property_readonly("num_points", [](const PythonDeformer& d) { return d.engine().numPoints(); })
@@ -108,6 +150,15 @@ PYBIND11_MODULE(_somicage, module) {
         return names;
       },
       "The method names Deformer takes (the engine's registry, core/method.h).");
+  module.def(
+      "method_info",
+      [] {
+        py::list info;
+        for (Method method : allMethods()) info.append(methodInfo(method));
+        return info;
+      },
+      "One dict per method, in the order of methods(): name, display_name, description and parameters (the "
+      "keyword arguments of Deformer.deform it reads; it ignores the others).");
   module.def(
       "load_mesh",
       [](const std::string& path) {

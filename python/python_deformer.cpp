@@ -21,6 +21,27 @@ Method methodArgument(const std::string& name) {
   }
 }
 
+DeformParams deformParams(const PythonDeformOptions& options) {
+  DeformParams params;
+  if (options.variant != "global" && options.variant != "local")
+    throw InputError("variant", -1, "'" + options.variant + "' is not a choice", "use global or local");
+  params.blend = options.blend.value_or(options.variant == "local" ? 1.0 : 0.0);
+  params.nu = options.nu;
+  params.gamma = options.gamma;
+  params.tractionCorrection = options.tractionFix;
+  params.corotational = options.corotational;
+  return params;
+}
+
+// A number of analyze --json; None where the command prints null: the volumes of an open mesh.
+py::object numberOrNone(bool defined, double value) { return defined ? py::object(py::float_(value)) : py::none(); }
+
+py::dict namedNumbers(const NamedNumbers& numbers) {
+  py::dict object;
+  for (const auto& [name, value] : numbers) object[name.c_str()] = value;
+  return object;
+}
+
 // A 2D cage deforms x, y: like `somicage deform`, (n, 3) points or poses give their first two columns.
 Eigen::MatrixXd inCageDimension(Eigen::MatrixXd matrix, int dim, const std::string& name) {
   if (matrix.cols() < dim) throw InputError(name, -1, "has 2 columns for a 3D cage", "pass an array of shape (n, 3)");
@@ -41,13 +62,13 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
   options.threads = threads;
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
-  const Eigen::MatrixXd placed =
+  points_ =
       meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;
-    deformer_ = precompute(chosen, restCage_, placed, options, "points", bridge.callback());
+    deformer_ = precompute(chosen, restCage_, points_, options, "points", bridge.callback());
   } catch (const Cancelled&) {
     bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it
     throw;
@@ -55,20 +76,64 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
   if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer_, "points")) warn(describeNotice(*outside));
 }
 
+Eigen::MatrixXd PythonDeformer::posedVertices(const py::handle& posed) const {
+  return inCageDimension(matrixFromArray(posed, "posed", 0), restCage_.dim(), "posed");
+}
+
 Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDeformOptions& options) const {
-  const Eigen::MatrixXd posedVertices = inCageDimension(matrixFromArray(posed, "posed", 0), restCage_.dim(), "posed");
-
-  DeformParams params;
-  if (options.variant != "global" && options.variant != "local")
-    throw InputError("variant", -1, "'" + options.variant + "' is not a choice", "use global or local");
-  params.blend = options.blend.value_or(options.variant == "local" ? 1.0 : 0.0);
-  params.nu = options.nu;
-  params.gamma = options.gamma;
-  params.tractionCorrection = options.tractionFix;
-  params.corotational = options.corotational;
-
+  const Eigen::MatrixXd pose = posedVertices(posed);
+  const DeformParams params = deformParams(options);
   py::gil_scoped_release release;  // the checks of deformPoints throw InputError, which needs no GIL
-  return deformPoints(*deformer_, restCage_, posedVertices, params, "posed", "points");
+  return deformPoints(*deformer_, restCage_, pose, params, "posed", "points");
+}
+
+py::dict PythonDeformer::analyze(const py::handle& posed, const std::vector<std::vector<int>>& faces,
+                                 const PythonDeformOptions& options,
+                                 const std::optional<std::tuple<double, double, int>>& nuSweep) const {
+  const Eigen::MatrixXd pose = posedVertices(posed);
+  const DeformParams params = deformParams(options);
+  std::vector<double> nus;
+  if (nuSweep) {
+    try {
+      nus = nuSweepValues(std::get<0>(*nuSweep), std::get<1>(*nuSweep), std::get<2>(*nuSweep));
+    } catch (const InputError& e) {  // the engine names the option (--nu-sweep); here it is the keyword
+      throw InputError("nu_sweep", -1, e.problem(), e.hint());
+    }
+  }
+  PoseAnalysis a;
+  {
+    py::gil_scoped_release release;
+    const std::lock_guard<std::mutex> lock(gradientsMutex_);
+    if (!gradients_) gradients_ = std::make_unique<DeformationGradients>(*deformer_, points_);
+    a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces");
+  }
+  const EnclosedMeasure& volume = a.fields.volume;
+  py::dict result;  // the keys and order of `somicage analyze --json` (app/cli/command_analyze.cpp)
+  result["method"] = methodName(deformer_->method());
+  result["dimension"] = restCage_.dim();
+  result["vertices"] = points_.rows();
+  result["closed"] = volume.closed;
+  result["volume_rest"] = numberOrNone(volume.closed, volume.rest);
+  result["volume_deformed"] = numberOrNone(volume.closed, volume.deformed);
+  result["volume_change"] = numberOrNone(volume.closed, volume.change());
+  if (!volume.closed) result["volume_change_capped"] = volume.change();
+  result["jacobian_det"] = namedNumbers(a.jacobianDet);
+  result["conformal_distortion"] = namedNumbers(a.conformalDistortion);
+  result["foldover_vertices"] = a.fields.points.foldovers;
+  result["area_ratio"] = namedNumbers(a.areaRatio);
+  result["outside_points"] = a.fields.points.undefined;
+  if (nuSweep) {
+    py::list sweep;
+    for (const NuSweepEntry& e : a.nuSweep) {
+      py::dict entry;
+      entry["nu"] = e.nu;
+      entry[volume.closed ? "volume_change" : "volume_change_capped"] = e.volumeChange;
+      entry["foldover_vertices"] = e.foldovers;
+      sweep.append(entry);
+    }
+    result["nu_sweep"] = sweep;
+  }
+  return result;
 }
 
 }  // namespace somicage

@@ -1,5 +1,5 @@
-// somicage.Deformer: one precompute (makeDeformer) over a cage and points, then deform() for every posed cage and
-// parameter set. Both run with the GIL released; the precompute reports progress and can be cancelled
+// somicage.Deformer: one precompute (makeDeformer) over a cage and points, then deform() and analyze() for every
+// posed cage and parameter set. They run with the GIL released; the precompute reports progress and can be cancelled
 // (python_progress.h). The deformed points come back as a Fortran-ordered (#P, d) float64 array that owns the
 // engine's result matrix: no copy on the way out.
 #pragma once
@@ -8,10 +8,14 @@
 
 #include <Eigen/Core>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "deformer.h"
+#include "jacobian.h"
 #include "python_cage.h"
 
 namespace somicage {
@@ -34,12 +38,24 @@ class PythonDeformer {
   // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
   Eigen::MatrixXd deform(const pybind11::handle& posed, const PythonDeformOptions& options) const;
 
+  // The numbers of `somicage analyze --json` for that pose, as a dict with its keys; faces: lists of 0-based indices
+  // of the points (none: no volume or area ratios); nuSweep: (from, to, count) as --nu-sweep FROM:TO:N. The
+  // deformation gradients are integrated on the first call and kept.
+  pybind11::dict analyze(const pybind11::handle& posed, const std::vector<std::vector<int>>& faces,
+                         const PythonDeformOptions& options,
+                         const std::optional<std::tuple<double, double, int>>& nuSweep) const;
+
   const CageDeformer& engine() const { return *deformer_; }
   int dim() const { return deformer_->dim(); }
 
  private:
+  Eigen::MatrixXd posedVertices(const pybind11::handle& posed) const;
+
   std::unique_ptr<CageDeformer> deformer_;
-  Cage restCage_;  // for the pose's vertex count and order checks
+  Cage restCage_;           // for the pose's vertex count and order checks
+  Eigen::MatrixXd points_;  // the deformer's points, for analyze
+  mutable std::mutex gradientsMutex_;
+  mutable std::unique_ptr<DeformationGradients> gradients_;  // analyze's J, made on its first call
 };
 
 }  // namespace somicage

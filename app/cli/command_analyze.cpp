@@ -36,7 +36,7 @@ ArgParser analyzeOptions() {
               {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
               {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
               {"--json", "", "print one JSON object"},
-              {"--threads", "N", "OpenMP threads (default: all cores)"},
+              threadsOptionSpec(),
           }));
 }
 
@@ -73,15 +73,6 @@ std::string fieldsCsv(const DeformationAnalysis& a, int dim) {
   return out;
 }
 
-JsonObjectWriter::NumberObject quantiles(const Eigen::VectorXd& values, const std::vector<std::string>& names) {
-  JsonObjectWriter::NumberObject object;
-  for (const std::string& name : names) {
-    const double q = name == "min" ? 0.0 : name == "max" ? 1.0 : std::stod(name.substr(1)) / 100;
-    object.emplace_back(name, quantile(values, q));
-  }
-  return object;
-}
-
 }  // namespace
 
 std::string analyzeUsage() {
@@ -93,7 +84,8 @@ std::string analyzeUsage() {
       << "fold-overs (det J <= 0) and the face area ratios. Vertices outside the cage follow the exterior rule and\n"
       << "have no J (outside_points; nan in the CSV).\n\n"
       << "options:\n"
-      << analyzeOptions().optionHelp();
+      << analyzeOptions().optionHelp() << "\n"
+      << methodsHelp();
   return out.str();
 }
 
@@ -108,8 +100,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const DeformParams params = deformParamsOptions(args, method);
   const std::vector<double> nus = args.has("--nu-sweep") ? sweepOption(args) : std::vector<double>();
   const bool json = args.has("--json");
-  const int threads = args.integer("--threads", 0, 0, 4096);
-  setThreadCount(threads);
+  const int threads = threadsOption(args);
   const std::string meshPath = args.text("--mesh");
 
   const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
@@ -118,9 +109,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
   noteIgnoredParameters(kCommand, args, method);
 
-  PrecomputeOptions options;
-  options.threads = threads;
-  options.integration.threads = threads;
+  const PrecomputeOptions options = precomputeOptions(threads);
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {
@@ -132,14 +121,15 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
     ProgressReporter progress("integrating their gradients");
     gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
   }
-  const DeformationAnalysis a = analyzeDeformation(*gradients, points, mesh.faces, posed, params);
-  std::vector<NuSweepEntry> sweep;
-  if (!nus.empty()) {
-    if (!readsParameter(method, kParamNu))
-      std::cerr << kCommand << ": note: " << methodName(method) << " does not depend on nu; the sweep is flat\n";
-    ProgressReporter progress("sweeping nu");
-    sweep = sweepNu(*gradients, points, mesh.faces, posed, params, nus, progress.callback());
+  if (!nus.empty() && !readsParameter(method, kParamNu))
+    std::cerr << kCommand << ": note: " << methodName(method) << " does not depend on nu; the sweep is flat\n";
+  PoseAnalysis analysis;
+  {
+    ProgressReporter progress("sweeping nu");  // the only part that reports: a sweep takes a while
+    analysis = analyzePose(*deformer, *gradients, cage, points, mesh.faces, posed, params, nus, args.text("--posed"),
+                           meshPath, progress.callback());
   }
+  const DeformationAnalysis& a = analysis.fields;
   if (args.has("--fields")) saveTextFile(args.text("--fields"), fieldsCsv(a, cage.dim()));
   if (!a.volume.closed)
     std::cerr << kCommand << ": note: " << meshPath << " is not a closed mesh: it encloses no volume; the volume "
@@ -158,14 +148,14 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
     out.field("volume_deformed", closed ? a.volume.deformed : none);
     out.field("volume_change", closed ? a.volume.change() : none);
     if (!closed) out.field("volume_change_capped", a.volume.change());
-    out.field("jacobian_det", quantiles(a.points.detJ, {"min", "p05", "p50", "p95", "max"}));
-    out.field("conformal_distortion", quantiles(a.points.distortion, {"p50", "p95", "max"}));
+    out.field("jacobian_det", analysis.jacobianDet);
+    out.field("conformal_distortion", analysis.conformalDistortion);
     out.field("foldover_vertices", a.points.foldovers);
-    out.field("area_ratio", quantiles(a.faces.areaRatio, {"p05", "p50", "p95", "max"}));
+    out.field("area_ratio", analysis.areaRatio);
     out.field("outside_points", a.points.undefined);
     if (!nus.empty()) {
       std::vector<JsonObjectWriter::NumberObject> entries;
-      for (const NuSweepEntry& e : sweep)
+      for (const NuSweepEntry& e : analysis.nuSweep)
         entries.push_back({{"nu", e.nu},
                            {closed ? "volume_change" : "volume_change_capped", e.volumeChange},
                            {"foldover_vertices", static_cast<double>(e.foldovers)}});
@@ -188,7 +178,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
             << "; fold-over vertices (det J <= 0): " << a.points.foldovers << "\n"
             << "  conformal distortion: median " << formatNumber(quantile(a.points.distortion, 0.5)) << ", p95 "
             << formatNumber(quantile(a.points.distortion, 0.95)) << "\n";
-  for (const NuSweepEntry& e : sweep)
+  for (const NuSweepEntry& e : analysis.nuSweep)
     std::cout << "  nu " << formatNumber(e.nu) << ": " << measure << " change " << formatNumber(100 * e.volumeChange, 4)
               << " %, fold-overs " << e.foldovers << "\n";
   return kExitOk;

@@ -29,7 +29,7 @@ ArgParser animateOptions() {
                        {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
                        {"--recompute-normals", "",
                         "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
-                       {"--threads", "N", "OpenMP threads (default: all cores)"},
+                       threadsOptionSpec(),
                    });
 }
 
@@ -79,8 +79,7 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
     return kExitOk;
   }
   const std::string sessionPath = args.text("--session"), outPath = args.text("--out");
-  const int threads = args.integer("--threads", 0, 0, 4096);
-  setThreadCount(threads);
+  const int threads = threadsOption(args);
 
   const AnimationSource session = animationSourceFromSessionJson(readTextFile(sessionPath), sessionPath);
   if (session.meshPath.empty()) {
@@ -101,9 +100,7 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   const Cage cage = loadUsableCage(cagePath, printNotice);
   const MeshDocument document = loadMeshDocument(meshPath);
   const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, printNotice);
-  PrecomputeOptions options;
-  options.threads = threads;
-  options.integration.threads = threads;
+  const PrecomputeOptions options = precomputeOptions(threads);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath) &&
                                  gradientsFitForNormals(kCommand, session.method, cage,

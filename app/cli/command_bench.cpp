@@ -40,7 +40,7 @@ ArgParser benchOptions() {
                        {"--repeat", "R", "precomputes timed (default 3)"},
                        {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
                        {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
-                       {"--threads", "T", "OpenMP threads (default: all cores)"},
+                       threadsOptionSpec(),
                        {"--json", "", "print one JSON object"},
                    });
 }
@@ -133,9 +133,8 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const int repeat = options.integer("--repeat", 3, 1, 1000);
   const int quadrature = options.integer("--baseline-quadrature", 50, 1, 200);
   const int baselinePoints = options.integer("--baseline-points", 2000, 0, 1 << 30);
-  const int threads = options.integer("--threads", 0, 0, 1024);
+  const int threads = threadsOption(options);
   const bool json = options.has("--json");
-  setThreadCount(threads);
 
   const Cage cage = loadUsableCage(options.text("--cage"), printNotice);
   const PolygonMesh mesh = loadMesh(options.text("--mesh"));
@@ -143,10 +142,8 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
       meshPointsFor(cage, mesh.vertices, options.text("--mesh"), options.text("--cage"), printNotice);
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
-  PrecomputeOptions precompute;
-  precompute.threads = threads;
+  PrecomputeOptions precompute = precomputeOptions(threads);
   precompute.floatStorage = true;
-  precompute.integration.threads = threads;
 
   // Precompute as the editor does: exact integrals, stored in float.
   const Method somigliana = methods::somigliana();

@@ -29,7 +29,7 @@ ArgParser checkOptions() {
                                  {"--cage", "C.obj", "the cage to check (3D mesh, or 2D polygon with z = 0)", true},
                                  {"--mesh", "M.obj", "points for the partition-of-unity check (any OBJ)"},
                                  {"--json", "", "print one JSON object instead of the readable report"},
-                                 {"--threads", "N", "OpenMP threads (default: all cores)"},
+                                 threadsOptionSpec(),
                              });
 }
 
@@ -86,8 +86,7 @@ std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, 
                                                               const Eigen::VectorXd& winding, int threads) {
   std::vector<std::pair<std::string, double>> errors;
   const double diameter = cageDiameter(cage.vertices);
-  PrecomputeOptions options;
-  options.threads = threads;
+  const PrecomputeOptions options = precomputeOptions(threads);
   for (Method method : allMethods()) {
     ProgressReporter progress("reproduction with " + methodName(method));
     const auto deformer = makeDeformer(method, cage, points, options, progress.callback());
@@ -260,8 +259,7 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
     std::cout << checkUsage();
     return kExitOk;
   }
-  const int threads = args.integer("--threads", 0, 0, 4096);
-  setThreadCount(threads);
+  const int threads = threadsOption(args);
   const std::string cagePath = args.text("--cage"), meshPath = args.text("--mesh");
 
   const Cage cage = loadCage(cagePath);

@@ -34,7 +34,7 @@ ArgParser deformOptions() {
                "recompute IN's normals from the deformed faces instead of carrying them by the gradient J"},
           },
           {
-              {"--threads", "N", "OpenMP threads (default: all cores)"},
+              threadsOptionSpec(),
               {"--device", "NAME",
                "where the frame is evaluated: cpu (default), opengl, cuda (which integrates the "
                "3D Somigliana coordinates on the device too)"},
@@ -70,7 +70,8 @@ std::string deformUsage() {
       << "The cage is 2D when every z is 0. Reads " << readableExtensions() << "; writes " << writableExtensions()
       << ".\n\n"
       << "options:\n"
-      << deformOptions().optionHelp();
+      << deformOptions().optionHelp() << "\n"
+      << methodsHelp();
   return out.str();
 }
 
@@ -85,8 +86,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   // Options first, so that a typo fails before any file is read.
   const Method method = methodOption(args);
   const DeformParams params = deformParamsOptions(args, method);
-  const int threads = args.integer("--threads", 0, 0, 4096);
-  setThreadCount(threads);
+  const int threads = threadsOption(args);
   const std::string cagePath = args.text("--cage"), posedPath = args.text("--posed");
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
   const FrameDevice& device = deviceOption(args, devices);
@@ -102,9 +102,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   noteIgnoredParameters(kCommand, args, method);
 
   // Precompute once, deform once.
-  PrecomputeOptions options;
-  options.threads = threads;
-  options.integration.threads = threads;
+  PrecomputeOptions options = precomputeOptions(threads);
   options.rowIntegrator = device.rowIntegrator;
   // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
   const bool normalsByGradient =

@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -30,6 +31,21 @@ std::string formatNumber(double value, int digits) {
 
 void setThreadCount(int threads) {
   if (threads > 0) omp_set_num_threads(threads);
+}
+
+OptionSpec threadsOptionSpec() { return {"--threads", "N", "OpenMP threads (default: all cores)"}; }
+
+int threadsOption(const ArgParser& args) {
+  const int threads = args.integer("--threads", 0, 0, 4096);
+  setThreadCount(threads);
+  return threads;
+}
+
+PrecomputeOptions precomputeOptions(int threads) {
+  PrecomputeOptions options;
+  options.threads = threads;
+  options.integration.threads = threads;
+  return options;
 }
 
 void printNotice(const Notice& notice) { std::cerr << "somicage: " << describeNotice(notice) << "\n"; }
@@ -75,6 +91,18 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
                 });
   before.insert(before.end(), after.begin(), after.end());
   return before;
+}
+
+std::string methodsHelp() {
+  std::size_t width = 0;
+  for (Method m : allMethods()) width = std::max(width, std::string(m->name).size());
+  std::string text = "methods (--method):\n";
+  for (Method m : allMethods()) {
+    std::string name = m->name;
+    name.resize(width, ' ');
+    text += "  " + name + "  " + m->displayName + ": " + m->description + "\n";
+  }
+  return text;
 }
 
 DeformParams deformParamsOptions(const ArgParser& args, Method method) {

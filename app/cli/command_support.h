@@ -30,6 +30,10 @@ Method methodOption(const ArgParser& args);
 // --no-traction-fix, --corotational: read them with methodOption and deformParamsOptions), then after.
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
 
+// "methods (--method):" and a line per method of the registry: "  NAME  DISPLAY NAME: DESCRIPTION", for the help
+// texts of the commands that deform.
+std::string methodsHelp();
+
 // --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
 // (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
@@ -39,6 +43,13 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
 
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
+
+// The --threads N option of the commands that compute (default 0: all cores).
+OptionSpec threadsOptionSpec();
+// --threads (0 to 4096), set for everything that follows (setThreadCount).
+int threadsOption(const ArgParser& args);
+// The options of a precompute on that many threads (0: all cores), its integration's included.
+PrecomputeOptions precomputeOptions(int threads);
 
 // Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
 // PATH: ..." for a warning. The commands load through the engine facade with it.

@@ -16,40 +16,64 @@
 
 namespace somicage::editor {
 
-std::vector<Method> AppState::viewMethods() const {
-  if (compare && compareMethods.size() >= 2) return compareMethods;
-  return {method};
+std::vector<ViewSpec> AppState::views() const {
+  if (compare && compareViews.size() >= 2) return compareViews;
+  return {ViewSpec{method, {}, {}, {}, {}}};
 }
 
-std::string viewLabel(const AppState& state, Method method) {
+std::vector<Method> AppState::deformerMethods() const {
+  std::vector<Method> methods;
+  for (const ViewSpec& view : views())
+    if (std::find(methods.begin(), methods.end(), view.method) == methods.end()) methods.push_back(view.method);
+  return methods;
+}
+
+std::string viewLabel(const AppState& state, std::size_t v) {
+  const ViewSpec view = state.views()[v];
+  const Method method = view.method;
+  const DeformParams params = view.params(state.params);
   std::string label = method->displayName;
   char buf[160];
   if (readsParameter(method, kParamNu)) {
-    const double nu = state.params.nu;
+    const double nu = params.nu;
     if (std::isinf(nu)) {
       std::snprintf(buf, sizeof buf, "  nu=%sinf", nu < 0 ? "-" : "");
     } else {
       std::snprintf(buf, sizeof buf, "  nu=%.2f", nu);
     }
     label += buf;
+    if (view.nu) label += " (own)";
   }
   if (readsParameter(method, kParamGamma)) {
-    std::snprintf(buf, sizeof buf, "  gamma=%.2f", state.params.gamma);
+    std::snprintf(buf, sizeof buf, "  gamma=%.2f%s", params.gamma, view.gamma ? " (own)" : "");
     label += buf;
   }
   if (readsParameter(method, kParamBlend)) {
-    const double blend = state.params.blend;
+    const double blend = params.blend;
     if (blend <= 0.0 || blend >= 1.0) {
       label += blend <= 0.0 ? "  global" : "  local";
     } else {
       std::snprintf(buf, sizeof buf, "  blend %.2f", blend);
       label += buf;
     }
+    if (view.variant) label += " (own)";
   }
-  if (readsParameter(method, kParamTractionFix) && !state.params.tractionCorrection) label += "  no traction fix";
-  if (readsParameter(method, kParamCorotational) && state.params.corotational) label += "  corotational";
+  if (readsParameter(method, kParamTractionFix) && !params.tractionCorrection)
+    label += view.tractionCorrection ? "  no traction fix (own)" : "  no traction fix";
+  if (readsParameter(method, kParamCorotational) && params.corotational) label += "  corotational";
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;
+}
+
+std::string viewShortName(const AppState& state, std::size_t v) {
+  const ViewSpec view = state.views()[v];
+  std::string name = view.method->displayName;
+  if (view.nu) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " nu=%.2f", *view.nu);
+    name += buf;
+  }
+  return name;
 }
 
 // ---- scene requests ----
@@ -57,8 +81,8 @@ std::string viewLabel(const AppState& state, Method method) {
 void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
   PrecomputeRequest request;
   request.scene = std::move(scene);
-  request.methods = state.viewMethods();
-  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
+  request.methods = state.deformerMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -70,8 +94,8 @@ namespace {
 void requestLoad(AppState& state, std::function<Scene()> load) {
   PrecomputeRequest request;
   request.loadScene = std::move(load);
-  request.methods = state.viewMethods();
-  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, request.methods.size());
+  request.methods = state.deformerMethods();
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -93,14 +117,14 @@ bool hasDeformer(const AppState& state, Method method) { return state.deformers.
 void ensureDeformers(AppState& state) {
   if (!state.scene || state.loadingScene) return;
   std::vector<Method> missing;
-  for (Method m : state.viewMethods()) {
+  for (Method m : state.deformerMethods()) {
     if (!hasDeformer(state, m)) missing.push_back(m);
   }
   if (missing.empty()) return;
   PrecomputeRequest request;
   request.scene = state.scene;
   request.methods = missing;
-  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.viewMethods().size());
+  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   state.worker.start(std::move(request));
 }
 
@@ -195,8 +219,11 @@ bool pollWorker(AppState& state) {
 bool updateDeformation(AppState& state) {
   if (!state.deformDirty || !state.scene) return false;
   state.deformDirty = false;
+  const std::vector<ViewSpec> views = state.views();
+  state.deformed.resize(views.size());
   if (state.devices.inPlace()) {
-    state.cpuStale = state.viewMethods();
+    state.cpuStale.clear();
+    for (std::size_t v = 0; v < views.size(); ++v) state.cpuStale.push_back(v);
     ++state.deformGeneration;  // the Renderer deforms on the GPU and reports the timing (Renderer::sync)
     return true;
   }
@@ -204,11 +231,11 @@ bool updateDeformation(AppState& state) {
   state.stats.deformThreads = omp_get_max_threads();
   bool changed = false;
   const auto t0 = std::chrono::steady_clock::now();
-  for (Method m : state.viewMethods()) {
-    auto it = state.deformers.find(m);
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    auto it = state.deformers.find(views[v].method);
     if (it == state.deformers.end()) continue;
     try {
-      deformOnDevice(state, it->second, state.deformed[m]);
+      deformOnDevice(state, it->second, views[v].params(state.params), state.deformed[v]);
       changed = true;
     } catch (const std::exception& e) {
       state.errors.push_back(std::string("deformation failed: ") + e.what());
@@ -221,14 +248,17 @@ bool updateDeformation(AppState& state) {
   return changed;
 }
 
-void ensureCpuPoints(AppState& state, Method method) {
-  auto stale = std::find(state.cpuStale.begin(), state.cpuStale.end(), method);
+void ensureCpuPoints(AppState& state, std::size_t view) {
+  auto stale = std::find(state.cpuStale.begin(), state.cpuStale.end(), view);
   if (stale == state.cpuStale.end()) return;
   state.cpuStale.erase(stale);
-  auto it = state.deformers.find(method);
+  const std::vector<ViewSpec> views = state.views();
+  if (view >= views.size()) return;
+  auto it = state.deformers.find(views[view].method);
   if (it == state.deformers.end()) return;
+  state.deformed.resize(views.size());
   try {
-    deformOnDevice(state, it->second, state.deformed[method]);
+    deformOnDevice(state, it->second, views[view].params(state.params), state.deformed[view]);
   } catch (const std::exception& e) {
     state.errors.push_back(std::string("deformation failed: ") + e.what());
   }
@@ -241,11 +271,11 @@ void setDevice(AppState& state, const std::string& device) {
   state.deformDirty = true;
 }
 
-const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method) {
-  auto it = state.deformed.find(method);
-  if (it != state.deformed.end() && state.scene && it->second.rows() == state.scene->meshVertices.rows() &&
-      hasDeformer(state, method)) {
-    return it->second;
+const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view) {
+  const std::vector<ViewSpec> views = state.views();
+  if (view < views.size() && view < state.deformed.size() && state.scene &&
+      state.deformed[view].rows() == state.scene->meshVertices.rows() && hasDeformer(state, views[view].method)) {
+    return state.deformed[view];
   }
   return state.scene->meshVertices;
 }
@@ -369,11 +399,26 @@ void setCompare(AppState& state, bool on) {
   ensureDeformers(state);
 }
 
+void setCompareViews(AppState& state, std::vector<ViewSpec> views) {
+  if (views.size() < 2 || views.size() > kMaxCompareViews) return;
+  state.compareViews = std::move(views);
+  setCompare(state, true);
+}
+
+void removeCompareView(AppState& state, std::size_t v) {
+  if (state.compareViews.size() <= 2 || v >= state.compareViews.size()) return;
+  std::vector<ViewShow>& shows = state.quantities.show.views;
+  if (shows.size() > 1 && v < shows.size()) shows.erase(shows.begin() + static_cast<std::ptrdiff_t>(v));
+  std::vector<ViewSpec> views = state.compareViews;
+  views.erase(views.begin() + static_cast<std::ptrdiff_t>(v));
+  setCompareViews(state, std::move(views));
+}
+
 void frameAll(AppState& state) {
   if (!state.scene) return;
-  ensureCpuPoints(state, state.viewMethods().front());
+  ensureCpuPoints(state, 0);
   Eigen::Vector3d lo, hi, clo, chi;
-  bounds3(displayedPoints(state, state.viewMethods().front()), lo, hi);
+  bounds3(displayedPoints(state, 0), lo, hi);
   bounds3(state.pose.rows() > 0 ? state.pose : state.scene->restCage.vertices, clo, chi);
   state.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.viewAspect);
 }
@@ -400,7 +445,7 @@ Session makeSession(const AppState& state) {
   s.method = state.method;
   s.params = state.params;
   s.compare = state.compare;
-  s.compareMethods = state.compareMethods;
+  s.compareViews = state.compareViews;
   s.camera = state.camera.state();
   s.poses = state.animation.poses;
   s.timeline = state.animation.timeline;
@@ -414,7 +459,7 @@ void applySession(AppState& state, const Session& s) {
   state.method = s.method;
   state.params = s.params;
   state.compare = s.compare;
-  if (!s.compareMethods.empty()) state.compareMethods = s.compareMethods;
+  if (!s.compareViews.empty()) state.compareViews = s.compareViews;
   const bool inlineCage = s.restCage.numVertices() > 0;
   const bool sameScene = state.scene && !state.loadingScene && state.scene->meshPath == s.meshPath &&
                          state.scene->cagePath == s.cagePath &&

@@ -31,6 +31,7 @@
 #include "transform.h"
 #include "unsaved_changes.h"
 #include "view_quantities.h"
+#include "view_spec.h"
 
 namespace somicage::editor {
 
@@ -68,17 +69,17 @@ struct AppState {
   Method method;  // the registry's first (method.h)
   DeformParams params;
   bool compare = false;
-  std::vector<Method> compareMethods = defaultCompareMethods();
+  std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
 
   // ---- deformation ----
-  DeformerSet deformers;                       // for `scene`
-  std::map<Method, Eigen::MatrixXd> deformed;  // latest deformed points per method
-  std::uint64_t deformGeneration = 0;          // bumps when `deformed` changes (position upload)
+  DeformerSet deformers;                  // for `scene`, one per method (views of one method share it)
+  std::vector<Eigen::MatrixXd> deformed;  // latest deformed points per view (views())
+  std::uint64_t deformGeneration = 0;     // bumps when `deformed` changes (position upload)
   bool deformDirty = true;
   DeviceState devices;  // where each frame is deformed (frame_device_evaluators.h; chosen once the GL context exists)
-  // In place on OpenGL: methods whose `deformed` entry is stale (the Renderer deformed them on the GPU);
+  // In place on OpenGL: views whose `deformed` entry is stale (the Renderer deformed them on the GPU);
   // ensureCpuPoints() computes them on the CPU when something needs the numbers (framing, export).
-  std::vector<Method> cpuStale;
+  std::vector<std::size_t> cpuStale;
   // ---- quantities shown on the meshes (view_quantity.h) ----
   ViewQuantities quantities;  // what each view shows, measured on a worker
 
@@ -132,8 +133,12 @@ struct AppState {
   bool frameRequested = false;    // frame the rest scene once the viewports are known
   std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop
 
-  // Methods shown, one per viewport.
-  std::vector<Method> viewMethods() const;
+  // The views shown, one per viewport: the compare view's list, or the current method with the shared parameters.
+  std::vector<ViewSpec> views() const;
+  // The distinct methods of the views, one deformer each.
+  std::vector<Method> deformerMethods() const;
+  // The parameters view v deforms with (its own, else the panel's).
+  DeformParams viewParams(std::size_t v) const { return views()[v].params(params); }
   int dim() const { return scene ? scene->dim() : 3; }
 };
 
@@ -160,14 +165,14 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome);
 // `deformed` stale (cpuStale).
 bool updateDeformation(AppState& state);
 
-// Brings `deformed[method]` up to date on the CPU when the in-place OpenGL path left it stale (framing, export).
-void ensureCpuPoints(AppState& state, Method method);
+// Brings `deformed[view]` up to date on the CPU when the in-place OpenGL path left it stale (framing, export).
+void ensureCpuPoints(AppState& state, std::size_t view);
 
 // Switches the device (recorded nowhere: not an edit). It takes effect only when usable (devices.usable).
 void setDevice(AppState& state, const std::string& device);
 
-// The points shown in a view: deformed when available, else the rest mesh.
-const Eigen::MatrixXd& displayedPoints(const AppState& state, Method method);
+// The points shown in view `view` (views()): deformed when available, else the rest mesh.
+const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view);
 bool hasDeformer(const AppState& state, Method method);
 
 // ---- edits (history.h) ----
@@ -193,6 +198,10 @@ bool hasUnsavedChanges(const AppState& state);
 std::string documentName(const AppState& state);
 std::string windowTitle(const AppState& state);
 void setCompare(AppState& state, bool on);
+// The compare view's panes (2 to kMaxCompareViews; others are ignored): shown at once, their missing deformers
+// precomputed. removeCompareView drops pane v (and its own Show choice), keeping two at least.
+void setCompareViews(AppState& state, std::vector<ViewSpec> views);
+void removeCompareView(AppState& state, std::size_t v);
 
 // Frames the current pose and the displayed mesh (F); frameRest frames the rest cage and mesh.
 void frameAll(AppState& state);
@@ -223,7 +232,9 @@ void openDroppedFiles(AppState& state, const std::vector<std::string>& paths);
 void noteRecent(AppState& state, RecentEntry entry);
 void openRecent(AppState& state, const RecentEntry& entry);
 
-// "Somigliana  nu=0.30 gamma=1.00 global" etc.
-std::string viewLabel(const AppState& state, Method method);
+// "Somigliana  nu=0.30 gamma=1.00 global" etc. for view v; a parameter of the view's own is marked "(own)".
+std::string viewLabel(const AppState& state, std::size_t v);
+// "Somigliana", or "Somigliana nu=0.45" for a view with its own nu: tells panes of one method apart in menus.
+std::string viewShortName(const AppState& state, std::size_t v);
 
 }  // namespace somicage::editor

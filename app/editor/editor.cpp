@@ -52,9 +52,9 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   if (o.gamma) state.params.gamma = *o.gamma;
   if (o.blend) state.params.blend = *o.blend;
   if (o.tractionCorrection) state.params.tractionCorrection = *o.tractionCorrection;
-  if (!o.compare.empty()) {
+  if (!o.views.empty()) {
     state.compare = true;
-    state.compareMethods = o.compare;
+    state.compareViews = o.views;
   }
   state.hideUi = o.hideUi;
   state.flatShading = o.flatShading;
@@ -200,7 +200,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   const double bottom =
       state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
-      layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.viewMethods().size()));
+      layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.views().size()));
   state.viewAspect = views.front().width / views.front().height;
   if (!state.hideUi) {
     drawMainMenu(state);
@@ -258,7 +258,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 // "legend ID: LO HI" per shown quantity (full precision), for scripts and tests.
 void printLegends(const AppState& state) {
   std::vector<int> printed;
-  for (std::size_t v = 0; v < state.viewMethods().size(); ++v) {
+  for (std::size_t v = 0; v < state.views().size(); ++v) {
     const int quantity = state.quantities.show.view(v).quantity;
     if (quantity == 0 || std::find(printed.begin(), printed.end(), quantity) != printed.end()) continue;
     printed.push_back(quantity);

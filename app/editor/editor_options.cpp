@@ -28,6 +28,7 @@ double parseNumber(const std::string& text, const std::string& option) {
 EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   EditorOptions o;
   std::vector<std::string> positional;
+  bool compareGiven = false;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
     auto value = [&]() -> const std::string& {
@@ -53,21 +54,31 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       if (v != "on" && v != "off") throw InputError(a, -1, "expected on or off, got '" + v + "'", "--traction-fix on");
       o.tractionCorrection = v == "on";
     } else if (a == "--compare") {
+      if (compareGiven || !o.views.empty())
+        throw InputError(a, -1, "given twice, or with --view", "use --compare a,b or --view SPEC (repeated), not both");
+      compareGiven = true;
       const std::string list = value();
+      std::vector<Method> methods;
       std::size_t start = 0;
       while (start <= list.size()) {
         const std::size_t comma = list.find(',', start);
         const std::string name = list.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         try {
-          o.compare.push_back(parseMethod(name));
+          methods.push_back(parseMethod(name));
         } catch (const InputError&) {
           throw InputError(a, -1, "unknown method '" + name + "'", "use a comma list of " + methodNameList());
         }
         if (comma == std::string::npos) break;
         start = comma + 1;
       }
-      if (o.compare.size() < 2 || o.compare.size() > kMaxCompareViews)
+      if (methods.size() < 2 || methods.size() > kMaxCompareViews)
         throw InputError(a, -1, "compare needs 2 or 3 methods", "e.g. --compare somigliana,green,mvc");
+      o.views = viewsOf(methods);
+    } else if (a == "--view") {
+      if (compareGiven) throw InputError(a, -1, "given with --compare", "use --view SPEC (repeated) or --compare a,b");
+      if (o.views.size() == kMaxCompareViews)
+        throw InputError(a, -1, "at most " + std::to_string(kMaxCompareViews) + " views", "give --view 2 or 3 times");
+      o.views.push_back(parseViewSpec(value(), a));
     } else if (a == "--screenshot") {
       o.screenshotPath = value();
     } else if (a == "--session") {
@@ -152,6 +163,10 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       throw InputError("--range", -1, std::string(problem) + " (for " + d.id + ")",
                        "e.g. --range 0.5:2 for det J, --range 0:0.05 for a difference");
   }
+  if (o.views.size() == 1)
+    throw InputError("--view", -1, "one view given: the compare view shows 2 or 3",
+                     "give --view twice, e.g. --view somigliana:nu=0 --view somigliana:nu=0.45 (one view: --method, "
+                     "--nu)");
   if (o.gamma && (!(*o.gamma >= 0) || std::isinf(*o.gamma)))
     throw InputError("--gamma", -1, "must be finite and >= 0", "e.g. --gamma 1");
   if (o.blend && !(*o.blend >= 0 && *o.blend <= 1))
@@ -178,6 +193,10 @@ std::string editorUsage() {
          "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
          "  --traction-fix on|off     traction correction (Eq. 15)\n"
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
+         "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local][:traction=on|off]\n"
+         "                            one side-by-side view with its own parameters (the others follow --nu\n"
+         "                            etc.); give it 2 or 3 times, e.g. --view somigliana:nu=0\n"
+         "                            --view somigliana:nu=0.45 (paper Fig. 3)\n"
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"

@@ -8,6 +8,7 @@
 #include "deformer.h"
 #include "frame_evaluator.h"
 #include "view_quantity.h"
+#include "view_spec.h"
 
 namespace somicage::editor {
 
@@ -18,7 +19,7 @@ struct EditorOptions {
   std::optional<Method> method;               // --method
   std::optional<double> nu, gamma, blend;     // --nu (inf allowed), --gamma, --blend
   std::optional<bool> tractionCorrection;     // --traction-fix on|off
-  std::vector<Method> compare;                // --compare a,b[,c]; empty = one view
+  std::vector<ViewSpec> views;                // --compare a,b[,c] or --view SPEC (2 or 3); empty = one view
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH
   bool flatShading = false;                   // --flat: faceted shading

@@ -18,8 +18,9 @@ const Eigen::Vector3f kViewBackground(0.27f, 0.28f, 0.32f);
 
 Renderer::Renderer() = default;
 
-bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, Method method, bool newScene) {
-  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(method);
+bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, bool newScene) {
+  const ViewSpec view = state.views()[v];
+  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(view.method);
   if (!slot.gpu) slot.gpu = std::make_unique<render::GpuDeformer>();
   const bool newDeformer = slot.uploaded != deformer;
   if (newDeformer) {
@@ -27,18 +28,18 @@ bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, Method method, boo
     slot.gpu->upload(*deformer);
     slot.uploaded = deformer;
   }
-  const bool current = slot.onGpu && slot.method == method && slot.deformGeneration == state.deformGeneration;
+  const bool current = slot.onGpu && slot.view == view && slot.deformGeneration == state.deformGeneration;
   if (!newScene && !newDeformer && current) return false;
-  slot.gpu->deform(state.pose, state.params, *slot.mesh);
+  slot.gpu->deform(state.pose, view.params(state.params), *slot.mesh);
   slot.onGpu = true;
   return true;
 }
 
 void Renderer::sync(AppState& state) {
   if (!state.scene) return;
-  const std::vector<Method> methods = state.viewMethods();
-  if (meshes_.size() < methods.size()) meshes_.resize(methods.size());
-  for (std::size_t v = methods.size(); v < meshes_.size(); ++v) {  // hidden views give their GPU memory back
+  const std::vector<ViewSpec> views = state.views();
+  if (meshes_.size() < views.size()) meshes_.resize(views.size());
+  for (std::size_t v = views.size(); v < meshes_.size(); ++v) {  // hidden views give their GPU memory back
     meshes_[v].gpu.reset();
     meshes_[v].uploaded.reset();
     meshes_[v].onGpu = false;
@@ -46,14 +47,14 @@ void Renderer::sync(AppState& state) {
   const bool inPlace = state.devices.inPlace();
   double gpuMs = 0.0, cpuMs = 0.0;
   bool ranOnGpu = false, timed = false;
-  for (std::size_t v = 0; v < methods.size(); ++v) {
+  for (std::size_t v = 0; v < views.size(); ++v) {
     MeshSlot& slot = meshes_[v];
     if (!slot.mesh) slot.mesh = std::make_unique<render::MeshRenderer>();
     const bool newScene = slot.sceneGeneration != state.sceneGeneration;
     if (newScene) slot.mesh->setTopology(state.scene->meshTriangles);
-    if (state.devices.inPlace() && hasDeformer(state, methods[v])) {  // (a failure turns it off)
+    if (state.devices.inPlace() && hasDeformer(state, views[v].method)) {  // (a failure turns it off)
       try {
-        if (syncGpu(slot, state, methods[v], newScene)) {
+        if (syncGpu(slot, state, v, newScene)) {
           ranOnGpu = true;
           cpuMs += slot.gpu->lastCpuMilliseconds();
         }
@@ -73,7 +74,7 @@ void Renderer::sync(AppState& state) {
       }
       slot.sceneGeneration = state.sceneGeneration;
       slot.deformGeneration = state.deformGeneration;
-      slot.method = methods[v];
+      slot.view = views[v];
       slot.showedDeformed = true;
       continue;
     }
@@ -81,13 +82,14 @@ void Renderer::sync(AppState& state) {
       slot.gpu.reset();
       slot.uploaded.reset();
     }
-    const bool deformed = hasDeformer(state, methods[v]) && state.deformed.count(methods[v]) > 0;
-    if (newScene || slot.method != methods[v] || slot.deformGeneration != state.deformGeneration ||
+    const bool deformed = hasDeformer(state, views[v].method) && v < state.deformed.size() &&
+                          state.deformed[v].rows() == state.scene->meshVertices.rows();
+    if (newScene || slot.view != views[v] || slot.deformGeneration != state.deformGeneration ||
         slot.showedDeformed != deformed || slot.onGpu) {
-      slot.mesh->setPositions(displayedPoints(state, methods[v]));
+      slot.mesh->setPositions(displayedPoints(state, v));
       slot.sceneGeneration = state.sceneGeneration;
       slot.deformGeneration = state.deformGeneration;
-      slot.method = methods[v];
+      slot.view = views[v];
       slot.showedDeformed = deformed;
       slot.onGpu = false;
     }
@@ -117,14 +119,14 @@ void Renderer::sync(AppState& state) {
 }
 
 void Renderer::syncScalars(const AppState& state) {
-  const std::vector<Method> methods = state.viewMethods();
-  for (std::size_t v = 0; v < methods.size() && v < meshes_.size(); ++v) {
+  const std::vector<ViewSpec> views = state.views();
+  for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
     MeshSlot& slot = meshes_[v];
     const int quantity = state.quantities.show.view(v).quantity;
     const QuantityDescriptor& d = quantityDescriptor(quantity);
     const ColorRange range = quantity > 0 ? shownRange(state, quantity) : ColorRange{};
-    if (slot.quantityGeneration == state.quantities.generation && slot.method == methods[v] &&
-        slot.quantity == quantity && slot.range.lo == range.lo && slot.range.hi == range.hi)
+    if (slot.quantityGeneration == state.quantities.generation && slot.view == views[v] && slot.quantity == quantity &&
+        slot.range.lo == range.lo && slot.range.hi == range.hi)
       continue;
     slot.quantityGeneration = state.quantities.generation;
     slot.quantity = quantity;

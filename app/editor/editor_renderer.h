@@ -36,7 +36,7 @@ class Renderer {
   struct MeshSlot {
     std::unique_ptr<render::MeshRenderer> mesh;
     std::uint64_t sceneGeneration = ~0ull, deformGeneration = ~0ull;
-    Method method;
+    ViewSpec view;  // what the slot shows (its method and own parameters)
     bool showedDeformed = false;
     // In place on OpenGL: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
     std::unique_ptr<render::GpuDeformer> gpu;
@@ -49,8 +49,8 @@ class Renderer {
   };
   // Uploads the shown quantity's colour-map coordinates of each view (shared range) when they changed.
   void syncScalars(const AppState& state);
-  // Deforms slot v on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.
-  bool syncGpu(MeshSlot& slot, const AppState& state, Method method, bool newScene);
+  // Deforms slot v (view v) on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.
+  bool syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, bool newScene);
   std::vector<MeshSlot> meshes_;
   render::CageRenderer cage_;
   std::uint64_t cageScene_ = ~0ull, cagePose_ = ~0ull;

@@ -33,19 +33,20 @@ bool gradientsFit(const CageDeformer& deformer, std::string* note) {
   return false;
 }
 
+// The first view's mesh: the current method at the panel's parameters, or the compare view's first pane.
 ExportWorker::Job makeMeshExportJob(AppState& state, const std::string& path) {
-  ensureCpuPoints(state, state.method);
-  const Eigen::MatrixXd& points = displayedPoints(state, state.method);
+  ensureCpuPoints(state, 0);
+  const Eigen::MatrixXd& points = displayedPoints(state, 0);
+  const Method method = state.views().front().method;
   const std::shared_ptr<const Scene> scene = state.scene;
   ExportWorker::Job job;
   if (scene->document) {  // a file: everything of it but the positions is kept (core/mesh_formats.h)
     Eigen::MatrixXd positions = scene->document->geometry.vertices;  // a 2D scene keeps z
     positions.leftCols(points.cols()) = points;
     std::shared_ptr<const CageDeformer> deformer;
-    if (hasDeformer(state, state.method) && scene->document->normalCount > 0)
-      deformer = state.deformers.at(state.method);
+    if (hasDeformer(state, method) && scene->document->normalCount > 0) deformer = state.deformers.at(method);
     job = [scene, deformer, positions, path, pose = state.pose,
-           params = state.params](const ProgressCallback& progress) {
+           params = state.viewParams(0)](const ProgressCallback& progress) {
       std::vector<std::string> notes;
       Eigen::MatrixXd normals;  // empty: recomputed by the writer
       std::string note;
@@ -82,9 +83,9 @@ bool exportDeformedMesh(AppState& state, const std::string& path) {
     state.errors.push_back("Export: another export is running; wait for it or cancel it");
     return false;
   }
-  state.exporter.start(path,
-                       "exported the deformed mesh (" + std::string(state.method->displayName) + ") to " + path,
-                       makeMeshExportJob(state, path));
+  state.exporter.start(
+      path, "exported the deformed mesh (" + std::string(state.views().front().method->displayName) + ") to " + path,
+      makeMeshExportJob(state, path));
   state.statusMessage = "exporting the deformed mesh to " + path;
   return true;
 }

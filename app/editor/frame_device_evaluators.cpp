@@ -47,8 +47,9 @@ void deviceFailed(AppState& state, const std::string& name, const std::string& w
   state.errors.push_back("the " + name + " deformation failed, using the CPU: " + what);
 }
 
-void deformOnDevice(AppState& state, const std::shared_ptr<const CageDeformer>& deformer, Eigen::MatrixXd& out) {
-  const FrameWeights W = deformer->frameWeights(state.pose, state.params);  // bad parameters throw here
+void deformOnDevice(AppState& state, const std::shared_ptr<const CageDeformer>& deformer, const DeformParams& params,
+                    Eigen::MatrixXd& out) {
+  const FrameWeights W = deformer->frameWeights(state.pose, params);  // bad parameters throw here
   DeviceState& devices = state.devices;
   const std::string name = devices.inPlace() ? kCpuDevice : devices.active();
   if (name != kCpuDevice) {

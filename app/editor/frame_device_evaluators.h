@@ -63,9 +63,10 @@ std::string chooseDevice(DeviceState& state, FrameDevices devices, const std::op
 // After `name` failed with `what`: marks it unusable and reports it in state.errors; the CPU deforms from now on.
 void deviceFailed(AppState& state, const std::string& name, const std::string& what);
 
-// out = the deformer's points for state.pose and state.params on the active device (the CPU when the active one is
-// in place: these are the numbers framing and export need). Bad parameters throw InputError (nothing is
+// out = the deformer's points for state.pose and `params` (a view's) on the active device (the CPU when the active
+// one is in place: these are the numbers framing and export need). Bad parameters throw InputError (nothing is
 // evaluated); a device that fails is marked unavailable, reported in state.errors, and the CPU evaluates instead.
-void deformOnDevice(AppState& state, const std::shared_ptr<const CageDeformer>& deformer, Eigen::MatrixXd& out);
+void deformOnDevice(AppState& state, const std::shared_ptr<const CageDeformer>& deformer, const DeformParams& params,
+                    Eigen::MatrixXd& out);
 
 }  // namespace somicage::editor

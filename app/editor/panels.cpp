@@ -11,6 +11,7 @@
 #include <limits>
 #include <system_error>
 
+#include "compare_views_panel.h"
 #include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
@@ -153,31 +154,14 @@ void drawControlPanel(AppState& state) {
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   tooltip(
-      "Show two or three methods side by side with the same pose (View > Compare methods). A view setting:\n"
-      "not an edit, not undone.");
-  if (state.compare) {
-    bool changed = false;
-    std::vector<Method> list;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (i > 0) ImGui::SameLine();
-      bool use =
-          std::find(state.compareMethods.begin(), state.compareMethods.end(), all[i]) != state.compareMethods.end();
-      changed |= ImGui::Checkbox((std::string(all[i]->displayName) + "##c").c_str(), &use);
-      tooltip("Show this method in the comparison (two at least)");
-      if (use) list.push_back(all[i]);
-    }
-    if (changed) {
-      if (list.size() >= 2 && list.size() <= kMaxCompareViews) {
-        state.compareMethods = list;
-        setCompare(state, true);
-      }
-    }
-  }
+      "Show two or three views side by side with the same pose (View > Compare methods): each a method, with\n"
+      "its own nu or the panel's. A view setting: not an edit, not undone.");
+  if (state.compare) drawCompareViews(state);
 
   sectionHeader("Somigliana parameters");
   // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
   bool parametersUsed = false;
-  for (Method m : state.viewMethods()) parametersUsed |= m->parameters != 0;
+  for (Method m : state.deformerMethods()) parametersUsed |= m->parameters != 0;
   if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once
@@ -367,14 +351,20 @@ void drawStatusBar(AppState& state) {
 
 void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views) {
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const std::vector<Method> methods = state.viewMethods();
-  for (std::size_t v = 0; v < views.size() && v < methods.size(); ++v) {
-    const std::string label = viewLabel(state, methods[v]);
+  const std::size_t viewCount = state.views().size();
+  for (std::size_t v = 0; v < views.size() && v < viewCount; ++v) {
+    const std::string label = viewLabel(state, v);
     const ImVec2 pos(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8));
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
+    // Clipped to the pane: a view with several own parameters in a narrow pane must not run into the next one.
+    draw->PushClipRect(
+        ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y)),
+        ImVec2(static_cast<float>(views[v].x + views[v].width - 4), static_cast<float>(views[v].y + views[v].height)),
+        true);
     draw->AddRectFilled(ImVec2(pos.x - 4, pos.y - 2), ImVec2(pos.x + size.x + 4, pos.y + size.y + 2),
                         IM_COL32(20, 20, 24, 170), 3.0f);
     draw->AddText(pos, IM_COL32(235, 235, 240, 255), label.c_str());
+    draw->PopClipRect();
     if (v > 0) {
       draw->AddLine(ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y)),
                     ImVec2(static_cast<float>(views[v].x), static_cast<float>(views[v].y + views[v].height)),

@@ -38,20 +38,20 @@ double cageDiameter(const Scene& scene) {
 }
 
 void computeDifferences(AppState& state) {
-  const std::vector<Method> methods = state.viewMethods();
+  const std::vector<ViewSpec> views = state.views();
   const ShowSettings& show = state.quantities.show;
-  state.quantities.measured.resize(methods.size());
-  for (std::size_t v = 0; v < methods.size(); ++v) {
+  state.quantities.measured.resize(views.size());
+  for (std::size_t v = 0; v < views.size(); ++v) {
     if (quantityDescriptor(show.view(v).quantity).source != QuantitySource::Difference) continue;
-    const int w = show.otherView(v, methods.size());
+    const int other = show.otherView(v, views.size());
     state.quantities.measured[v].reset();
-    if (w < 0 || !hasDeformer(state, methods[v]) || !hasDeformer(state, methods[static_cast<std::size_t>(w)])) continue;
-    ensureCpuPoints(state, methods[v]);
-    ensureCpuPoints(state, methods[static_cast<std::size_t>(w)]);
+    if (other < 0) continue;
+    const std::size_t w = static_cast<std::size_t>(other);
+    if (!hasDeformer(state, views[v].method) || !hasDeformer(state, views[w].method)) continue;
+    ensureCpuPoints(state, v);
+    ensureCpuPoints(state, w);
     ViewMeasurement m;
-    m.values =
-        pointDifference(displayedPoints(state, methods[v]),
-                        displayedPoints(state, methods[static_cast<std::size_t>(w)]), cageDiameter(*state.scene));
+    m.values = pointDifference(displayedPoints(state, v), displayedPoints(state, w), cageDiameter(*state.scene));
     state.quantities.measured[v] = std::move(m);
   }
   state.quantities.differenceGeneration = state.deformGeneration;
@@ -79,16 +79,17 @@ MeasureRequest measureRequest(const AppState& state) {
   r.poseGeneration = state.deformGeneration;
   int vertex = -1, face = -1;
   selectedElement(state, vertex, face);
-  const std::vector<Method> methods = state.viewMethods();
-  for (std::size_t v = 0; v < methods.size(); ++v) {
+  const std::vector<ViewSpec> views = state.views();
+  for (std::size_t v = 0; v < views.size(); ++v) {
     MeasureView view;
     view.quantity = state.quantities.show.view(v).quantity;
-    view.params = state.params;
+    view.params = state.viewParams(v);  // each view is measured at its own nu (the field too)
     const QuantitySource source = quantityDescriptor(view.quantity).source;
     if (source == QuantitySource::Jacobian) {
-      auto d = state.deformers.find(methods[v]);
+      auto d = state.deformers.find(views[v].method);
       if (d != state.deformers.end()) view.deformer = d->second;
-    } else if (source == QuantitySource::Field && readsParameter(methods[v], kParamNu)) {  // T_i(nu): Somigliana, BEM
+    } else if (source == QuantitySource::Field &&
+               readsParameter(views[v].method, kParamNu)) {  // T_i(nu): Somigliana, BEM
       view.fieldVertex = vertex;
       view.fieldFace = face;
     }
@@ -100,7 +101,7 @@ MeasureRequest measureRequest(const AppState& state) {
 void measureViews(AppState& state) {
   ViewQuantities& q = state.quantities;
   if (!state.scene) return;
-  const std::size_t viewCount = state.viewMethods().size();
+  const std::size_t viewCount = state.views().size();
   q.measured.resize(viewCount);
   MeasureRequest request = measureRequest(state);
   const MeasureKey key = measureKey(request);
@@ -158,7 +159,7 @@ void waitForMeasurements(AppState& state) {
 }
 
 ColorRange shownRange(const AppState& state, int quantity) {
-  return quantityRange(state.quantities.show, quantity, state.quantities.measurements(state.viewMethods().size()));
+  return quantityRange(state.quantities.show, quantity, state.quantities.measurements(state.views().size()));
 }
 
 namespace {
@@ -235,18 +236,18 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
       if (w < 0) return "difference: needs the compare view";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
-                    state.viewMethods()[static_cast<std::size_t>(w)]->displayName, m->values.maxCoeff(),
+                    viewShortName(state, static_cast<std::size_t>(w)).c_str(), m->values.maxCoeff(),
                     quantile(m->values, 0.5));
       return buf;
     }
     case QuantitySource::Field: {
       int vertex = -1, face = -1;
       selectedElement(state, vertex, face);
-      if (!readsParameter(state.viewMethods()[v], kParamNu)) return "field: views of a method with nu only";
+      if (!readsParameter(state.views()[v].method, kParamNu)) return "field: views of a method with nu only";
       if (vertex < 0 && face < 0) return "field: select a cage vertex or face";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "field of cage %s %d at nu %.3g", vertex >= 0 ? "vertex" : "face",
-                    vertex >= 0 ? vertex : face, state.params.nu);
+                    vertex >= 0 ? vertex : face, state.viewParams(v).nu);
       return buf;
     }
   }
@@ -256,7 +257,7 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
 // The mesh vertex of view v under the mouse (selection.h's pickPoint on the view's deformed points, 8 pixels), -1
 // when none.
 int hoveredVertex(const AppState& state, std::size_t v, const ViewRect& rect, const Eigen::Vector2d& mouse) {
-  const Eigen::MatrixXd& points = displayedPoints(state, state.viewMethods()[v]);
+  const Eigen::MatrixXd& points = displayedPoints(state, v);
   return pickPoint(projectPoints(state.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
 }
 
@@ -299,7 +300,7 @@ void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
   if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return;
   const ImVec2 mp = ImGui::GetIO().MousePos;
   const Eigen::Vector2d mouse(mp.x, mp.y);
-  for (std::size_t v = 0; v < views.size() && v < state.viewMethods().size(); ++v) {
+  for (std::size_t v = 0; v < views.size() && v < state.views().size(); ++v) {
     if (!views[v].contains(mouse)) continue;
     const ViewMeasurement* m = state.quantities.measurement(v);
     if (!m) return;
@@ -320,7 +321,7 @@ void drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
 }  // namespace
 
 void drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
-  const std::size_t n = std::min(views.size(), state.viewMethods().size());
+  const std::size_t n = std::min(views.size(), state.views().size());
   if (!state.quantities.show.anyShown(n)) return;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float line = ImGui::GetTextLineHeightWithSpacing();
@@ -385,20 +386,20 @@ void drawRangeSetting(AppState& state, int quantity) {
 
 void drawShowChoice(AppState& state) {
   ShowSettings& show = state.quantities.show;
-  const std::vector<Method> methods = state.viewMethods();
-  for (std::size_t v = 0; v < methods.size(); ++v) {
+  const std::size_t viewCount = state.views().size();
+  for (std::size_t v = 0; v < viewCount; ++v) {
     int quantity = show.view(v).quantity;
-    const std::string label = methods.size() > 1 ? std::string(methods[v]->displayName) : "show";
+    const std::string label = viewCount > 1 ? "view " + std::to_string(v + 1) : "show";  // the panel's pane numbers
     ImGui::PushID(static_cast<int>(v));
     ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("Mean value ").x);
-    if (quantityCombo(label.c_str(), quantity)) show.setView(v, quantity, methods.size());
-    if (quantityDescriptor(quantity).source == QuantitySource::Difference && methods.size() > 1) {
-      int other = show.otherView(v, methods.size());
+    if (quantityCombo(label.c_str(), quantity)) show.setView(v, quantity, viewCount);
+    if (quantityDescriptor(quantity).source == QuantitySource::Difference && viewCount > 1) {
+      int other = show.otherView(v, viewCount);
       ImGui::SetNextItemWidth(140);
-      if (ImGui::BeginCombo("to", methods[static_cast<std::size_t>(other)]->displayName)) {
-        for (std::size_t w = 0; w < methods.size(); ++w)
-          if (w != v && ImGui::Selectable(methods[w]->displayName, static_cast<int>(w) == other)) {
-            show.setView(v, quantity, methods.size());
+      if (ImGui::BeginCombo("to", viewShortName(state, static_cast<std::size_t>(other)).c_str())) {
+        for (std::size_t w = 0; w < viewCount; ++w)
+          if (w != v && ImGui::Selectable(viewShortName(state, w).c_str(), static_cast<int>(w) == other)) {
+            show.setView(v, quantity, viewCount);
             show.views[v].other = static_cast<int>(w);
             state.quantities.differenceGeneration = ~0ull;
           }
@@ -408,7 +409,7 @@ void drawShowChoice(AppState& state) {
     ImGui::PopID();
   }
   std::vector<int> shown;  // each quantity's range once
-  for (std::size_t v = 0; v < methods.size(); ++v) {
+  for (std::size_t v = 0; v < viewCount; ++v) {
     const int quantity = show.view(v).quantity;
     if (quantity > 0 && std::find(shown.begin(), shown.end(), quantity) == shown.end()) shown.push_back(quantity);
   }

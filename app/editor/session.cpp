@@ -35,6 +35,17 @@ JsonValue rows(const Matrix& m) {
   return out;
 }
 
+// Only what the view sets itself: an absent parameter follows the shared one.
+JsonValue viewToJson(const ViewSpec& view) {
+  JsonValue out = JsonValue::object();
+  out.set("method", JsonValue::string(methodName(view.method)));
+  if (view.nu) out.set("nu", numberOrInfinity(*view.nu));
+  if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
+  if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
+  if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
+  return out;
+}
+
 JsonValue vec3(const Eigen::Vector3d& v) {
   JsonValue a = JsonValue::array();
   for (int i = 0; i < 3; ++i) a.push(JsonValue::number(v[i]));
@@ -121,6 +132,30 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
+  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection"}; nothing else.
+  ViewSpec view(const JsonValue& v, std::size_t i) const {
+    const std::string where = "\"views\" entry " + std::to_string(i);
+    if (!v.isObject()) fail(where + " must be an object with \"method\"");
+    for (const auto& [key, value] : v.members())
+      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection")
+        fail(where + " has an unknown field \"" + key + "\" (expected method, nu, gamma, variant, tractionCorrection)");
+    const JsonValue* name = v.find("method");
+    if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
+    ViewSpec view{method(name->asString()), {}, {}, {}, {}};
+    try {
+      if (v.find("nu")) view.nu = number(v, "nu", true);
+      if (v.find("gamma")) view.gamma = number(v, "gamma");
+      if (v.find("tractionCorrection")) view.tractionCorrection = boolean(v, "tractionCorrection");
+      if (v.find("variant")) {
+        view.variant = findVariant(string(v, "variant"));
+        if (!view.variant) fail("field \"variant\" must be \"global\" or \"local\"");
+      }
+      validateViewSpec(view, source);
+    } catch (const InputError& e) {
+      fail(where + ": " + e.problem());
+    }
+    return view;
+  }
   Eigen::Vector3d vec3(const JsonValue& obj, const std::string& key) const {
     const JsonValue& v = get(obj, key);
     if (!v.isArray() || v.items().size() != 3) fail("field \"" + key + "\" must be an array of 3 numbers");
@@ -158,9 +193,13 @@ std::string sessionToJson(const Session& s) {
   params.set("corotational", JsonValue::boolean(s.params.corotational));
   root.set("params", std::move(params));
   root.set("compare", JsonValue::boolean(s.compare));
-  JsonValue methods = JsonValue::array();
-  for (Method m : s.compareMethods) methods.push(JsonValue::string(methodName(m)));
+  JsonValue methods = JsonValue::array(), views = JsonValue::array();
+  for (const ViewSpec& view : s.compareViews) {
+    methods.push(JsonValue::string(methodName(view.method)));
+    views.push(viewToJson(view));
+  }
   root.set("compareMethods", std::move(methods));
+  root.set("views", std::move(views));
   JsonValue camera = JsonValue::object();
   camera.set("target", vec3(s.camera.target));
   camera.set("distance", JsonValue::number(s.camera.distance));
@@ -209,12 +248,18 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     r.fail(std::string("bad parameters: ") + e.what());
   }
   s.compare = r.boolean(root, "compare");
-  const JsonValue& methods = r.get(root, "compareMethods");
-  if (!methods.isArray()) r.fail("\"compareMethods\" must be an array of method names");
-  s.compareMethods.clear();
-  for (const JsonValue& m : methods.items()) {
-    if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-    s.compareMethods.push_back(r.method(m.asString()));
+  s.compareViews.clear();
+  if (const JsonValue* views = root.find("views")) {
+    if (!views->isArray() || views->items().size() < 2 || views->items().size() > kMaxCompareViews)
+      r.fail("\"views\" must be an array of 2 to " + std::to_string(kMaxCompareViews) + " views");
+    for (std::size_t i = 0; i < views->items().size(); ++i) s.compareViews.push_back(r.view(views->items()[i], i));
+  } else {  // before "views": the methods, with the shared parameters
+    const JsonValue& methods = r.get(root, "compareMethods");
+    if (!methods.isArray()) r.fail("\"compareMethods\" must be an array of method names");
+    for (const JsonValue& m : methods.items()) {
+      if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}});
+    }
   }
   const JsonValue& camera = r.get(root, "camera");
   s.camera.target = r.vec3(camera, "target");

@@ -11,6 +11,7 @@
 #include "deformer.h"
 #include "engine.h"
 #include "pose_timeline.h"
+#include "view_spec.h"
 
 namespace somicage::editor {
 
@@ -30,7 +31,7 @@ struct Session {
   Method method;         // the registry's first (method.h)
   DeformParams params;
   bool compare = false;
-  std::vector<Method> compareMethods = defaultCompareMethods();
+  std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the compare view's panes
   CameraState camera;
   PoseLibrary poses;  // named poses and the keyframes that use them (core/pose_timeline.h)
   Timeline timeline;
@@ -38,7 +39,10 @@ struct Session {
 
 // JSON text with "format": "somicage-session", "version": 3 (version 2 adds "poses" and "timeline",
 // core/pose_timeline_json.h; version 3 adds "restCage": {"vertices": [[x, y, z], ...], "faces": [[a, b, c], ...]},
-// 0-based, when the cage has no file). Versions 1 and 2 load with an empty library and timeline and no inline cage.
+// 0-based, when the cage has no file; and "views": [{"method": "somigliana", "nu": 0.45, "gamma": 1, "variant":
+// "local", "tractionCorrection": false}, ...], each parameter only when the view has its own). Versions 1 and 2
+// load with an empty library and timeline and no inline cage; a session without "views" compares the methods of
+// "compareMethods" (still written, for older builds) with the shared parameters.
 // nu = +-infinity is written as "inf" / "-inf"; every number with %.17g, so doubles read back bitwise.
 std::string sessionToJson(const Session& session);
 // Throws InputError naming `source` on a syntax error, a missing or mistyped field, an unknown method, or an inline

@@ -25,18 +25,20 @@ bl_info = {
     "version": (0, 1, 0),
     "blender": (3, 4, 0),
     "location": "View3D > Sidebar > SomiCage",
-    "description": "Somigliana, Green and mean value cage deformation (somicage Python module)",
+    "description": "Cage deformation with Somigliana coordinates and the engine's other methods (somicage module)",
     "category": "Animation",
 }
 
 REST_ATTRIBUTE = "somicage_rest"  # the bound mesh's original vertex coordinates (local space)
-METHODS = [("somigliana", "Somigliana", "Somigliana coordinates (Chen et al. 2023): elastic, with nu and gamma"),
-           ("green", "Green", "Green coordinates (Lipman et al. 2008)"),
-           ("mvc", "Mean value", "Mean value coordinates (Ju et al. 2005)")]
+# The binding's settings that are Deformer.deform keywords; the panel enables those the method reads
+# (somicage.method_info(): "parameters"). nu_infinite goes with nu.
+PARAMETER_PROPERTIES = (("nu", "nu_infinite"), ("gamma",), ("variant",), ("traction_fix",), ("corotational",))
 VARIANTS = [("global", "Global", "One best-fit rotation for the whole cage (Fig. 4)"),
             ("local", "Local", "Per-face rotations blended to the vertices (Fig. 4)")]
 
 _deformers = {}  # mesh object name -> (somicage.Deformer, cage object name); rebuilt after a file load
+_methods = []  # somicage.method_info(), read once; it also keeps the method menu's strings alive for Blender
+_method_items = []
 
 
 # ---- the engine module ------------------------------------------------------------------------------------------
@@ -59,6 +61,31 @@ def somicage_module():
         raise RuntimeError("SomiCage: the somicage Python module was not found; build it (cmake --build build) and "
                            "set Edit > Preferences > Add-ons > SomiCage > somicage module folder to build/python, "
                            f"or set SOMICAGE_PYTHON_PATH ({error})") from error
+
+
+def engine_methods():
+    """The engine's methods (somicage.method_info(): its registry, core/methods), or [] while the module is not
+    found (binding then says how to find it)."""
+    if not _methods:
+        try:
+            _methods.extend(somicage_module().method_info())
+        except RuntimeError:
+            return []
+    return _methods
+
+
+def method_items(_binding, _context):
+    """The method menu: one item per engine method, numbered by its place in the engine's list (what a .blend file
+    stores; a new method takes a new place at the end)."""
+    if not _method_items:
+        _method_items.extend((m["name"], m["display_name"], m["description"], k)
+                             for k, m in enumerate(engine_methods()))
+    return _method_items
+
+
+def method_parameters(name):
+    """The Deformer.deform keywords that method reads."""
+    return next((set(m["parameters"]) for m in engine_methods() if m["name"] == name), set())
 
 
 # ---- geometry between Blender and NumPy --------------------------------------------------------------------------
@@ -111,13 +138,16 @@ def write_coordinates(mesh, local):
 class SomicageBinding(bpy.types.PropertyGroup):
     cage: bpy.props.PointerProperty(name="Cage", type=bpy.types.Object,
                                     poll=lambda self, obj: obj.type == "MESH" and obj != self.id_data)
-    method: bpy.props.EnumProperty(name="Method", items=METHODS, default="somigliana", update=lambda s, c: s.refresh(c))
+    method: bpy.props.EnumProperty(name="Method", items=method_items, update=lambda s, c: s.refresh(c))
     nu: bpy.props.FloatProperty(name="Poisson ratio", default=0.0, min=-0.99, max=0.49, update=lambda s, c: s.refresh(c))
     nu_infinite: bpy.props.BoolProperty(name="Infinite", description="The limit nu = inf", default=False,
                                         update=lambda s, c: s.refresh(c))
     gamma: bpy.props.FloatProperty(name="Bulging", default=0.0, min=0.0, max=10.0, update=lambda s, c: s.refresh(c))
     variant: bpy.props.EnumProperty(name="Variant", items=VARIANTS, default="global", update=lambda s, c: s.refresh(c))
     traction_fix: bpy.props.BoolProperty(name="Traction fix", description="Eq. 15", default=True,
+                                         update=lambda s, c: s.refresh(c))
+    corotational: bpy.props.BoolProperty(name="Corotational", description="Remove the cage's best-fit rotation "
+                                         "before the linear-elastic solve", default=False,
                                          update=lambda s, c: s.refresh(c))
     live: bpy.props.BoolProperty(name="Live", description="Re-deform when the cage changes or the frame changes",
                                  default=True, update=lambda s, c: s.refresh(c))
@@ -126,7 +156,7 @@ class SomicageBinding(bpy.types.PropertyGroup):
 
     def deform_settings(self):
         return dict(nu=float("inf") if self.nu_infinite else self.nu, gamma=self.gamma, variant=self.variant,
-                    traction_fix=self.traction_fix)
+                    traction_fix=self.traction_fix, corotational=self.corotational)
 
     def refresh(self, context):
         owner = self.id_data
@@ -328,14 +358,12 @@ class SOMICAGE_PT_panel(bpy.types.Panel):
         layout = self.layout
         layout.prop(binding, "cage")
         layout.prop(binding, "method")
-        column = layout.column()
-        column.enabled = binding.method == "somigliana"
-        row = column.row()
-        row.prop(binding, "nu")
-        row.prop(binding, "nu_infinite")
-        column.prop(binding, "gamma")
-        column.prop(binding, "variant")
-        column.prop(binding, "traction_fix")
+        reads = method_parameters(binding.method)
+        for properties in PARAMETER_PROPERTIES:
+            row = layout.row()
+            row.enabled = properties[0] in reads
+            for name in properties:
+                row.prop(binding, name)
         layout.prop(binding, "live")
         row = layout.row()
         row.operator(SOMICAGE_OT_bind.bl_idname)

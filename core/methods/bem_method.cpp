@@ -211,8 +211,16 @@ namespace methods {
 
 const MethodDescriptor& bem() {
   static const MethodDescriptor descriptor{
-      "bem",           "BEM",        3, kParamNu | kParamCorotational, false, validateBemParams, bemLayout,
-      bemWorkingBytes, precomputeBem};
+      "bem",
+      "BEM",
+      "The linear-elastic solution of each pose by boundary elements (Eq. 2): the reference, slow",
+      3,
+      kParamNu | kParamCorotational,
+      false,
+      validateBemParams,
+      bemLayout,
+      bemWorkingBytes,
+      precomputeBem};
   return descriptor;
 }
 

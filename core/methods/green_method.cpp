@@ -139,8 +139,16 @@ std::size_t greenWorkingBytes(const CoordinateLayout& layout, int, std::size_t p
 namespace methods {
 
 const MethodDescriptor& green() {
-  static const MethodDescriptor descriptor{
-      "green", "Green", 1, 0, false, validateDeformParams, greenLayout, greenWorkingBytes, precomputeGreen};
+  static const MethodDescriptor descriptor{"green",
+                                           "Green",
+                                           "Green coordinates (Lipman et al. 2008): shape-preserving, conformal in 2D",
+                                           1,
+                                           0,
+                                           false,
+                                           validateDeformParams,
+                                           greenLayout,
+                                           greenWorkingBytes,
+                                           precomputeGreen};
   return descriptor;
 }
 

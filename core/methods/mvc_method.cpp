@@ -74,6 +74,7 @@ namespace methods {
 const MethodDescriptor& mvc() {
   static const MethodDescriptor descriptor{"mvc",
                                            "Mean value",
+                                           "Mean value coordinates (Ju et al. 2005): smooth, interpolating, affine",
                                            2,
                                            0,
                                            true,

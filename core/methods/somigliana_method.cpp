@@ -268,15 +268,17 @@ std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::siz
 namespace methods {
 
 const MethodDescriptor& somigliana() {
-  static const MethodDescriptor descriptor{"somigliana",
-                                           "Somigliana",
-                                           0,
-                                           kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
-                                           false,
-                                           validateDeformParams,
-                                           somiglianaLayout,
-                                           somiglianaWorkingBytes,
-                                           precomputeSomigliana};
+  static const MethodDescriptor descriptor{
+      "somigliana",
+      "Somigliana",
+      "Somigliana coordinates (Chen et al. 2023): elastic, with Poisson ratio nu and bulging gamma",
+      0,
+      kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
+      false,
+      validateDeformParams,
+      somiglianaLayout,
+      somiglianaWorkingBytes,
+      precomputeSomigliana};
   return descriptor;
 }
 

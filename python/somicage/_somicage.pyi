@@ -54,6 +54,12 @@ class Deformer:
                blend: Optional[float] = None, traction_fix: bool = True,
                corotational: bool = False) -> npt.NDArray[np.float64]:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
+    def analyze(self, posed: ArrayLike, faces: Sequence[Sequence[int]] = ..., *, nu: float = 0.0, gamma: float = 0.0,
+                variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
+                corotational: bool = False,
+                nu_sweep: Optional[tuple[float, float, int]] = None) -> dict[str, object]:
+        """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
+        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked."""
     @property
     def method(self) -> str: ...
     @property
@@ -70,6 +76,8 @@ class Deformer:
     def coordinate_bytes(self) -> int: ...
 
 def methods() -> list[str]: ...
+def method_info() -> list[dict[str, Union[str, list[str]]]]:
+    """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
 def load_mesh(path: str) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
 def save_obj(path: str, vertices: ArrayLike, faces: Sequence[Sequence[int]] = ...) -> None: ...
 def load_posed(path: str, cage: Cage) -> npt.NDArray[np.float64]: ...

@@ -1,6 +1,7 @@
 // The command line as a whole, run as a process: help, unknown commands, and bad input of every kind, which must
 // exit 2 with exactly one line on stderr naming the option or file (and line), what is wrong and what to do.
 #include "cli_test_support.h"
+#include "method.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -26,6 +27,15 @@ TEST(CliHelp, ShowsTheOptionsOfACommand) {
                                "--gamma", "--no-traction-fix", "--threads"}) {
       EXPECT_NE(r.out.find(option), std::string::npos) << option << "\n" << r;
     }
+  }
+  // Every method of the registry has its line, with its display name and description (Blender's tooltips).
+  const RunResult deform = runSomicage({"deform", "--help"});
+  for (Method m : allMethods()) {
+    const std::string line = "  " + std::string(m->name);
+    const std::size_t at = deform.out.find(line, deform.out.find("methods (--method):"));
+    ASSERT_NE(at, std::string::npos) << m->name << "\n" << deform;
+    const std::string text = deform.out.substr(at, deform.out.find('\n', at) - at);
+    EXPECT_NE(text.find(std::string(m->displayName) + ": " + m->description), std::string::npos) << text;
   }
   const RunResult check = runSomicage({"check", "--help"});
   EXPECT_EQ(check.exitCode, 0) << check;

@@ -73,6 +73,16 @@ Eigen::MatrixXd similarity(const Eigen::MatrixXd& V, int dim) {
   return out;
 }
 
+// The cube_quads cage, the pyramid mesh inside it, and the cage moved by the 3D similarity (dir/posed.obj).
+struct CubeSimilarityPose {
+  explicit CubeSimilarityPose(const ScratchDir& dir) : posed(dir.file("posed.obj")) {
+    saveObj(posed, similarity(rest.vertices, 3), cageTopology(rest));
+  }
+  std::string cage = dataFile("cube_quads.obj"), mesh = dataFile("pyramid_mesh.obj");
+  Cage rest = loadCage(cage);
+  std::string posed;
+};
+
 TEST(CliDeform, RestPoseReproducesTheMesh3D) {
   const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj");
   const double size = cageDiameter(loadCage(cage).vertices);
@@ -95,12 +105,9 @@ TEST(CliDeform, RestPoseReproducesThePoints2D) {
 
 TEST(CliDeform, SimilarityPoseMovesTheMeshBySimilarity) {
   ScratchDir dir;
-  const std::string cage = dataFile("cube_quads.obj"), mesh = dataFile("pyramid_mesh.obj");
-  const Cage rest = loadCage(cage);
-  const std::string posed = dir.file("posed.obj");
-  saveObj(posed, similarity(rest.vertices, 3), cageTopology(rest));
-  const double size = 1.7 * cageDiameter(rest.vertices);
-  expectEveryMethodGives(cage, posed, mesh, similarity(loadMesh(mesh).vertices, 3), 1e-8 * size);
+  const CubeSimilarityPose cube(dir);
+  const double size = 1.7 * cageDiameter(cube.rest.vertices);
+  expectEveryMethodGives(cube.cage, cube.posed, cube.mesh, similarity(loadMesh(cube.mesh).vertices, 3), 1e-8 * size);
 
   const std::string square = dataFile("square_polygon.obj"), points = dataFile("square_points.obj");
   const Cage rest2d = loadCage(square);
@@ -272,10 +279,8 @@ TEST(CliDeform, NormalsFollowTheGradientOrAreRecomputed) {
 // (this build machine), fails before any precompute with what is missing and what to use, writing nothing.
 TEST(CliDeform, DeviceOptionRunsOnTheDeviceOrSaysWhyNot) {
   ScratchDir dir;
-  const std::string cage = dataFile("cube_quads.obj"), mesh = dataFile("pyramid_mesh.obj");
-  const Cage rest = loadCage(cage);
-  const std::string posed = dir.file("posed.obj");
-  saveObj(posed, similarity(rest.vertices, 3), cageTopology(rest));
+  const CubeSimilarityPose pose(dir);
+  const std::string &cage = pose.cage, &mesh = pose.mesh, &posed = pose.posed;
 
   const RunResult unknown = deform(cage, posed, mesh, dir.file("unknown.obj"), {"--device", "tpu"});
   EXPECT_EQ(unknown.exitCode, 2) << unknown;
@@ -286,7 +291,7 @@ TEST(CliDeform, DeviceOptionRunsOnTheDeviceOrSaysWhyNot) {
   ASSERT_EQ(cpu.exitCode, 0) << cpu;
   const RunResult cuda = deform(cage, posed, mesh, dir.file("cuda.obj"), {"--variant", "local", "--device", "cuda"});
   if (cuda.exitCode == 0) {
-    const double size = 1.7 * cageDiameter(rest.vertices);
+    const double size = 1.7 * cageDiameter(pose.rest.vertices);
     EXPECT_LE(maxDistance(loadMesh(dir.file("cuda.obj")).vertices, loadMesh(dir.file("cpu.obj")).vertices),
               1e-9 * size);
   } else {

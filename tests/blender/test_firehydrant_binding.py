@@ -2,7 +2,8 @@
 
     blender -b --factory-startup --python-exit-code 1 --python tests/blender/test_firehydrant_binding.py
 
-binds the mesh to its triangulated cage, moves the cage to the paper's pose (in edit mode, then by an animated shape
+checks the method menu and the panel's enabled settings against somicage.method_info(); binds the mesh to its
+triangulated cage, moves the cage to the paper's pose (in edit mode, then by an animated shape
 key) and checks the mesh against `somicage deform` to 1e-6 cage diameters; saves and reopens the file; bakes
 three frames to shape keys and unbinds. Environment: SOMICAGE_PYTHON_PATH (build/python), SOMICAGE_CLI (the somicage executable),
 SOMICAGE_MODELS_DIR. Exits 77 (skipped) when the models or the executable are absent.
@@ -80,9 +81,55 @@ rest_cage, posed_vertices = coordinates(cage), somicage.load_mesh(POSED)[0]
 diameter = np.linalg.norm(rest_cage.max(axis=0) - rest_cage.min(axis=0))
 expected = reference()
 
+binding = hydrant.somicage
+# The method menu is the engine's registry: every method of somicage.method_info(), named and described as there.
+info = somicage.method_info()
+assert addon.method_items(binding, bpy.context) == [(m["name"], m["display_name"], m["description"], k)
+                                                    for k, m in enumerate(info)]
+for m in info:  # through Blender's RNA: each is a value of the property, with its name and tooltip
+    binding.method = m["name"]
+    assert binding.method == m["name"]
+    assert bpy.types.UILayout.enum_item_name(binding, "method", m["name"]) == m["display_name"], m
+    assert bpy.types.UILayout.enum_item_description(binding, "method", m["name"]) == m["description"], m
+    assert addon.method_parameters(m["name"]) == set(m["parameters"]), m
+
+
+class LayoutRecorder:
+    """Stands in for the panel's UILayout: which properties it draws, and whether their row is enabled."""
+    def __init__(self, enabled=True):
+        self.enabled, self.drawn, self.rows = enabled, [], []
+
+    def prop(self, _data, name):
+        self.drawn.append(name)
+
+    def row(self):
+        self.rows.append(LayoutRecorder())
+        return self.rows[-1]
+
+    column = row
+
+    def operator(self, *_args, **_kwargs):
+        pass
+
+    def enabled_properties(self):
+        names = set(self.drawn) if self.enabled else set()
+        return names.union(*(row.enabled_properties() for row in self.rows))
+
+
+# The panel enables a setting exactly when the method reads it (method_info's parameters; nu_infinite goes with nu).
+SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational"}
+bpy.context.view_layer.objects.active = hydrant
+for m in info:
+    binding.method = m["name"]
+    panel = type("Panel", (), {"layout": LayoutRecorder()})()
+    addon.SOMICAGE_PT_panel.draw(panel, bpy.context)
+    reads = set(m["parameters"]) | ({"nu_infinite"} if "nu" in m["parameters"] else set())
+    assert panel.layout.enabled_properties() & SETTINGS_DRAWN == reads & SETTINGS_DRAWN, m
+binding.method = "somigliana"
+print(f"method menu: {', '.join(m['name'] for m in info)}")
+
 # Bind: the mesh stays where it is at rest.
 bpy.context.view_layer.objects.active = hydrant
-binding = hydrant.somicage
 binding.cage = cage
 binding.nu, binding.gamma, binding.variant = SETTINGS["nu"], SETTINGS["gamma"], SETTINGS["variant"]
 assert bpy.ops.somicage.bind() == {"FINISHED"}

@@ -21,6 +21,7 @@ TEST(MethodRegistry, ListsEveryMethodOnceInListOrder) {
   for (std::size_t k = 0; k < all.size(); ++k) {
     EXPECT_TRUE(names.insert(all[k]->name).second) << all[k]->name << " twice";
     EXPECT_FALSE(std::string(all[k]->displayName).empty());
+    EXPECT_FALSE(std::string(all[k]->description).empty());
     if (k > 0) {
       EXPECT_LT(all[k - 1]->listOrder, all[k]->listOrder);
     }

@@ -88,9 +88,9 @@ double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return a.rows() == b.rows() && a.cols() == b.cols() ? (a - b).cwiseAbs().maxCoeff() : HUGE_VAL;
 }
 
-// What the views should show: the deformer's own CPU deformation of the current pose.
-Eigen::MatrixXd expectedPoints(const AppState& state, Method method) {
-  return state.deformers.at(method)->deform(state.pose, state.params);
+// What view v should show: its deformer's own CPU deformation of the current pose with the view's parameters.
+Eigen::MatrixXd expectedPoints(const AppState& state, std::size_t v) {
+  return state.deformers.at(state.views()[v].method)->deform(state.pose, state.viewParams(v));
 }
 
 }  // namespace
@@ -102,13 +102,12 @@ TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
             "");
   EXPECT_EQ(state.devices.active(), "fake");
   openDemoScene(state, 3);
-  const Method somigliana = methods::somigliana();
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_EQ(counts->made, 1);
   EXPECT_EQ(counts->frames, 1);
-  EXPECT_LT(maxDifference(displayedPoints(state, somigliana), expectedPoints(state, somigliana)), 1e-12);
-  EXPECT_GT(maxDifference(displayedPoints(state, somigliana), state.scene->meshVertices), 0.05);  // it moved
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), state.scene->meshVertices), 0.05);  // it moved
 
   // The next frame reuses the evaluator (C is uploaded once per deformer).
   DeformParams params = state.params;
@@ -119,24 +118,28 @@ TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_EQ(counts->made, 1);
   EXPECT_EQ(counts->frames, 2);
-  EXPECT_LT(maxDifference(displayedPoints(state, somigliana), expectedPoints(state, somigliana)), 1e-12);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
 
-  // Compare views: every view's deformer gets an evaluator of its own on the device.
-  setCompare(state, true);
+  // Compare views, two of one method at their own nu: one evaluator per deformer, one frame per view.
+  std::vector<ViewSpec> compared = viewsOf({methods::somigliana(), methods::somigliana(), methods::green()});
+  compared[1].nu = 0.45;
+  setCompareViews(state, compared);  // (turns compare on)
   installNextOutcome(state);
   ASSERT_TRUE(updateDeformation(state));
-  const std::vector<Method> views = state.viewMethods();
-  ASSERT_GE(views.size(), 2u);
-  EXPECT_EQ(counts->made, static_cast<int>(views.size()));
-  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views.size()));
-  for (Method m : views) EXPECT_LT(maxDifference(displayedPoints(state, m), expectedPoints(state, m)), 1e-12);
+  const std::size_t views = state.views().size();
+  ASSERT_EQ(views, 3u);
+  EXPECT_EQ(counts->made, 2);  // Somigliana's evaluator is kept, Green's is new
+  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views));
+  for (std::size_t v = 0; v < views; ++v)
+    EXPECT_LT(maxDifference(displayedPoints(state, v), expectedPoints(state, v)), 1e-12) << "view " << v;
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // nu 0.3 vs 0.45
   EXPECT_TRUE(state.errors.empty());
 
   // Back to the CPU: the device's evaluators go, the CPU evaluates.
   setDevice(state, kCpuDevice);
   EXPECT_EQ(state.devices.evaluators.size(), 0u);
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views.size()));
+  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views));
 }
 
 TEST(EditorDevices, UnavailableDeviceIsRefusedWithItsReason) {
@@ -165,8 +168,7 @@ TEST(EditorDevices, UnavailableDeviceIsRefusedWithItsReason) {
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_TRUE(state.errors.empty());
   EXPECT_EQ(counts->frames, 0);
-  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expectedPoints(state, methods::somigliana())),
-            1e-12);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
 }
 
 TEST(EditorDevices, DeviceFailingAtRunTimeHandsOverToTheCpu) {
@@ -185,8 +187,7 @@ TEST(EditorDevices, DeviceFailingAtRunTimeHandsOverToTheCpu) {
       << state.errors.front();
   EXPECT_NE(state.devices.unavailable.at("cuda").find("out of device memory"), std::string::npos);
   EXPECT_EQ(state.devices.active(), kCpuDevice);
-  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expectedPoints(state, methods::somigliana())),
-            1e-12);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
 }
 
 TEST(EditorDevices, BadParametersAreReportedNotBlamedOnTheDevice) {
@@ -214,13 +215,13 @@ TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_EQ(state.deformGeneration, generation + 1);  // the Renderer deforms on the GPU
   ASSERT_EQ(state.cpuStale.size(), 1u);
-  EXPECT_EQ(state.cpuStale.front(), methods::somigliana());
-  EXPECT_EQ(state.deformed.count(methods::somigliana()), 0u);  // nothing computed on the CPU
+  EXPECT_EQ(state.cpuStale.front(), 0u);      // the one view (Somigliana)
+  EXPECT_EQ(state.deformed.at(0).size(), 0);  // nothing computed on the CPU
 
-  ensureCpuPoints(state, methods::somigliana());  // what framing and export call: the CPU, never opengl's make()
+  ensureCpuPoints(state, 0);  // what framing and export call: the CPU, never opengl's make()
   EXPECT_TRUE(state.cpuStale.empty());
-  const Eigen::MatrixXd expected = expectedPoints(state, methods::somigliana());
-  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expected), 1e-12);
+  const Eigen::MatrixXd expected = expectedPoints(state, 0);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
 
   // Back to the CPU: the next update computes on the CPU again.
   state.deformDirty = false;
@@ -228,7 +229,7 @@ TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
   EXPECT_TRUE(state.deformDirty);
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_TRUE(state.cpuStale.empty());
-  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expected), 1e-12);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
 }
 
 // This executable's CUDA entry: offered, and refused with CUDA's own reason where there is no usable device.
@@ -257,8 +258,7 @@ TEST(EditorDevices, CudaDeviceDeformsLikeTheCpu) {
   EXPECT_EQ(state.devices.evaluators.size(), 1u);
   const Cage& cage = state.scene->restCage;
   const double diameter = (cage.vertices.colwise().maxCoeff() - cage.vertices.colwise().minCoeff()).norm();
-  EXPECT_LT(maxDifference(displayedPoints(state, methods::somigliana()), expectedPoints(state, methods::somigliana())),
-            1e-9 * diameter);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-9 * diameter);
 }
 
 TEST(EditorDevices, CommandLineOption) {

@@ -45,7 +45,7 @@ TEST(EditorOptions, FilesAndParameters) {
   EXPECT_TRUE(std::isinf(*o.nu));
   EXPECT_EQ(*o.gamma, 1.5);
   EXPECT_EQ(*o.blend, 1.0);
-  EXPECT_EQ(o.compare.size(), 3u);
+  EXPECT_EQ(o.views.size(), 3u);
   EXPECT_EQ(o.screenshotPath, "out.png");
   EXPECT_EQ(o.width, 800);
   EXPECT_EQ(o.height, 600);

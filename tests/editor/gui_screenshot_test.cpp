@@ -396,7 +396,8 @@ TEST(GuiScreenshot, FieldViewOfACageVertex) {
 }
 
 // Paper Fig. 3 in 2D: the field of one polygon vertex as arrows over the inside at two nu, side by side (two
-// screenshots). The field changes with nu (Eq. 8a: alpha and beta), so the legends' tops differ.
+// screenshots, then two panes of one screenshot). The field changes with nu (Eq. 8a: alpha and beta), so the legends'
+// tops differ.
 TEST(GuiScreenshot, FieldArrowsIn2DAtTwoNu) {
   REQUIRE_DISPLAY();
   double top[2] = {0, 0};
@@ -409,4 +410,30 @@ TEST(GuiScreenshot, FieldArrowsIn2DAtTwoNu) {
     EXPECT_GT(top[k], 0.01) << readLog(name);
   }
   EXPECT_GT(std::abs(top[1] - top[0]), 0.05 * top[0]);
+  // The same two nu as two panes of one method (--view): the shared legend spans both, so its top is the larger of
+  // the single runs'; the panes differ where the same nu twice gives identical halves (rows between the labels and
+  // the legend).
+  auto halvesDiffer = [](const Image& img) {
+    const int half = img.width / 2;
+    long n = 0, total = 0;
+    for (int y = 50; y < img.height - 100; ++y)
+      for (int x = 0; x < half; ++x, ++total) {
+        const unsigned char* a = &img.rgba[(static_cast<std::size_t>(y) * img.width + x) * 4];
+        const unsigned char* b = a + static_cast<std::size_t>(half) * 4;
+        bool differs = false;
+        for (int c = 0; c < 3; ++c) differs |= std::abs(static_cast<int>(a[c]) - static_cast<int>(b[c])) > 24;
+        n += differs;
+      }
+    return static_cast<double>(n) / static_cast<double>(total);
+  };
+  const std::string panes = "--demo 2d --show field:2 --hide-ui --size 1280x480 --view somigliana:nu=";
+  const Image two = screenshot(panes + "-0.5 --view somigliana:nu=0.45", "field2d_panes");
+  const Image same = screenshot(panes + "0.45 --view somigliana:nu=0.45", "field2d_same");
+  ASSERT_EQ(two.width, 1280);
+  EXPECT_NEAR(legendRange(readLog("field2d_panes"), "field").second, std::max(top[0], top[1]),
+              1e-12 * std::max(top[0], top[1]));
+  const double differ = halvesDiffer(two), control = halvesDiffer(same);
+  std::printf("two-nu panes: %.4f of the pixels differ between the halves (same nu: %.4f)\n", differ, control);
+  EXPECT_LT(control, 1e-4);
+  EXPECT_GT(differ, 0.01);
 }

@@ -27,7 +27,7 @@ bool sameSession(const Session& a, const Session& b) {
          a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose && a.method == b.method &&
          a.params.blend == b.params.blend && a.params.nu == b.params.nu && a.params.gamma == b.params.gamma &&
          a.params.tractionCorrection == b.params.tractionCorrection && a.compare == b.compare &&
-         a.compareMethods == b.compareMethods && a.camera.target == b.camera.target &&
+         a.compareViews == b.compareViews && a.camera.target == b.camera.target &&
          a.camera.distance == b.camera.distance && a.camera.yaw == b.camera.yaw && a.camera.pitch == b.camera.pitch &&
          a.restCage.vertices.rows() == b.restCage.vertices.rows() &&
          a.restCage.vertices.cols() == b.restCage.vertices.cols() && a.restCage.vertices == b.restCage.vertices &&

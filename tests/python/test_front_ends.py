@@ -159,3 +159,54 @@ def test_points_outside_warn_in_the_cli_words(tmp_path, cube_cage, cube_points):
         somicage.Deformer(cube_cage, outside)
     python = [str(w.message) for w in caught if "lie outside" in str(w.message)]
     assert python == ["warning: points: " + cli[0][len(prefix):]]
+
+
+# The CLI's options that set a method's parameters, and the Deformer.deform keywords that set the same ones.
+CLI_PARAMETER_OPTIONS = {"--variant": ["variant", "blend"], "--nu": ["nu"], "--gamma": ["gamma"],
+                         "--no-traction-fix": ["traction_fix"], "--corotational": ["corotational"]}
+
+
+def methods_reading(help_line):
+    """The methods an option's help line says read it: '...; somigliana only', '...; somigliana and bem'."""
+    readers = help_line.rsplit("; ", 1)[1].strip()
+    if readers == "no method":
+        return set()
+    return set(readers.removesuffix(" only").replace(" and ", ", ").split(", "))
+
+
+def test_method_info_matches_cli_help():
+    """method_info() is the registry as `somicage deform --help` shows it: the --method list in order, each method's
+    display name and description, and which options (here: keywords) it reads."""
+    result = run_cli("deform", "--help")
+    assert result.returncode == 0, result.stderr
+    lines = result.stdout.splitlines()
+    option = {line.split()[0]: line for line in lines if line.startswith("  --")}
+    names = option["--method"].split("NAME", 1)[1].split("(default")[0].strip().replace(" or ", ", ").split(", ")
+    described = {}
+    for line in lines[lines.index("methods (--method):") + 1:]:
+        name, text = line.strip().split("  ", 1)
+        display_name, description = text.strip().split(": ", 1)
+        described[name] = dict(display_name=display_name, description=description)
+    info = somicage.method_info()
+    assert [m["name"] for m in info] == names == somicage.methods() and len(names) >= 4
+    for m in info:
+        assert {k: m[k] for k in ("display_name", "description")} == described[m["name"]], m["name"]
+        read = [keyword for flag, keywords in CLI_PARAMETER_OPTIONS.items() if m["name"] in methods_reading(option[flag])
+                for keyword in keywords]
+        assert sorted(m["parameters"]) == sorted(read), m["name"]
+
+
+def test_methods_ignore_the_keywords_method_info_leaves_out(cube_cage, cube_points):
+    """A keyword a method does not list in method_info() leaves its deformation bit for bit as it was."""
+    pose = cube_cage.vertices @ np.array([[1.2, 0.3, 0.0], [0.0, 0.9, 0.2], [0.1, 0.0, 1.1]]).T
+    pose[7] += [0.2, 0.1, -0.15]  # not affine either
+    changed = dict(nu=0.3, gamma=1.0, variant="local", blend=0.5, traction_fix=False, corotational=True)
+    for m in somicage.method_info():
+        deformer = somicage.Deformer(cube_cage, cube_points, method=m["name"])
+        base = deformer.deform(pose)
+        for keyword, value in changed.items():
+            if keyword not in m["parameters"]:
+                np.testing.assert_array_equal(deformer.deform(pose, **{keyword: value}), base,
+                                              err_msg=f"{m['name']} reads {keyword}")
+        if "nu" in m["parameters"]:
+            assert np.abs(deformer.deform(pose, nu=0.3) - base).max() > 1e-6, f"{m['name']} ignores nu"

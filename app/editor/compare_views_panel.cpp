@@ -1,0 +1,74 @@
+#include "compare_views_panel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <optional>
+
+#include "panels.h"  // tooltip
+
+namespace somicage::editor {
+
+void drawCompareViews(AppState& state) {
+  std::vector<ViewSpec> views = state.compareViews;
+  bool changed = false;
+  std::optional<std::size_t> removed;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    ViewSpec& view = views[v];
+    ImGui::PushID(static_cast<int>(v));
+    ImGui::Text("%d", static_cast<int>(v + 1));
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(110);
+    if (ImGui::BeginCombo("##method", view.method->displayName)) {
+      for (Method m : allMethods())
+        if (ImGui::Selectable(m->displayName, m == view.method) && m != view.method) {
+          view = withMethod(view, m);
+          changed = true;
+        }
+      ImGui::EndCombo();
+    }
+    tooltip("The method of this pane (views of one method share its precomputed coordinates)");
+    if (readsParameter(view.method, kParamNu)) {
+      ImGui::SameLine();
+      bool own = view.nu.has_value();
+      if (ImGui::Checkbox("own nu", &own)) {
+        view.nu = own ? std::optional<double>(std::isfinite(state.params.nu) ? state.params.nu : 0.0) : std::nullopt;
+        changed = true;
+      }
+      tooltip(
+          "Give this pane its own nu (e.g. the same method at two nu side by side, paper Fig. 3); off: the\n"
+          "panel's nu. nu never re-integrates, so this is as fast as the panel's slider.");
+    }
+    if (views.size() > 2) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("x")) removed = v;
+      tooltip("Remove this pane");
+    }
+    if (view.nu) {
+      float nu = static_cast<float>(*view.nu);
+      ImGui::Indent();
+      ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("nu ").x);
+      if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
+        view.nu = nu;
+        changed = true;
+      }
+      tooltip("This pane's Poisson ratio nu in (-1, 0.5). Ctrl+click to type a value.");
+      ImGui::Unindent();
+    }
+    ImGui::PopID();
+  }
+  if (removed) {
+    removeCompareView(state, *removed);
+    return;
+  }
+  if (views.size() < kMaxCompareViews) {
+    if (ImGui::Button("+ view")) {
+      views.push_back(views.back());
+      changed = true;
+    }
+    tooltip("Add a pane: a copy of the last one, to give another method or nu");
+  }
+  if (changed) setCompareViews(state, views);
+}
+
+}  // namespace somicage::editor

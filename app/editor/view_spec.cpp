@@ -1,0 +1,131 @@
+#include "view_spec.h"
+
+#include <cmath>
+
+#include "editor_options.h"  // parseNumber
+#include "errors.h"
+
+namespace somicage::editor {
+
+namespace {
+
+const char* const kViewHint = "e.g. --view somigliana:nu=0.45:gamma=1:variant=local:traction=off";
+
+bool sameNumber(const std::optional<double>& a, const std::optional<double>& b) {
+  return a.has_value() == b.has_value() && (!a || *a == *b);
+}
+
+}  // namespace
+
+DeformParams ViewSpec::params(const DeformParams& shared) const {
+  DeformParams p = shared;
+  if (nu) p.nu = *nu;
+  if (gamma) p.gamma = *gamma;
+  if (variant) p.blend = *variant == Variant::Local ? 1.0 : 0.0;
+  if (tractionCorrection) p.tractionCorrection = *tractionCorrection;
+  return p;
+}
+
+bool operator==(const ViewSpec& a, const ViewSpec& b) {
+  return a.method == b.method && sameNumber(a.nu, b.nu) && sameNumber(a.gamma, b.gamma) && a.variant == b.variant &&
+         a.tractionCorrection == b.tractionCorrection;
+}
+
+std::vector<ViewSpec> viewsOf(const std::vector<Method>& methods) {
+  std::vector<ViewSpec> views;
+  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}});
+  return views;
+}
+
+ViewSpec withMethod(ViewSpec view, Method m) {
+  view.method = m;
+  if (!readsParameter(m, kParamNu)) view.nu.reset();
+  if (!readsParameter(m, kParamGamma)) view.gamma.reset();
+  if (!readsParameter(m, kParamBlend)) view.variant.reset();
+  if (!readsParameter(m, kParamTractionFix)) view.tractionCorrection.reset();
+  return view;
+}
+
+const char* variantName(Variant variant) { return variant == Variant::Local ? "local" : "global"; }
+
+std::optional<Variant> findVariant(const std::string& name) {
+  if (name == "global") return Variant::Global;
+  if (name == "local") return Variant::Local;
+  return std::nullopt;
+}
+
+void validateViewSpec(const ViewSpec& view, const std::string& option) {
+  const struct {
+    bool set;
+    DeformParameter parameter;
+    const char* name;
+  } own[] = {{view.nu.has_value(), kParamNu, "nu"},
+             {view.gamma.has_value(), kParamGamma, "gamma"},
+             {view.variant.has_value(), kParamBlend, "variant"},
+             {view.tractionCorrection.has_value(), kParamTractionFix, "traction"}};
+  for (const auto& p : own)
+    if (p.set && !readsParameter(view.method, p.parameter))
+      throw InputError(option, -1, methodName(view.method) + " does not read " + p.name,
+                       "give " + std::string(p.name) + " to a view of " + methodsReading(p.parameter));
+  // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
+  DeformParams p;
+  if (view.nu) p.nu = *view.nu;
+  if (view.gamma) p.gamma = *view.gamma;
+  try {
+    view.method->validateParams(p);
+  } catch (const InputError& e) {
+    throw InputError(option, -1, methodName(view.method) + " " + e.source() + ": " + e.problem(), e.hint());
+  }
+}
+
+ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
+  std::vector<std::string> parts;
+  for (std::size_t start = 0;;) {
+    const std::size_t colon = text.find(':', start);
+    parts.push_back(text.substr(start, colon == std::string::npos ? std::string::npos : colon - start));
+    if (colon == std::string::npos) break;
+    start = colon + 1;
+  }
+  const std::optional<Method> method = findMethod(parts.front());
+  if (!method)
+    throw InputError(option, -1, "unknown method '" + parts.front() + "' in '" + text + "'",
+                     "start with one of " + methodNameList() + ", " + kViewHint);
+  ViewSpec view{*method, {}, {}, {}, {}};
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    const std::string& part = parts[i];
+    const std::size_t eq = part.find('=');
+    const std::string key = part.substr(0, eq), value = eq == std::string::npos ? "" : part.substr(eq + 1);
+    if (eq == std::string::npos || value.empty())
+      throw InputError(option, -1, "expected KEY=VALUE after ':', got '" + part + "' in '" + text + "'", kViewHint);
+    auto once = [&](bool alreadySet) {
+      if (alreadySet) throw InputError(option, -1, "'" + key + "' given twice in '" + text + "'", kViewHint);
+    };
+    if (key == "nu") {
+      once(view.nu.has_value());
+      view.nu = parseNumber(value, option + " nu");
+    } else if (key == "gamma") {
+      once(view.gamma.has_value());
+      view.gamma = parseNumber(value, option + " gamma");
+    } else if (key == "variant") {
+      once(view.variant.has_value());
+      view.variant = findVariant(value);
+      if (!view.variant)
+        throw InputError(option, -1, "variant must be global or local, got '" + value + "'", kViewHint);
+    } else if (key == "traction") {
+      once(view.tractionCorrection.has_value());
+      if (value != "on" && value != "off")
+        throw InputError(option, -1, "traction must be on or off, got '" + value + "'", kViewHint);
+      view.tractionCorrection = value == "on";
+    } else {
+      throw InputError(option, -1,
+                       "unknown key '" + key + "' in '" + text +
+                           "' (expected nu, gamma, variant or "
+                           "traction)",
+                       kViewHint);
+    }
+  }
+  validateViewSpec(view, option);
+  return view;
+}
+
+}  // namespace somicage::editor

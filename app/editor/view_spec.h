@@ -1,0 +1,47 @@
+// One pane of the editor (issue 12): a method and, optionally, its own values of the shared parameters, so the
+// compare view is a list of views and can show the same method at two nu side by side. A parameter a view does not
+// set follows the panel's. Deformers stay shared per method (nu, gamma and the variant never re-integrate: one
+// precompute per method); the deformed points and the quantities are per view (AppState). Pure, no GL.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deformer.h"
+
+namespace somicage::editor {
+
+enum class Variant { Global, Local };  // blend 0 / 1 (Fig. 4)
+
+struct ViewSpec {
+  Method method;
+  std::optional<double> nu, gamma;  // absent: the panel's
+  std::optional<Variant> variant;
+  std::optional<bool> tractionCorrection;
+
+  // The parameters this view deforms with: `shared` with this view's own values in place.
+  DeformParams params(const DeformParams& shared) const;
+  bool overrides() const { return nu || gamma || variant || tractionCorrection; }
+};
+bool operator==(const ViewSpec& a, const ViewSpec& b);  // exact (bitwise numbers)
+inline bool operator!=(const ViewSpec& a, const ViewSpec& b) { return !(a == b); }
+
+// Views of these methods, none overriding anything (--compare a,b; sessions without "views").
+std::vector<ViewSpec> viewsOf(const std::vector<Method>& methods);
+
+// The view with method m instead, keeping the own values that m reads (a method ignores the others).
+ViewSpec withMethod(ViewSpec view, Method m);
+
+// Throws InputError(option, ...) when a value is out of range for the method (Method's validateParams on the
+// resolved parameters) or the view sets a parameter its method does not read ("green does not read nu").
+void validateViewSpec(const ViewSpec& view, const std::string& option);
+
+// "METHOD[:nu=X][:gamma=Y][:variant=global|local][:traction=on|off]" (--view). Throws InputError(option, ...)
+// naming what is wrong: an unknown method or key, a repeated key, a bad value.
+ViewSpec parseViewSpec(const std::string& text, const std::string& option);
+
+const char* variantName(Variant variant);  // "global", "local"
+std::optional<Variant> findVariant(const std::string& name);
+
+}  // namespace somicage::editor

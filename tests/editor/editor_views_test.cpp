@@ -1,0 +1,289 @@
+// The compare view as a list of views (view_spec.h): each view a method with, optionally, its own nu / gamma /
+// variant / traction fix. Positions and quantities per view against the deformer evaluated independently at that
+// view's parameters; views without their own values follow the panel; --view parsing; the session's "views".
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "app_state.h"
+#include "coordinate_fields.h"
+#include "editor_options.h"
+#include "editor_test_support.h"
+#include "errors.h"
+#include "json.h"
+#include "methods/method_descriptors.h"
+#include "quantity_overlay.h"
+#include "session.h"
+#include "somigliana_coordinates.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}}; }
+
+// The 3D demo with views: Somigliana at nu 0, Somigliana at nu 0.45, Somigliana with the panel's nu; bent.
+void loadTwoNu(AppState& state) {
+  state.compare = true;
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}}};
+  state.params.nu = 0.2;
+  openDemoScene(state, 3);
+  ASSERT_EQ(state.deformers.size(), 1u);  // one precompute: nu never re-integrates
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i)
+    if (pose(i, 0) > 2.0) pose(i, 0) += 1.0, pose(i, 1) += 0.6;  // stretch and lift the right end
+  setPose(state, pose);
+  ASSERT_TRUE(updateDeformation(state));
+}
+
+DeformParams withNu(DeformParams p, double nu) {
+  p.nu = nu;
+  return p;
+}
+
+double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) { return (a - b).cwiseAbs().maxCoeff(); }
+
+// The signed volume of a closed triangle mesh: the sum of its triangles' tetrahedra from the origin.
+double signedVolume(const Eigen::MatrixXd& x, const Eigen::MatrixXi& triangles) {
+  double volume = 0;
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
+    const Eigen::Vector3d a = x.row(triangles(f, 0)), b = x.row(triangles(f, 1)), c = x.row(triangles(f, 2));
+    volume += a.dot(b.cross(c)) / 6;
+  }
+  return volume;
+}
+
+std::string viewError(const std::vector<std::string>& args) {
+  try {
+    parseEditorArgs(args);
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source().rfind("--view", 0), 0u) << e.what();
+    return e.what();
+  }
+  return "accepted";
+}
+
+}  // namespace
+
+TEST(EditorViews, TwoViewsOfOneMethodDeformAtTheirOwnNuAndTheOthersFollowThePanel) {
+  AppState state;
+  loadTwoNu(state);
+  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
+  const Eigen::MatrixXd at0 = deformer.deform(state.pose, withNu(state.params, 0.0));
+  const Eigen::MatrixXd at45 = deformer.deform(state.pose, withNu(state.params, 0.45));
+  const Eigen::MatrixXd shared = deformer.deform(state.pose, state.params);
+  EXPECT_LE(maxDifference(displayedPoints(state, 0), at0), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 1), at45), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 2), shared), 1e-12);
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // nu shows
+  // The panel's nu moves the view without its own only.
+  setParams(state, withNu(state.params, -0.5));
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_LE(maxDifference(displayedPoints(state, 0), at0), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 1), at45), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 2), deformer.deform(state.pose, state.params)), 1e-12);
+  EXPECT_GT(maxDifference(displayedPoints(state, 2), shared), 1e-3);
+  // The labels say which nu is the view's own.
+  EXPECT_NE(viewLabel(state, 1).find("nu=0.45 (own)"), std::string::npos) << viewLabel(state, 1);
+  EXPECT_NE(viewLabel(state, 2).find("nu=-0.50"), std::string::npos) << viewLabel(state, 2);
+  EXPECT_EQ(viewLabel(state, 2).find("(own)"), std::string::npos) << viewLabel(state, 2);
+}
+
+TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
+  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false};
+  DeformParams shared;
+  shared.nu = 0.3;
+  shared.blend = 0.25;
+  const DeformParams p = view.params(shared);
+  EXPECT_EQ(p.nu, 0.3);
+  EXPECT_EQ(p.gamma, 1.5);
+  EXPECT_EQ(p.blend, 1.0);
+  EXPECT_FALSE(p.tractionCorrection);
+  // Another method keeps only what it reads: Green reads none of them.
+  const ViewSpec green = withMethod(view, methods::green());
+  EXPECT_FALSE(green.overrides());
+  EXPECT_NO_THROW(validateViewSpec(green, "test"));
+}
+
+// det J and the volume change under each pane are those of its own nu: det J against the exact J evaluated here at
+// that nu, the volume change against the signed volume of the mesh deformed at that nu.
+TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
+  AppState state;
+  loadTwoNu(state);
+  state.quantities.show.setAll(quantityIndex("detj", "test"));
+  waitForMeasurements(state);
+  const Scene& scene = *state.scene;
+  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
+  const DeformationGradients gradients(deformer, scene.meshVertices);
+  const double restVolume = signedVolume(scene.meshVertices, scene.meshTriangles);
+  double changes[2];
+  for (std::size_t v = 0; v < 2; ++v) {
+    const double nu = v == 0 ? 0.0 : 0.45;
+    const ViewMeasurement* m = state.quantities.measurement(v);
+    ASSERT_NE(m, nullptr) << "view " << v;
+    Eigen::MatrixXd positions, jacobians;
+    gradients.evaluate(state.pose, withNu(state.params, nu), positions, jacobians);
+    for (Eigen::Index p = 0; p < jacobians.rows(); p += 5) {
+      const Eigen::Matrix<double, 1, 9> row = jacobians.row(p);
+      const double det = Eigen::Map<const Eigen::Matrix3d>(row.data()).determinant();
+      if (!std::isfinite(det)) continue;
+      EXPECT_NEAR(m->detJ[p], det, 1e-9 * std::abs(det)) << "view " << v << " vertex " << p;
+    }
+    ASSERT_TRUE(m->closed);
+    const double deformed = signedVolume(deformer.deform(state.pose, withNu(state.params, nu)), scene.meshTriangles);
+    EXPECT_NEAR(m->volumeChange, deformed / restVolume - 1, 1e-9) << "view " << v;
+    changes[v] = m->volumeChange;
+    std::printf("view %d (nu %.2f): volume change %+.4f %%\n", static_cast<int>(v), nu, 100 * m->volumeChange);
+  }
+  EXPECT_GT(std::abs(changes[0] - changes[1]), 1e-2);  // nu changes how much volume the pose gains
+}
+
+// Paper Fig. 3: the field |T_i(x) n_i| of one cage vertex in two panes at nu 0 and 0.45, each against the
+// coordinate columns at its nu.
+TEST(EditorViews, TheCoordinateFieldOfEachViewIsAtItsOwnNu) {
+  AppState state;
+  state.compare = true;
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45)};
+  openDemoScene(state, 2);
+  const int vertex = 0;
+  state.selection.setIndices({vertex});
+  state.quantities.show.setAll(quantityIndex("field", "test"));
+  waitForMeasurements(state);
+  const Scene& scene = *state.scene;
+  const SomiglianaCoordinates all = computeSomiglianaCoordinates(scene.restCage, scene.meshVertices);
+  double largestChange = 0;
+  for (std::size_t v = 0; v < 2; ++v) {
+    const ViewMeasurement* m = state.quantities.measurement(v);
+    ASSERT_NE(m, nullptr) << "view " << v;
+    const Eigen::MatrixXd field = vertexCoordinateField(all, scene.restCage, vertex, v == 0 ? 0.0 : 0.45);
+    for (Eigen::Index p = 0; p < field.rows(); ++p) {
+      if (all.winding[p] < 0.5) continue;
+      EXPECT_NEAR(m->values[p], field.row(p).norm(), 1e-12 * (1 + field.row(p).norm())) << "view " << v;
+      if (v == 1)
+        largestChange = std::max(largestChange, std::abs(m->values[p] - state.quantities.measurement(0)->values[p]));
+    }
+  }
+  EXPECT_GT(largestChange, 1e-3);  // nu changes the field
+}
+
+TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
+  const EditorOptions o = parseEditorArgs({"--demo", "2d", "--view", "somigliana:nu=0", "--view",
+                                           "somigliana:nu=0.45:gamma=2:variant=local:traction=off", "--view", "mvc"});
+  ASSERT_EQ(o.views.size(), 3u);
+  EXPECT_TRUE(o.views[0] == somiglianaAt(0.0));
+  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false}));
+  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:nu=-inf", "--view", "green"}).views[0] ==
+              somiglianaAt(-std::numeric_limits<double>::infinity()));
+  // --compare is the list of views without their own values.
+  const EditorOptions c = parseEditorArgs({"--compare", "somigliana,green"});
+  EXPECT_TRUE(c.views == viewsOf({methods::somigliana(), methods::green()}));
+}
+
+TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases{
+      {{"--view", "somigliana:nu=0.7", "--view", "green"}, "out of range"},
+      {{"--view", "somigliana:nu=abc", "--view", "green"}, "'abc' is not a number"},
+      {{"--view", "somigliana:gamma=-1", "--view", "green"}, "gamma"},
+      {{"--view", "somigliana:variant=middle", "--view", "green"}, "variant must be global or local"},
+      {{"--view", "somigliana:traction=yes", "--view", "green"}, "traction must be on or off"},
+      {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
+      {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},
+      {{"--view", "somigliana:color=red", "--view", "green"}, "unknown key 'color'"},
+      {{"--view", "phong", "--view", "green"}, "unknown method 'phong'"},
+      {{"--view", "green:nu=0.3", "--view", "somigliana"}, "green does not read nu"},
+      {{"--view", "bem:nu=0.5", "--view", "somigliana"}, "bem nu: the boundary element method cannot use nu = 0.5"},
+      {{"--view", "somigliana:nu=0"}, "one view given"},
+      {{"--view", "mvc", "--view", "mvc", "--view", "mvc", "--view", "mvc"}, "at most 3 views"},
+      {{"--compare", "somigliana,green", "--view", "mvc"}, "given with --compare"},
+  };
+  for (const auto& [args, expected] : cases) {
+    const std::string message = viewError(args);
+    EXPECT_NE(message.find(expected), std::string::npos) << args[1] << ": " << message;
+  }
+}
+
+TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
+  Session a;
+  a.compare = true;
+  a.compareViews = {
+      somiglianaAt(1.0 / 3.0),
+      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true},
+      ViewSpec{methods::green(), {}, {}, {}, {}}};
+  const Session b = sessionFromJson(sessionToJson(a), "s.json");
+  ASSERT_EQ(b.compareViews.size(), 3u);
+  for (std::size_t v = 0; v < 3; ++v) EXPECT_TRUE(b.compareViews[v] == a.compareViews[v]) << "view " << v;
+  // A session from before "views": its compareMethods, following the shared parameters.
+  JsonValue old = parseJson(sessionToJson(a), "s.json");
+  JsonValue withoutViews = JsonValue::object();
+  for (const auto& [key, value] : old.members())
+    if (key != "views") withoutViews.set(key, value);
+  const Session c = sessionFromJson(withoutViews.dump(2), "s.json");
+  EXPECT_TRUE(c.compareViews == viewsOf({methods::somigliana(), methods::somigliana(), methods::green()}));
+  // The state takes them over and gives them back.
+  AppState state;
+  state.compareViews = b.compareViews;
+  EXPECT_TRUE(makeSession(state).compareViews == b.compareViews);
+}
+
+TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
+  Session a;
+  a.compareViews = viewsOf({methods::somigliana(), methods::green()});
+  const std::string good = sessionToJson(a);
+  const std::string entry = "{\n      \"method\": \"green\"\n    }";
+  ASSERT_NE(good.find(entry), std::string::npos) << good;
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"{\"method\": \"green\", \"nu\": 0.3}", "\"views\" entry 1: green does not read nu"},
+      {"{\"method\": \"somigliana\", \"nu\": 2}", "\"views\" entry 1: somigliana nu: Poisson ratio"},
+      {"{\"method\": \"somigliana\", \"nu\": \"x\"}", "\"views\" entry 1: field \"nu\" must be a number"},
+      {"{\"method\": \"somigliana\", \"variant\": \"mid\"}", "\"views\" entry 1: field \"variant\" must be"},
+      {"{\"method\": \"somigliana\", \"colour\": 1}", "\"views\" entry 1 has an unknown field \"colour\""},
+      {"{\"nu\": 0}", "\"views\" entry 1 needs \"method\""},
+      {"{\"method\": \"phong\"}", "unknown method \"phong\""},
+      {"3", "\"views\" entry 1 must be an object"},
+  };
+  for (const auto& [replacement, expected] : cases) {
+    std::string text = good;
+    text.replace(text.find(entry), entry.size(), replacement);
+    try {
+      sessionFromJson(text, "my_session.json");
+      ADD_FAILURE() << replacement << " accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "my_session.json");
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << replacement << ": " << e.what();
+    }
+  }
+  std::string one = good;
+  const std::size_t first = one.find("{\n      \"method\": \"somigliana\"\n    },");
+  ASSERT_NE(first, std::string::npos);
+  one.erase(first, one.find('{', first + 1) - first);
+  try {
+    sessionFromJson(one, "my_session.json");
+    ADD_FAILURE() << "one view accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("\"views\" must be an array of 2 to 3 views"), std::string::npos) << e.what();
+  }
+}
+
+TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
+  AppState state;
+  state.compare = true;
+  setCompareViews(state, {somiglianaAt(0.0)});  // one: refused
+  EXPECT_TRUE(state.compareViews == viewsOf(defaultCompareMethods()));
+  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}}});
+  ASSERT_EQ(state.views().size(), 3u);
+  state.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
+  removeCompareView(state, 1);
+  ASSERT_EQ(state.views().size(), 2u);
+  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_EQ(state.quantities.show.view(1).quantity, quantityIndex("detj", "test"));  // its Show choice moved with it
+  removeCompareView(state, 0);                                                       // two stay
+  EXPECT_EQ(state.views().size(), 2u);
+  EXPECT_EQ(state.deformerMethods().size(), 2u);
+}
