@@ -10,7 +10,7 @@
 #endif
 
 int main(int argc, char** argv) {
-  // The frame devices of this executable: `somicage deform --device` and `somicage bench` use them.
+  // The frame devices of this executable: `somicage deform --device`, `somicage bench` and the editor use them.
   somicage::FrameDevices devices = {somicage::cpuFrameDevice()};
 #ifdef SOMICAGE_HAVE_EDITOR
   devices.push_back(somicage::render::openGlFrameDevice());
@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
   devices.push_back(somicage::cudaFrameDevice());
   if (argc > 1 && somicage::isCliCommand(argv[1])) return somicage::runCli(argc, argv, devices);
 #ifdef SOMICAGE_HAVE_EDITOR
-  return somicage::runEditor(argc, argv);
+  return somicage::runEditor(argc, argv, devices);
 #else
   return somicage::runCli(argc, argv, devices);  // built without the editor: the CLI explains the commands
 #endif

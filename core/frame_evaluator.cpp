@@ -1,5 +1,7 @@
 #include "frame_evaluator.h"
 
+#include "errors.h"
+
 namespace somicage {
 
 void CpuFrameEvaluator::evaluate(const FrameWeights& W, Eigen::MatrixXd& out) {
@@ -15,6 +17,13 @@ const FrameDevice* findFrameDevice(const FrameDevices& devices, const std::strin
   for (const FrameDevice& device : devices)
     if (device.name == name) return &device;
   return nullptr;
+}
+
+const FrameDevice& frameDeviceOption(const FrameDevices& devices, const std::string& name) {
+  if (const FrameDevice* device = findFrameDevice(devices, name)) return *device;
+  std::string offered;
+  for (const FrameDevice& d : devices) offered += (offered.empty() ? "" : ", ") + d.name;
+  throw InputError("--device", -1, "unknown device '" + name + "'", "this executable offers " + offered);
 }
 
 }  // namespace somicage

@@ -57,5 +57,7 @@ FrameDevice cpuFrameDevice();
 
 // The device called `name`, or nullptr.
 const FrameDevice* findFrameDevice(const FrameDevices& devices, const std::string& name);
+// The device called `name` (what `--device` took); throws InputError("--device") listing the offered devices.
+const FrameDevice& frameDeviceOption(const FrameDevices& devices, const std::string& name);
 
 }  // namespace somicage

@@ -44,13 +44,10 @@ ArgParser deformOptions() {
 // The device of --device (default cpu), refused now, before any file is read, when it says it cannot run here.
 const FrameDevice& deviceOption(const ArgParser& args, const FrameDevices& devices) {
   const std::string name = args.has("--device") ? args.text("--device") : "cpu";
-  std::string offered;
-  for (const FrameDevice& d : devices) offered += (offered.empty() ? "" : ", ") + d.name;
-  const FrameDevice* device = findFrameDevice(devices, name);
-  if (!device) throw InputError("--device", -1, "unknown device '" + name + "'", "this executable offers " + offered);
-  const std::string why = device->unavailable ? device->unavailable() : std::string();
+  const FrameDevice& device = frameDeviceOption(devices, name);
+  const std::string why = device.unavailable ? device.unavailable() : std::string();
   if (!why.empty()) throw InputError("--device " + name, -1, "not usable here: " + why, "use --device cpu");
-  return *device;
+  return device;
 }
 
 std::unique_ptr<FrameEvaluator> makeEvaluator(const FrameDevice& device, const CageDeformer& deformer) {

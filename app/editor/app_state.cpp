@@ -221,7 +221,7 @@ bool updateDeformation(AppState& state) {
   state.deformDirty = false;
   const std::vector<ViewSpec> views = state.views();
   state.deformed.resize(views.size());
-  if (state.activeBackend() == DeformBackend::Gpu) {
+  if (state.devices.inPlace()) {
     state.cpuStale.clear();
     for (std::size_t v = 0; v < views.size(); ++v) state.cpuStale.push_back(v);
     ++state.deformGeneration;  // the Renderer deforms on the GPU and reports the timing (Renderer::sync)
@@ -235,7 +235,7 @@ bool updateDeformation(AppState& state) {
     auto it = state.deformers.find(views[v].method);
     if (it == state.deformers.end()) continue;
     try {
-      it->second->deform(state.pose, views[v].params(state.params), state.deformed[v]);
+      deformOnDevice(state, it->second, views[v].params(state.params), state.deformed[v]);
       changed = true;
     } catch (const std::exception& e) {
       state.errors.push_back(std::string("deformation failed: ") + e.what());
@@ -258,20 +258,17 @@ void ensureCpuPoints(AppState& state, std::size_t view) {
   if (it == state.deformers.end()) return;
   state.deformed.resize(views.size());
   try {
-    it->second->deform(state.pose, views[view].params(state.params), state.deformed[view]);
+    deformOnDevice(state, it->second, views[view].params(state.params), state.deformed[view]);
   } catch (const std::exception& e) {
     state.errors.push_back(std::string("deformation failed: ") + e.what());
   }
 }
 
-void setBackend(AppState& state, DeformBackend backend) {
-  if (state.backend.requested == backend) return;
-  state.backend.requested = backend;
+void setDevice(AppState& state, const std::string& device) {
+  if (state.devices.requested == device) return;
+  state.devices.requested = device;
+  state.devices.evaluators.clear();  // the old device's copies of C go
   state.deformDirty = true;
-}
-
-const char* backendDisplayName(DeformBackend backend) {
-  return backend == DeformBackend::Gpu ? "GPU (compute shader)" : "CPU (OpenMP)";
 }
 
 const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view) {

@@ -20,6 +20,7 @@
 #include "element_pick.h"
 #include "export_worker.h"
 #include "file_dialog.h"
+#include "frame_device_evaluators.h"
 #include "history.h"
 #include "pose_keys.h"
 #include "precompute_worker.h"
@@ -47,20 +48,12 @@ struct Interaction {
 
 struct Stats {
   double precomputeSeconds = 0.0;
-  // CPU backend: wall time of the last deformation (all views). GPU backend: GPU time of the latest frame whose timer
+  // Wall time of the last deformation (all views); in place on OpenGL: the GPU time of the latest frame whose timer
   // query finished (all views; NaN until one has), read without stalling.
   double lastDeformMs = 0.0;
-  double lastDeformCpuMs = 0.0;  // GPU backend: the CPU part (frameWeights, the W upload, issuing the dispatches)
+  double lastDeformCpuMs = 0.0;  // in place on OpenGL: the CPU part (frameWeights, the W upload, the dispatches)
   double fps = 0.0;
   int deformThreads = 1;
-};
-
-// The per-frame deformation backend and whether the GPU one can run here (set by the frame loop once the GL
-// context exists; the GPU work itself happens in the Renderer, see editor_renderer.h).
-struct BackendState {
-  DeformBackend requested = DeformBackend::Cpu;   // the panel's choice (--backend)
-  bool gpuAvailable = false;                      // OpenGL 4.3 compute shaders work in this context
-  std::string gpuNote = "no OpenGL context yet";  // why the GPU is unavailable, or a caveat (software renderer)
 };
 
 struct AppState {
@@ -83,9 +76,9 @@ struct AppState {
   std::vector<Eigen::MatrixXd> deformed;  // latest deformed points per view (views())
   std::uint64_t deformGeneration = 0;     // bumps when `deformed` changes (position upload)
   bool deformDirty = true;
-  BackendState backend;
-  // GPU backend: views whose `deformed` entry is stale (the Renderer deformed them on the GPU); ensureCpuPoints()
-  // computes them on the CPU when something needs the numbers (framing, export).
+  DeviceState devices;  // where each frame is deformed (frame_device_evaluators.h; chosen once the GL context exists)
+  // In place on OpenGL: views whose `deformed` entry is stale (the Renderer deformed them on the GPU);
+  // ensureCpuPoints() computes them on the CPU when something needs the numbers (framing, export).
   std::vector<std::size_t> cpuStale;
   // ---- quantities shown on the meshes (view_quantity.h) ----
   ViewQuantities quantities;  // what each view shows, measured on a worker
@@ -147,10 +140,6 @@ struct AppState {
   std::vector<Method> deformerMethods() const;
   // The parameters view v deforms with (its own, else the panel's).
   DeformParams viewParams(std::size_t v) const { return views()[v].params(params); }
-  // The backend that deforms this frame: the requested one, or the CPU when the GPU is unavailable.
-  DeformBackend activeBackend() const {
-    return backend.requested == DeformBackend::Gpu && backend.gpuAvailable ? DeformBackend::Gpu : DeformBackend::Cpu;
-  }
   int dim() const { return scene ? scene->dim() : 3; }
 };
 
@@ -172,16 +161,16 @@ bool pollWorker(AppState& state);
 // Installs an outcome (also used by the screenshot path after waiting).
 void installOutcome(AppState& state, PrecomputeOutcome outcome);
 
-// Calls deform() for every view whose result is stale. Returns true when positions changed. With the GPU backend
-// it only marks the views for the Renderer (bumps deformGeneration) and leaves `deformed` stale (cpuStale).
+// Deforms every view whose result is stale on the active device (deformOnDevice). Returns true when positions
+// changed. In place on OpenGL it only marks the views for the Renderer (bumps deformGeneration) and leaves
+// `deformed` stale (cpuStale).
 bool updateDeformation(AppState& state);
 
-// Brings `deformed[view]` up to date on the CPU when the GPU backend left it stale (framing, export).
+// Brings `deformed[view]` up to date on the CPU when the in-place OpenGL path left it stale (framing, export).
 void ensureCpuPoints(AppState& state, std::size_t view);
 
-// Switches the backend (recorded nowhere: not an edit). The GPU choice takes effect only when gpuAvailable.
-void setBackend(AppState& state, DeformBackend backend);
-const char* backendDisplayName(DeformBackend backend);
+// Switches the device (recorded nowhere: not an edit). It takes effect only when usable (devices.usable).
+void setDevice(AppState& state, const std::string& device);
 
 // The points shown in view `view` (views()): deformed when available, else the rest mesh.
 const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view);

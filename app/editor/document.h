@@ -1,5 +1,5 @@
 // The document: what the user edits and what undo / redo / the Undo History restore exactly. Everything that
-// is not here (camera, selection, which views are shown, the backend) is view state: changing it is not an
+// is not here (camera, selection, which views are shown, the device) is view state: changing it is not an
 // edit and does not make the document "unsaved". Pure, no GL.
 //
 // To make a new kind of edit undoable, add the field it changes here (with its comparison in operator==) and

@@ -64,25 +64,20 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   state.showCage = !o.hideCage;
 }
 
-// Whether the GPU backend can run in this context, and the default: the GPU on a hardware GPU; the CPU on a
-// software renderer (Mesa llvmpipe runs compute shaders on the CPU, an order of magnitude slower than
-// core's evaluateFrame: see render/gpu_deformer.cpp), unless --backend says otherwise.
-void chooseBackend(AppState& state, const EditorOptions& options) {
-  std::string reason;
-  state.backend.gpuAvailable = render::GpuDeformer::available(&reason);
-  const bool software = state.backend.gpuAvailable && render::GpuDeformer::softwareRenderer();
-  if (!state.backend.gpuAvailable) {
-    state.backend.gpuNote = reason;
-  } else if (software) {
-    state.backend.gpuNote = "this OpenGL renders on the CPU (" + state.glRenderer +
-                            "): the GPU backend works but is slower than the CPU one here";
-  } else {
-    state.backend.gpuNote.clear();
-  }
-  const bool preferGpu = state.backend.gpuAvailable && !software;
-  state.backend.requested = options.backend ? *options.backend : preferGpu ? DeformBackend::Gpu : DeformBackend::Cpu;
-  if (options.backend == DeformBackend::Gpu && !state.backend.gpuAvailable)
-    std::fprintf(stderr, "somicage: --backend gpu: %s; deforming on the CPU\n", reason.c_str());
+// The devices the editor offers, whether the in-place OpenGL one can run in this context, and the default: opengl on
+// a hardware GPU; cpu on a software renderer (Mesa llvmpipe runs compute shaders on the CPU, an order of magnitude
+// slower than core's evaluateFrame: see render/gpu_deformer.cpp), unless --device says otherwise.
+void chooseDevices(AppState& state, const EditorOptions& options, const FrameDevices& devices) {
+  std::string glProblem;
+  const bool gl = render::GpuDeformer::available(&glProblem);
+  const bool software = gl && render::GpuDeformer::softwareRenderer();
+  state.devices.note =
+      software ? "this OpenGL renders on the CPU (" + state.glRenderer + "): opengl works but is slower than cpu here"
+               : "";
+  const std::string refused =
+      chooseDevice(state.devices, devices, options.device, gl && !software ? kInPlaceDevice : kCpuDevice, glProblem);
+  if (!refused.empty())
+    std::fprintf(stderr, "somicage: --device %s: %s; deforming on the CPU\n", options.device->c_str(), refused.c_str());
 }
 
 // What the GLFW callbacks reach through the window user pointer: the state (drops), the input queue, and whether
@@ -302,7 +297,7 @@ bool waitForScene(AppState& state) {
   return false;
 }
 
-int runWindow(const EditorOptions& options) {
+int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   glfwSetErrorCallback(glfwErrorCallback);
   if (!glfwInit()) {
     std::fprintf(stderr,
@@ -361,7 +356,7 @@ int runWindow(const EditorOptions& options) {
     Renderer renderer;
     state.glRenderer = glRenderer;
     applyOptions(state, options);
-    chooseBackend(state, options);
+    chooseDevices(state, options, devices);
     // Recent files persist only in interactive use: a --screenshot run must not touch the user's list.
     if (!headless) {
       state.recentPath = recentFilesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
@@ -436,8 +431,8 @@ int runWindow(const EditorOptions& options) {
             for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
             rc = 1;
           } else {
-            std::printf("wrote %s (deformation backend: %s)\n", options.screenshotPath.c_str(),
-                        backendDisplayName(state.activeBackend()));
+            std::printf("wrote %s (deformation device: %s)\n", options.screenshotPath.c_str(),
+                        state.devices.active().c_str());
             printLegends(state);
           }
         }
@@ -493,10 +488,11 @@ int runWindow(const EditorOptions& options) {
 
 }  // namespace
 
-int runEditor(int argc, char** argv) {
+int runEditor(int argc, char** argv, const FrameDevices& devices) {
   EditorOptions options;
   try {
     options = parseEditorArgs(std::vector<std::string>(argv + 1, argv + argc));
+    checkDeviceOption(options, devices);
   } catch (const InputError& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
     return 2;
@@ -505,7 +501,7 @@ int runEditor(int argc, char** argv) {
     std::fputs(editorUsage().c_str(), stdout);
     return 0;
   }
-  return runWindow(options);
+  return runWindow(options, devices);
 }
 
 }  // namespace somicage

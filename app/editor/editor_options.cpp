@@ -130,10 +130,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.range = ColorRange{parseNumber(v.substr(0, colon), a), parseNumber(v.substr(colon + 1), a)};
     } else if (a == "--flat") {
       o.flatShading = true;
-    } else if (a == "--backend") {
-      const std::string& v = value();
-      if (v != "cpu" && v != "gpu") throw InputError(a, -1, "expected cpu or gpu, got '" + v + "'", "--backend gpu");
-      o.backend = v == "gpu" ? DeformBackend::Gpu : DeformBackend::Cpu;
+    } else if (a == "--device") {
+      o.device = value();  // checked against the executable's devices by checkDeviceOption
     } else if (a.size() > 1 && a[0] == '-') {
       throw InputError(a, -1, "unknown option", "see somicage --help");
     } else {
@@ -176,6 +174,10 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   return o;
 }
 
+void checkDeviceOption(const EditorOptions& options, const FrameDevices& devices) {
+  if (options.device) frameDeviceOption(devices, *options.device);
+}
+
 std::string editorUsage() {
   return "usage: somicage [MESH.obj [CAGE.obj [POSED.obj]]] [options]   (no cage: one is made, see 'somicage cage')\n"
          "       somicage deform|check|bench|help ...   (command line tools, see 'somicage help')\n"
@@ -213,8 +215,9 @@ std::string editorUsage() {
          "  --range MIN:MAX           a fixed colour range for the shown quantities (default: automatic, shared\n"
          "                            by the views); a ratio's range must have MIN < 1 < MAX\n"
          "  --restore-autosave        after a crash, restore the autosaved session without asking\n"
-         "  --backend cpu|gpu         per-frame deformation on the CPU or in an OpenGL 4.3 compute shader\n"
-         "                            (default: gpu on a hardware GPU, cpu otherwise)\n"
+         "  --device cpu|opengl|cuda  where every frame is deformed: the CPU (OpenMP), an OpenGL 4.3 compute\n"
+         "                            shader writing the vertex buffers, or CUDA (default: opengl on a hardware\n"
+         "                            GPU, cpu otherwise; an unusable device says why and the CPU deforms)\n"
          "  --frame-delay MS          testing: make every frame MS slower (tries input at low frame rates)\n"
          "  --log-actions             print each keyboard command, undo step and dialog to stdout (testing)\n"
          "  -h, --help                this list\n"

@@ -6,14 +6,11 @@
 #include <vector>
 
 #include "deformer.h"
+#include "frame_evaluator.h"
 #include "view_quantity.h"
 #include "view_spec.h"
 
 namespace somicage::editor {
-
-// Where the editor evaluates the deformation every frame: core's evaluateFrame (OpenMP) or the OpenGL 4.3 compute
-// shader of render/gpu_deformer.h, which writes straight into the vertex buffers.
-enum class DeformBackend { Cpu, Gpu };
 
 struct EditorOptions {
   std::string meshPath, cagePath, posedPath;  // empty mesh and cage: the built-in demo
@@ -27,7 +24,8 @@ struct EditorOptions {
   int width = 1600, height = 900;             // --size WxH
   bool flatShading = false;                   // --flat: faceted shading
   bool hideUi = false;                        // --hide-ui: only the viewports (for clean screenshots)
-  std::optional<DeformBackend> backend;       // --backend cpu|gpu; default: GPU on a hardware GPU, else CPU
+  std::optional<std::string> device;          // --device NAME (frame_device_evaluators.h); default: opengl on a
+                                              // hardware GPU, else cpu
   bool restoreAutosave = false;               // --restore-autosave: restore a crashed session without asking
   int frameDelayMs = 0;                       // --frame-delay MS: testing, every frame MS slower (low frame rates)
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
@@ -42,6 +40,8 @@ struct EditorOptions {
 
 // args excludes the program name. Throws InputError naming the option on a bad value or unknown option.
 EditorOptions parseEditorArgs(const std::vector<std::string>& args);
+// Throws InputError("--device") listing the offered devices when --device names none of them.
+void checkDeviceOption(const EditorOptions& options, const FrameDevices& devices);
 
 // "inf", "+inf", "infinity", "-inf" or a number; throws InputError(option, ...) otherwise.
 double parseNumber(const std::string& text, const std::string& option);

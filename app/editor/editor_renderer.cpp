@@ -44,7 +44,7 @@ void Renderer::sync(AppState& state) {
     meshes_[v].uploaded.reset();
     meshes_[v].onGpu = false;
   }
-  const bool gpuBackend = state.activeBackend() == DeformBackend::Gpu;
+  const bool inPlace = state.devices.inPlace();
   double gpuMs = 0.0, cpuMs = 0.0;
   bool ranOnGpu = false, timed = false;
   for (std::size_t v = 0; v < views.size(); ++v) {
@@ -52,7 +52,7 @@ void Renderer::sync(AppState& state) {
     if (!slot.mesh) slot.mesh = std::make_unique<render::MeshRenderer>();
     const bool newScene = slot.sceneGeneration != state.sceneGeneration;
     if (newScene) slot.mesh->setTopology(state.scene->meshTriangles);
-    if (state.activeBackend() == DeformBackend::Gpu && hasDeformer(state, views[v].method)) {  // (a failure: off)
+    if (state.devices.inPlace() && hasDeformer(state, views[v].method)) {  // (a failure turns it off)
       try {
         if (syncGpu(slot, state, v, newScene)) {
           ranOnGpu = true;
@@ -66,9 +66,7 @@ void Renderer::sync(AppState& state) {
       } catch (const InputError& e) {  // bad parameters: as on the CPU path
         state.errors.push_back(std::string("deformation failed: ") + e.what());
       } catch (const std::exception& e) {  // the GPU cannot do it (shader, memory): fall back to the CPU for good
-        state.backend.gpuAvailable = false;
-        state.backend.gpuNote = std::string("the GPU deformation failed, using the CPU: ") + e.what();
-        state.errors.push_back(state.backend.gpuNote);
+        deviceFailed(state, kInPlaceDevice, e.what());
         state.deformDirty = true;
         slot.gpu.reset();
         slot.uploaded.reset();
@@ -98,7 +96,7 @@ void Renderer::sync(AppState& state) {
   }
   syncScalars(state);
   if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
-  if (gpuBackend && state.activeBackend() == DeformBackend::Gpu)
+  if (inPlace && state.devices.inPlace())
     state.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
   if (cageScene_ != state.sceneGeneration) {
     cage_.setTopology(state.scene->restCage.faces);

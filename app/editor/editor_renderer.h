@@ -1,7 +1,8 @@
 // The editor's Renderer: owns the GPU copies of the scene (one mesh per viewport, one cage) and draws the
 // viewports from AppState. Declared next to AppState and destroyed before the GL context. The GL calls
-// themselves live in render/; this file sees no GL header. With the GPU backend it also owns one GpuDeformer per
-// viewport, which deforms straight into that viewport's vertex buffers.
+// themselves live in render/; this file sees no GL header. In place on OpenGL (frame_device_evaluators.h: the
+// "opengl" device) it also owns one GpuDeformer per viewport, which deforms straight into that viewport's vertex
+// buffers.
 #pragma once
 
 #include <cstdint>
@@ -21,9 +22,9 @@ class Renderer {
   Renderer();
 
   // Uploads what changed since the last call: topology when the scene changed, positions when the pose or
-  // the deformation changed, the selection flags when the pose generation changed. With the GPU backend, deforms
+  // the deformation changed, the selection flags when the pose generation changed. In place on OpenGL, deforms
   // the changed views on the GPU instead (C uploaded once per deformer) and writes the timing into state.stats; a
-  // GPU failure switches the state to the CPU backend (backend.gpuAvailable = false, the reason in gpuNote).
+  // GPU failure switches the state to the CPU (the reason in devices.unavailable and state.errors).
   void sync(AppState& state);
 
   // Clears the framebuffer and draws every viewport. views are in window pixels; framebufferScale converts
@@ -37,7 +38,7 @@ class Renderer {
     std::uint64_t sceneGeneration = ~0ull, deformGeneration = ~0ull;
     ViewSpec view;  // what the slot shows (its method and own parameters)
     bool showedDeformed = false;
-    // GPU backend: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
+    // In place on OpenGL: the deformer whose C is on the GPU (held, so its address cannot be reused by a new one).
     std::unique_ptr<render::GpuDeformer> gpu;
     std::shared_ptr<const CageDeformer> uploaded;
     bool onGpu = false;                        // the vertex buffers hold the GPU's result

@@ -270,23 +270,24 @@ void drawControlPanel(AppState& state) {
   drawShowChoice(state);
   tooltip("Colour the meshes by a quantity of the pose (measured when the pose settles; one range for all views)");
 
-  sectionHeader("Deformation backend");
+  sectionHeader("Deformation device");
   {
-    int backend = static_cast<int>(state.backend.requested);
-    if (ImGui::RadioButton("CPU", backend == static_cast<int>(DeformBackend::Cpu)))
-      setBackend(state, DeformBackend::Cpu);
-    tooltip("Deform every frame on the CPU (OpenMP)");
-    ImGui::SameLine();
-    if (!state.backend.gpuAvailable) ImGui::BeginDisabled();
-    if (ImGui::RadioButton("GPU (compute shader)", backend == static_cast<int>(DeformBackend::Gpu)))
-      setBackend(state, DeformBackend::Gpu);
-    if (!state.backend.gpuAvailable) ImGui::EndDisabled();
-    tooltip("Deform every frame in an OpenGL 4.3 compute shader (needs a GPU driver with compute shaders)");
-    if (!state.backend.gpuNote.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-      ImGui::TextWrapped("%s%s", state.backend.gpuAvailable ? "" : "GPU unavailable: ", state.backend.gpuNote.c_str());
-      ImGui::PopStyleColor();
+    const DeviceState& devices = state.devices;
+    const std::string active = devices.active();
+    for (std::size_t i = 0; i < devices.offered.size(); ++i) {
+      const std::string& name = devices.offered[i].name;
+      if (i > 0) ImGui::SameLine();
+      ImGui::BeginDisabled(!devices.usable(name));
+      if (ImGui::RadioButton(name.c_str(), name == active)) setDevice(state, name);
+      ImGui::EndDisabled();
+      tooltip(
+          "Where every frame is deformed (--device): cpu = OpenMP, opengl = a compute shader writing the vertex "
+          "buffers, cuda = an NVIDIA GPU");
     }
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    for (const auto& [name, why] : devices.unavailable) ImGui::TextWrapped("%s: %s", name.c_str(), why.c_str());
+    if (!devices.note.empty()) ImGui::TextWrapped("%s", devices.note.c_str());
+    ImGui::PopStyleColor();
   }
 
   sectionHeader("Precompute");
@@ -322,11 +323,15 @@ void drawStatusBar(AppState& state) {
   if (state.scene) {
     char fps[32] = "- FPS";
     if (state.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.stats.fps);
-    char backend[96];
-    if (state.activeBackend() == DeformBackend::Gpu) {
-      std::snprintf(backend, sizeof backend, "GPU (compute shader, %.2f ms on the CPU)", state.stats.lastDeformCpuMs);
+    char device[96];
+    const std::string active = state.devices.active();
+    if (state.devices.inPlace()) {
+      std::snprintf(device, sizeof device, "%s (compute shader, %.2f ms on the CPU)", active.c_str(),
+                    state.stats.lastDeformCpuMs);
+    } else if (active == kCpuDevice) {
+      std::snprintf(device, sizeof device, "%s (OpenMP, %d threads)", active.c_str(), state.stats.deformThreads);
     } else {
-      std::snprintf(backend, sizeof backend, "CPU (OpenMP, %d threads)", state.stats.deformThreads);
+      std::snprintf(device, sizeof device, "%s", active.c_str());
     }
     char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
     if (std::isfinite(state.stats.lastDeformMs))
@@ -336,7 +341,7 @@ void drawStatusBar(AppState& state) {
                 state.statusMessage.c_str(), state.statusMessage.empty() ? "" : "   |",
                 hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.scene->meshVertices.rows()),
                 static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
-                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, backend);
+                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, device);
   } else {
     ImGui::Text("loading...   %s", state.statusMessage.c_str());
   }

@@ -116,7 +116,7 @@ TEST(GuiAutosave, RestoreAutosaveShowsTheCrashedSessionAndLeavesTheFilesAlone) {
   writeCrashMarker(paths.marker);
   const std::string marker = readText(paths.marker);
 
-  const std::string common = "--size 400x300 --hide-ui --backend cpu --screenshot ";
+  const std::string common = "--size 400x300 --hide-ui --device cpu --screenshot ";
   std::string log;
   ASSERT_EQ(runSomicage(config, "--restore-autosave " + common + quote((config.root() / "restored.png").string()), log),
             0)

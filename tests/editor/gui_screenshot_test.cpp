@@ -84,17 +84,19 @@ TEST(GuiScreenshot, FireHydrantCompareWithPanels) {
   EXPECT_GT(img.coverage(), 0.012);
 }
 
-// The GPU backend (compute shader writing the vertex buffers, normals included) draws what the CPU backend draws:
-// the same silhouette, and the same shading up to a few grey levels (float positions and normals on the GPU).
-TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
+// The opengl device (in place: a compute shader writing the vertex buffers, normals included) draws what the cpu
+// device draws: the same silhouette, and the same shading up to a few grey levels (float positions and normals on
+// the GPU).
+TEST(GuiScreenshot, OpenGlDeviceLooksLikeTheCpuDevice) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();
   const std::string args = quote(f.mesh) + " " + quote(f.cage) + " " + quote(f.posed) +
                            " --compare somigliana,green --nu 0.3 --gamma 1 --local --hide-ui --size 960x480";
-  const Image gpu = screenshot(args + " --backend gpu", "sphere_posed_gpu");
-  if (readLog("sphere_posed_gpu").find("backend: GPU") == std::string::npos)
+  const Image gpu = screenshot(args + " --device opengl", "sphere_posed_gpu");
+  if (readLog("sphere_posed_gpu").find("device: opengl") == std::string::npos)
     GTEST_SKIP() << "no OpenGL 4.3 compute shaders here:\n" << readLog("sphere_posed_gpu");
-  const Image cpu = screenshot(args + " --backend cpu", "sphere_posed_cpu");
+  const Image cpu = screenshot(args + " --device cpu", "sphere_posed_cpu");
+  ASSERT_NE(readLog("sphere_posed_cpu").find("device: cpu"), std::string::npos) << readLog("sphere_posed_cpu");
   ASSERT_GT(gpu.width, 0);
   ASSERT_EQ(gpu.width, cpu.width);
   ASSERT_EQ(gpu.height, cpu.height);
@@ -105,7 +107,7 @@ TEST(GuiScreenshot, GpuBackendLooksLikeTheCpuBackend) {
   EXPECT_LT(colourDifference(gpu, cpu, 6), 2e-3);
   // And it moved with the cage (not the rest mesh).
   const Image rest = screenshot(
-      quote(f.mesh) + " " + quote(f.cage) + " --compare somigliana,green --hide-ui --size 960x480 --backend gpu",
+      quote(f.mesh) + " " + quote(f.cage) + " --compare somigliana,green --hide-ui --size 960x480 --device opengl",
       "sphere_rest_gpu");
   EXPECT_GT(maskDifference(rest, 0, gpu, 0, gpu.width), 0.01);
 }
@@ -125,6 +127,32 @@ TEST(GuiScreenshot, BadOptionsFailBeforeOpeningAWindow) {
   const std::string log = (outputDir() / "bad_option.log").string();
   const int status = std::system((quote(kExe) + " --nu 0.9 > " + quote(log) + " 2>&1").c_str());
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 2);
+  // An unknown device is named with the devices this executable offers (main.cpp: the CLI's list).
+  const int device = std::system((quote(kExe) + " --device gpu > " + quote(log) + " 2>&1").c_str());
+  EXPECT_EQ(WIFEXITED(device) ? WEXITSTATUS(device) : -1, 2);
+  const std::string text = readLog("bad_option");
+  EXPECT_NE(text.find("--device"), std::string::npos) << text;
+  EXPECT_NE(text.find("'gpu'"), std::string::npos) << text;
+  EXPECT_NE(text.find("cpu, opengl, cuda"), std::string::npos) << text;
+}
+
+// A device that cannot run here (CUDA in a build without it, or without an NVIDIA GPU) is refused with its reason
+// and the CPU deforms: the frame is written, nothing crashes.
+TEST(GuiScreenshot, UnusableDeviceFallsBackToTheCpu) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  const fs::path png = outputDir() / "device_cuda.png";
+  fs::remove(png);
+  const int rc = runSomicage(quote(f.mesh) + " " + quote(f.cage) + " --device cuda --hide-ui --size 320x240 " +
+                                 "--screenshot " + quote(png.string()),
+                             "device_cuda");
+  const std::string log = readLog("device_cuda");
+  if (log.find("device: cuda") != std::string::npos) GTEST_SKIP() << "CUDA runs here: nothing to refuse";
+  EXPECT_EQ(rc, 0) << log;
+  EXPECT_TRUE(fs::exists(png)) << log;
+  EXPECT_NE(log.find("--device cuda: "), std::string::npos) << log;
+  EXPECT_NE(log.find("deforming on the CPU"), std::string::npos) << log;
+  EXPECT_NE(log.find("device: cpu"), std::string::npos) << log;
 }
 
 // ---- the Show quantities (issue 12) ----

@@ -1,0 +1,283 @@
+// The editor's frame devices (frame_device_evaluators.h), without GL: the chosen device's evaluator is what
+// computes the frames, an unusable device is refused with its reason and the CPU deforms, a device failing at run
+// time hands over to the CPU, the in-place OpenGL path leaves the CPU points to the Renderer, and --device.
+// The GPU kernel itself is tested in gpu_deformer_test.cpp (under Xvfb).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include "app_state.h"
+#include "cuda/cuda_backend.h"
+#include "editor_options.h"
+#include "editor_test_support.h"
+#include "errors.h"
+#include "frame_device_evaluators.h"
+#include "methods/method_descriptors.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+struct Counts {
+  int made = 0, frames = 0;
+};
+
+// The CPU's evaluator, counting the frames it evaluates.
+class CountingEvaluator final : public FrameEvaluator {
+ public:
+  CountingEvaluator(const CageDeformer& deformer, Counts& counts) : cpu_(deformer), counts_(counts) {}
+  void evaluate(const FrameWeights& W, Eigen::MatrixXd& out) override {
+    ++counts_.frames;
+    cpu_.evaluate(W, out);
+  }
+
+ private:
+  CpuFrameEvaluator cpu_;
+  Counts& counts_;
+};
+
+FrameDevice countingDevice(const std::string& name, const std::shared_ptr<Counts>& counts) {
+  return {name,
+          name,
+          [counts](const CageDeformer& deformer) {
+            ++counts->made;
+            return std::make_unique<CountingEvaluator>(deformer, *counts);
+          },
+          {},
+          {}};
+}
+
+// A device whose factory refuses (no device after all), optionally saying so beforehand too.
+FrameDevice refusingDevice(const std::string& name, const std::string& reason, bool saysSoBeforehand) {
+  FrameDevice device{
+      name,
+      name,
+      [reason](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> { throw FrameDeviceUnavailable(reason); },
+      {},
+      {}};
+  if (saysSoBeforehand) device.unavailable = [reason] { return reason; };
+  return device;
+}
+
+// The editor evaluates "opengl" in place (the Renderer's GpuDeformer): its factory must never be called.
+FrameDevice inPlaceDevice() {
+  return {kInPlaceDevice,
+          "gpu",
+          [](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> {
+            ADD_FAILURE() << "the editor made the in-place device's evaluator";
+            throw FrameDeviceUnavailable("not here");
+          },
+          {},
+          {}};
+}
+
+// The demo cage with its right half sheared upwards: not a similarity, so every coordinate block matters.
+Eigen::MatrixXd shearedPose(const AppState& state) {
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i)
+    if (pose(i, 0) > 0.0) pose(i, 1) += 0.4 * pose(i, 0);
+  return pose;
+}
+
+double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  EXPECT_EQ(a.rows(), b.rows());
+  EXPECT_EQ(a.cols(), b.cols());
+  return a.rows() == b.rows() && a.cols() == b.cols() ? (a - b).cwiseAbs().maxCoeff() : HUGE_VAL;
+}
+
+// What view v should show: its deformer's own CPU deformation of the current pose with the view's parameters.
+Eigen::MatrixXd expectedPoints(const AppState& state, std::size_t v) {
+  return state.deformers.at(state.views()[v].method)->deform(state.pose, state.viewParams(v));
+}
+
+}  // namespace
+
+TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
+  AppState state;
+  auto counts = std::make_shared<Counts>();
+  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, ""),
+            "");
+  EXPECT_EQ(state.devices.active(), "fake");
+  openDemoScene(state, 3);
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_EQ(counts->made, 1);
+  EXPECT_EQ(counts->frames, 1);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), state.scene->meshVertices), 0.05);  // it moved
+
+  // The next frame reuses the evaluator (C is uploaded once per deformer).
+  DeformParams params = state.params;
+  params.nu = 0.3;
+  params.gamma = 1.0;
+  params.blend = 1.0;
+  setParams(state, params);
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_EQ(counts->made, 1);
+  EXPECT_EQ(counts->frames, 2);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
+
+  // Compare views, two of one method at their own nu: one evaluator per deformer, one frame per view.
+  std::vector<ViewSpec> compared = viewsOf({methods::somigliana(), methods::somigliana(), methods::green()});
+  compared[1].nu = 0.45;
+  setCompareViews(state, compared);  // (turns compare on)
+  installNextOutcome(state);
+  ASSERT_TRUE(updateDeformation(state));
+  const std::size_t views = state.views().size();
+  ASSERT_EQ(views, 3u);
+  EXPECT_EQ(counts->made, 2);  // Somigliana's evaluator is kept, Green's is new
+  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views));
+  for (std::size_t v = 0; v < views; ++v)
+    EXPECT_LT(maxDifference(displayedPoints(state, v), expectedPoints(state, v)), 1e-12) << "view " << v;
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // nu 0.3 vs 0.45
+  EXPECT_TRUE(state.errors.empty());
+
+  // Back to the CPU: the device's evaluators go, the CPU evaluates.
+  setDevice(state, kCpuDevice);
+  EXPECT_EQ(state.devices.evaluators.size(), 0u);
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_EQ(counts->frames, 2 + static_cast<int>(views));
+}
+
+TEST(EditorDevices, UnavailableDeviceIsRefusedWithItsReason) {
+  AppState state;
+  auto counts = std::make_shared<Counts>();
+  const FrameDevices devices = {cpuFrameDevice(), inPlaceDevice(), refusingDevice("cuda", "no CUDA device", true),
+                                countingDevice("fake", counts)};
+  EXPECT_EQ(chooseDevice(state.devices, devices, "cuda", kInPlaceDevice, "no OpenGL 4.3 context"), "no CUDA device");
+  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  EXPECT_EQ(state.devices.requested, kCpuDevice);  // the panel shows the device that deforms
+  EXPECT_EQ(state.devices.unavailable.at("cuda"), "no CUDA device");
+  EXPECT_EQ(state.devices.unavailable.at(kInPlaceDevice), "no OpenGL 4.3 context");
+  EXPECT_FALSE(state.devices.usable(kInPlaceDevice));
+  EXPECT_TRUE(state.devices.usable("fake"));
+  // Without --device the preferred device falls back quietly (the panel says why).
+  EXPECT_EQ(chooseDevice(state.devices, devices, std::nullopt, kInPlaceDevice, "no OpenGL 4.3 context"), "");
+  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  // A device not offered at all (an editor without CUDA's entry) is refused too.
+  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice()}, "cuda", kCpuDevice, ""), "not offered by this executable");
+  EXPECT_EQ(chooseDevice(state.devices, devices, "cuda", kCpuDevice, ""), "no CUDA device");
+
+  openDemoScene(state, 3);
+  setDevice(state, "cuda");  // what a disabled radio button cannot do: the CPU still deforms
+  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_TRUE(state.errors.empty());
+  EXPECT_EQ(counts->frames, 0);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
+}
+
+TEST(EditorDevices, DeviceFailingAtRunTimeHandsOverToTheCpu) {
+  AppState state;
+  // The cheap check cannot tell; making the evaluator throws.
+  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), refusingDevice("cuda", "out of device memory", false)},
+                         "cuda", kCpuDevice, ""),
+            "");
+  EXPECT_EQ(state.devices.active(), "cuda");
+  openDemoScene(state, 3);
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors.front().find("cuda deformation failed, using the CPU: out of device memory"),
+            std::string::npos)
+      << state.errors.front();
+  EXPECT_NE(state.devices.unavailable.at("cuda").find("out of device memory"), std::string::npos);
+  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
+}
+
+TEST(EditorDevices, BadParametersAreReportedNotBlamedOnTheDevice) {
+  AppState state;
+  auto counts = std::make_shared<Counts>();
+  chooseDevice(state.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, "");
+  openDemoScene(state, 3);
+  DeformParams params = state.params;
+  params.nu = 0.7;  // outside (-1, 0.5)
+  setParams(state, params);
+  updateDeformation(state);
+  ASSERT_EQ(state.errors.size(), 1u);
+  EXPECT_NE(state.errors.front().find("deformation failed"), std::string::npos) << state.errors.front();
+  EXPECT_EQ(counts->frames, 0);
+  EXPECT_EQ(state.devices.active(), "fake");  // still usable
+}
+
+TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
+  AppState state;
+  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""), "");
+  EXPECT_TRUE(state.devices.inPlace());
+  openDemoScene(state, 3);
+  setPose(state, shearedPose(state));
+  const std::uint64_t generation = state.deformGeneration;
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_EQ(state.deformGeneration, generation + 1);  // the Renderer deforms on the GPU
+  ASSERT_EQ(state.cpuStale.size(), 1u);
+  EXPECT_EQ(state.cpuStale.front(), 0u);      // the one view (Somigliana)
+  EXPECT_EQ(state.deformed.at(0).size(), 0);  // nothing computed on the CPU
+
+  ensureCpuPoints(state, 0);  // what framing and export call: the CPU, never opengl's make()
+  EXPECT_TRUE(state.cpuStale.empty());
+  const Eigen::MatrixXd expected = expectedPoints(state, 0);
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
+
+  // Back to the CPU: the next update computes on the CPU again.
+  state.deformDirty = false;
+  setDevice(state, kCpuDevice);
+  EXPECT_TRUE(state.deformDirty);
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_TRUE(state.cpuStale.empty());
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
+}
+
+// This executable's CUDA entry: offered, and refused with CUDA's own reason where there is no usable device.
+TEST(EditorDevices, CudaIsListedAndSaysWhyItCannotRun) {
+  if (cudaStatus().available) GTEST_SKIP() << "a CUDA device is here: " << cudaStatus().deviceName;
+  AppState state;
+  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""),
+            cudaStatus().reason);
+  EXPECT_FALSE(cudaStatus().reason.empty());
+  ASSERT_NE(findFrameDevice(state.devices.offered, "cuda"), nullptr);
+  EXPECT_EQ(state.devices.unavailable.at("cuda"), cudaStatus().reason);
+  EXPECT_EQ(state.devices.active(), kCpuDevice);
+}
+
+// With a usable CUDA device the editor's frames are computed there: the CPU's points within 1e-9 cage diameters
+// (double C on both; only the order of the sums differs, cuda_backend_test.cpp).
+TEST(EditorDevices, CudaDeviceDeformsLikeTheCpu) {
+  if (!cudaStatus().available) GTEST_SKIP() << "no CUDA device: " << cudaStatus().reason;
+  AppState state;
+  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""), "");
+  openDemoScene(state, 3);
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_TRUE(state.errors.empty()) << state.errors.front();
+  EXPECT_EQ(state.devices.active(), "cuda");
+  EXPECT_EQ(state.devices.evaluators.size(), 1u);
+  const Cage& cage = state.scene->restCage;
+  const double diameter = (cage.vertices.colwise().maxCoeff() - cage.vertices.colwise().minCoeff()).norm();
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-9 * diameter);
+}
+
+TEST(EditorDevices, CommandLineOption) {
+  EXPECT_FALSE(parseEditorArgs({}).device.has_value());
+  EXPECT_EQ(parseEditorArgs({"--device", "cuda"}).device.value_or(""), "cuda");
+  EXPECT_THROW(parseEditorArgs({"--device"}), InputError);
+  EXPECT_THROW(parseEditorArgs({"--backend", "gpu"}), InputError);  // replaced by --device
+
+  const FrameDevices devices = {cpuFrameDevice(), inPlaceDevice(), refusingDevice("cuda", "no CUDA device", true)};
+  EXPECT_NO_THROW(checkDeviceOption(parseEditorArgs({}), devices));
+  EXPECT_NO_THROW(checkDeviceOption(parseEditorArgs({"--device", "opengl"}), devices));
+  EXPECT_NO_THROW(checkDeviceOption(parseEditorArgs({"--device", "cuda"}), devices));  // refused later, with why
+  try {
+    checkDeviceOption(parseEditorArgs({"--device", "gpu"}), devices);
+    ADD_FAILURE() << "an unknown device was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("--device"), std::string::npos) << what;
+    EXPECT_NE(what.find("'gpu'"), std::string::npos) << what;
+    EXPECT_NE(what.find("cpu, opengl, cuda"), std::string::npos) << what;
+  }
+}
