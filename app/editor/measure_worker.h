@@ -1,6 +1,6 @@
 // Measures the views' quantities on a worker thread (background_job.h), so the editor keeps drawing while the
 // exact J is set up (seconds on FIREHYDRANT) and each pose is measured: the J-based quantities, the difference
-// between two views (both deformed here, so the UI thread never deforms on the CPU for it, whatever the backend),
+// between two views (both deformed here, so the UI thread never deforms on the CPU for it, whatever the device),
 // the coordinate field of a cage element, and the nu sweep. The worker keeps what is expensive to make and independent
 // of the pose (the deformation gradients per deformer, the field's terms per element) between requests, and frees it as
 // soon as no view uses it. An outcome carries the key of its request; the editor installs it only when that key is

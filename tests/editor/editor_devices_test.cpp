@@ -62,18 +62,6 @@ FrameDevice refusingDevice(const std::string& name, const std::string& reason, b
   return device;
 }
 
-// The editor evaluates "opengl" in place (the Renderer's GpuDeformer): its factory must never be called.
-FrameDevice inPlaceDevice() {
-  return {kInPlaceDevice,
-          "gpu",
-          [](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> {
-            ADD_FAILURE() << "the editor made the in-place device's evaluator";
-            throw FrameDeviceUnavailable("not here");
-          },
-          {},
-          {}};
-}
-
 // The demo cage with its right half sheared upwards: not a similarity, so every coordinate block matters.
 Eigen::MatrixXd shearedPose(const AppState& state) {
   Eigen::MatrixXd pose = state.pose;

@@ -13,6 +13,7 @@
 #include "app_state.h"
 #include "background_job.h"
 #include "coordinate_fields.h"
+#include "editor_test_support.h"
 #include "errors.h"
 #include "methods/method_descriptors.h"
 #include "quantity_overlay.h"
@@ -157,13 +158,12 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   EXPECT_EQ(state.quantities.droppedStale, 0);
 }
 
-// With the GPU backend the UI thread's CPU points stay stale (the Renderer deforms): the difference is measured on
+// With the in-place OpenGL device the UI thread's CPU points stay stale (the Renderer deforms): the difference is measured on
 // the worker all the same, and nothing on the UI thread deforms on the CPU for it (cpuStale untouched).
-TEST(EditorQuantities, DifferenceWithTheGpuBackendIsMeasuredOnTheWorker) {
+TEST(EditorQuantities, DifferenceWithTheInPlaceOpenGlDeviceIsMeasuredOnTheWorker) {
   AppState state;
   loadDemo(state, 3, true);
-  state.backend.requested = DeformBackend::Gpu;
-  state.backend.gpuAvailable = true;  // as the frame loop sets it once a GL 4.3 context exists
+  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""), "");
   bend(state, 0.6);
   const std::vector<std::size_t> stale = state.cpuStale;
   ASSERT_EQ(stale.size(), 3u);

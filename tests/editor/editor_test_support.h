@@ -1,12 +1,14 @@
-// The editor model tests' one way to get a scene without a window: run the worker's request to its end and install
-// the outcome, as the frame loop's pollWorker does.
+// The editor model tests' one way to get a scene without a window (run the worker's request to its end and install
+// the outcome, as the frame loop's pollWorker does), and the stand-in for the Renderer's in-place OpenGL device.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <optional>
 
 #include "app_state.h"
+#include "frame_device_evaluators.h"
 
 namespace somicage::editor {
 
@@ -22,6 +24,18 @@ inline void openDemoScene(AppState& state, int dim = 3) {
   requestDemo(state, dim);
   installNextOutcome(state);
   ASSERT_TRUE(state.scene) << (state.errors.empty() ? "no scene" : state.errors.front());
+}
+
+// The editor evaluates "opengl" in place (the Renderer's GpuDeformer): its factory must never be called.
+inline FrameDevice inPlaceDevice() {
+  return {kInPlaceDevice,
+          "gpu",
+          [](const CageDeformer&) -> std::unique_ptr<FrameEvaluator> {
+            ADD_FAILURE() << "the editor made the in-place device's evaluator";
+            throw FrameDeviceUnavailable("not here");
+          },
+          {},
+          {}};
 }
 
 }  // namespace somicage::editor
