@@ -78,11 +78,25 @@ std::string viewShortName(const AppState& state, std::size_t v) {
 
 // ---- scene requests ----
 
-void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
+namespace {
+
+// A precompute of `methods`' deformers: the J-based quantities' gradients count in its memory check when shown, and
+// the active device integrates the coordinates when it can (its row integrator: --device cuda runs the whole
+// pipeline on CUDA; the CPU's and the in-place OpenGL device's integrate on the CPU).
+PrecomputeRequest deformerRequest(const AppState& state, std::vector<Method> methods) {
   PrecomputeRequest request;
-  request.scene = std::move(scene);
-  request.methods = state.deformerMethods();
+  request.methods = std::move(methods);
   request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
+  if (const FrameDevice* device = findFrameDevice(state.devices.offered, state.devices.active()))
+    request.options.rowIntegrator = device->rowIntegrator;
+  return request;
+}
+
+}  // namespace
+
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
+  PrecomputeRequest request = deformerRequest(state, state.deformerMethods());
+  request.scene = std::move(scene);
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -92,10 +106,8 @@ namespace {
 
 // Starts loading a scene on the worker with `load`, then precomputing the views' deformers.
 void requestLoad(AppState& state, std::function<Scene()> load) {
-  PrecomputeRequest request;
+  PrecomputeRequest request = deformerRequest(state, state.deformerMethods());
   request.loadScene = std::move(load);
-  request.methods = state.deformerMethods();
-  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   state.loadingScene = true;
   state.pendingRecent.reset();
   state.worker.start(std::move(request));
@@ -121,10 +133,8 @@ void ensureDeformers(AppState& state) {
     if (!hasDeformer(state, m)) missing.push_back(m);
   }
   if (missing.empty()) return;
-  PrecomputeRequest request;
+  PrecomputeRequest request = deformerRequest(state, std::move(missing));
   request.scene = state.scene;
-  request.methods = missing;
-  request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   state.worker.start(std::move(request));
 }
 

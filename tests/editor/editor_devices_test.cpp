@@ -12,9 +12,12 @@
 #include "cuda/cuda_backend.h"
 #include "editor_options.h"
 #include "editor_test_support.h"
+#include "engine.h"
 #include "errors.h"
 #include "frame_device_evaluators.h"
 #include "methods/method_descriptors.h"
+#include "precompute_worker.h"
+#include "somigliana_coordinates.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -191,6 +194,30 @@ TEST(EditorDevices, BadParametersAreReportedNotBlamedOnTheDevice) {
   EXPECT_NE(state.errors.front().find("deformation failed"), std::string::npos) << state.errors.front();
   EXPECT_EQ(counts->frames, 0);
   EXPECT_EQ(state.devices.active(), "fake");  // still usable
+}
+
+// A device with its own row integrator (CUDA's) computes the editor's coordinates too, so the whole pipeline runs on
+// it. The counting integrator wraps the CPU's: the result must equal an independent CPU precompute of the scene.
+TEST(EditorDevices, TheChosenDevicesIntegratorComputesTheCoordinates) {
+  auto integrations = std::make_shared<int>(0);
+  FrameDevice device = countingDevice("fake", std::make_shared<Counts>());
+  device.rowIntegrator = [integrations](const Cage& cage, const Eigen::MatrixXd& points,
+                                        const IntegrationOptions& options, const ProgressCallback& progress,
+                                        const CoordinateRowSink& sink) {
+    ++*integrations;
+    integrateSomiglianaCoordinates(cage, points, options, progress, sink);
+  };
+  AppState state;
+  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), device}, "fake", kCpuDevice, ""), "");
+  openDemoScene(state, 3);
+  ASSERT_EQ(state.views()[0].method, Method(methods::somigliana()));
+  EXPECT_EQ(*integrations, 1);  // the one Somigliana deformer of the one view
+  setPose(state, shearedPose(state));
+  ASSERT_TRUE(updateDeformation(state));
+
+  const std::unique_ptr<CageDeformer> cpu =
+      precompute(state.views()[0].method, state.scene->restCage, state.scene->meshVertices, interactiveOptions(), "test");
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), cpu->deform(state.pose, state.viewParams(0))), 1e-12);
 }
 
 TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
