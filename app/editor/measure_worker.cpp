@@ -162,8 +162,8 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
           out.views[v] = jacobianMeasurement(a, scene.meshTriangles, view.quantity);
         } else if (measuresDifference(view)) {  // both views deformed here, at their own parameters
           ViewMeasurement m;
-          m.values = pointDifference(view.deformer->deform(request.pose, view.params),
-                                     view.otherDeformer->deform(request.pose, view.otherParams),
+          m.points = view.deformer->deform(request.pose, view.params);
+          m.values = pointDifference(m.points, view.otherDeformer->deform(request.pose, view.otherParams),
                                      cageDiameter(scene.restCage.vertices));
           out.views[v] = std::move(m);
         } else if (sourceOf(view) == QuantitySource::Field && (view.fieldVertex >= 0 || view.fieldFace >= 0)) {

@@ -236,10 +236,11 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
   return "";
 }
 
-// The mesh vertex of view v under the mouse (selection.h's pickPoint on the view's deformed points, 8 pixels), -1
-// when none.
-int hoveredVertex(const AppState& state, std::size_t v, const ViewRect& rect, const Eigen::Vector2d& mouse) {
-  const Eigen::MatrixXd& points = displayedPoints(state, v);
+// The mesh vertex of view v under the mouse (selection.h's pickPoint, 8 pixels, on the points the measurement m was
+// taken at, else the view's displayed points), -1 when none.
+int hoveredVertex(const AppState& state, std::size_t v, const ViewMeasurement& m, const ViewRect& rect,
+                  const Eigen::Vector2d& mouse) {
+  const Eigen::MatrixXd& points = m.points.rows() ? m.points : displayedPoints(state, v);
   return pickPoint(projectPoints(state.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
 }
 
@@ -286,7 +287,7 @@ HoverReadout drawHoverValue(const AppState& state, const std::vector<ViewRect>& 
     if (!views[v].contains(mouse)) continue;
     const ViewMeasurement* m = state.quantities.measurement(v);
     if (!m) return {};
-    const int i = hoveredVertex(state, v, views[v], mouse);
+    const int i = hoveredVertex(state, v, *m, views[v], mouse);
     if (i < 0 || i >= m->values.size()) return {};
     const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
     char buf[200];

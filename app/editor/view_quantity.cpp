@@ -69,6 +69,7 @@ int quantityIndex(const std::string& id, const std::string& option) {
 ViewMeasurement jacobianMeasurement(const DeformationAnalysis& a, const Eigen::MatrixXi& triangles, int quantity) {
   ViewMeasurement out;
   out.detJ = a.points.detJ;
+  out.points = a.positions;
   out.values = quantityDescriptor(quantity).values(a, triangles);
   out.closed = a.volume.closed;
   out.volumeChange = a.volume.change();

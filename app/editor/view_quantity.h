@@ -47,6 +47,10 @@ int quantityIndex(const std::string& id, const std::string& option);
 struct ViewMeasurement {
   Eigen::VectorXd values;  // #V scalars of the shown quantity (NaN: undefined)
   Eigen::VectorXd detJ;    // #V for a J-based quantity (fold-overs get their own colour); empty otherwise
+  // #V by d: the view's deformed mesh at the measured pose, where the values are (hover picks on these, so the
+  // value under the cursor is the vertex's even when the CPU points are stale: the in-place OpenGL device); empty
+  // when the values belong to the displayed points anyway (a field of the rest mesh).
+  Eigen::MatrixXd points;
   // J-based quantities only: the numbers under the view's label.
   bool closed = false;       // the mesh is closed (else volumeChange is of the capped mesh)
   double volumeChange = 0;   // deformed / rest - 1

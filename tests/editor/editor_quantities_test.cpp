@@ -128,6 +128,8 @@ double expectDifference(const AppState& state, const ViewMeasurement* m, std::si
   const Eigen::MatrixXd b = state.deformers.at(views[w].method)->deform(state.pose, state.viewParams(w));
   const double diameter = restCageDiameter(*state.scene);
   EXPECT_EQ(m->values.size(), a.rows());
+  // where hover picks the vertex: the view's mesh at the measured pose, whatever the CPU points of the device
+  EXPECT_TRUE(m->points.rows() == a.rows() && (m->points - a).cwiseAbs().maxCoeff() < 1e-12);
   double largest = 0;
   for (Eigen::Index p = 0; p < a.rows() && p < m->values.size(); ++p) {
     const double expected = (a.row(p) - b.row(p)).norm() / diameter;

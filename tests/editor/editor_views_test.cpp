@@ -136,7 +136,11 @@ TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
       EXPECT_NEAR(m->detJ[p], det, 1e-9 * std::abs(det)) << "view " << v << " vertex " << p;
     }
     ASSERT_TRUE(m->closed);
-    const double deformed = signedVolume(deformer.deform(state.pose, withNu(state.params, nu)), scene.meshTriangles);
+    const Eigen::MatrixXd points = deformer.deform(state.pose, withNu(state.params, nu));
+    // hover picks on the measured points: the mesh at this nu (to the editor's float storage of C, docs/engine.md)
+    ASSERT_EQ(m->points.rows(), points.rows());
+    EXPECT_LT((m->points - points).cwiseAbs().maxCoeff(), 1e-5 * cageDiameter(scene.restCage.vertices));
+    const double deformed = signedVolume(points, scene.meshTriangles);
     EXPECT_NEAR(m->volumeChange, deformed / restVolume - 1, 1e-9) << "view " << v;
     changes[v] = m->volumeChange;
     std::printf("view %d (nu %.2f): volume change %+.4f %%\n", static_cast<int>(v), nu, 100 * m->volumeChange);
