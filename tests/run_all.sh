@@ -5,21 +5,26 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+# Each step's header carries the seconds since the start, so a CI log shows where its time went.
+phase() { echo "== $1 (at ${SECONDS} s)"; }
+
+phase "dependencies"
 bash third_party/install-deps.sh
 jobs=$(nproc)
 
-echo "== build (Release, -Werror)"
+phase "build (Release, -Werror)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOMICAGE_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
-echo "== tests"
+phase "tests"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
-echo "== core tests under ASan + UBSan"
+phase "core tests under ASan + UBSan"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON -DSOMICAGE_SANITIZE=ON \
   -DSOMICAGE_BUILD_EDITOR=OFF >/dev/null
 cmake --build build-sanitize -j"$jobs" --target somicage_core_tests
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L core
 
-echo "== fuzzing (40 s per target)"
+phase "fuzzing (40 s per target)"
 bash tests/fuzz/run_fuzzers.sh 40
+phase "done"
