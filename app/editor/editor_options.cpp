@@ -1,29 +1,15 @@
 #include "editor_options.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <limits>
 
 #include "cage_generation.h"
 #include "errors.h"
+#include "parse_number.h"
 #include "session.h"  // kMaxCompareViews
 #include "view_quantity.h"
 
 namespace somicage::editor {
-
-double parseNumber(const std::string& text, const std::string& option) {
-  if (text == "inf" || text == "+inf" || text == "infinity" || text == "+infinity")
-    return std::numeric_limits<double>::infinity();
-  if (text == "-inf" || text == "-infinity") return -std::numeric_limits<double>::infinity();
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE || std::isnan(x)) {
-    throw InputError(option, -1, "'" + text + "' is not a number", "write e.g. 0.3, -0.5 or inf");
-  }
-  return x;
-}
 
 EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   EditorOptions o;

@@ -43,9 +43,6 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args);
 // Throws InputError("--device") listing the offered devices when --device names none of them.
 void checkDeviceOption(const EditorOptions& options, const FrameDevices& devices);
 
-// "inf", "+inf", "infinity", "-inf" or a number; throws InputError(option, ...) otherwise.
-double parseNumber(const std::string& text, const std::string& option);
-
 std::string editorUsage();
 
 }  // namespace somicage::editor

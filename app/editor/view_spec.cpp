@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "editor_options.h"  // parseNumber
+#include "parse_number.h"
 #include "errors.h"
 
 namespace somicage::editor {
