@@ -199,7 +199,9 @@ std::string sessionToJson(const Session& s) {
     views.push(viewToJson(view));
   }
   root.set("compareMethods", std::move(methods));
-  root.set("views", std::move(views));
+  // "views" holds a compare view's 2 to kMaxCompareViews panes. The other lists an older session may hold (no
+  // method, one) stay in "compareMethods" alone, so they read back as they were instead of failing "views"' check.
+  if (s.compareViews.size() >= 2 && s.compareViews.size() <= kMaxCompareViews) root.set("views", std::move(views));
   JsonValue camera = JsonValue::object();
   camera.set("target", vec3(s.camera.target));
   camera.set("distance", JsonValue::number(s.camera.distance));

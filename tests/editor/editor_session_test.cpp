@@ -214,6 +214,24 @@ TEST(EditorSession, VersionTwoStillLoads) {
   EXPECT_EQ(b.pose, sample().pose);
 }
 
+// An older session's compare list that is not a compare view of 2 to 3 panes (none, one method) saves and reads
+// back as it was: the fuzz target found such a session saved with a "views" its own reader refused.
+TEST(EditorSession, AnOldSessionsShortCompareListSavesAndReadsBack) {
+  const std::string views = "\"views\"";
+  for (const char* methods : {"[]", "[\"green\"]"}) {
+    std::string old = replaced(sessionToJson(sample()), "\"version\": 3", "\"version\": 1");
+    ASSERT_NE(old.find(views), std::string::npos);
+    const std::size_t from = old.rfind(',', old.find(views)), to = old.find(']', old.find(views));
+    old.erase(from, to + 1 - from);  // no "views" (and its comma): the methods come from "compareMethods"
+    const std::size_t list = old.find("\"compareMethods\"");
+    old.replace(list, old.find(']', list) + 1 - list, std::string("\"compareMethods\": ") + methods);
+    const Session a = sessionFromJson(old, "old.json");
+    const Session b = sessionFromJson(sessionToJson(a), "saved.json");
+    EXPECT_EQ(b.compareViews.size(), std::string(methods) == "[]" ? 0u : 1u) << methods;
+    EXPECT_EQ(b.compareViews, a.compareViews) << methods;
+  }
+}
+
 // An inline cage gets the checks of a cage file: the repair of its orientation (a notice) and the validation (an
 // InputError naming the session and "restCage"), after the shape checks of its own.
 TEST(EditorSession, AMalformedInlineCageIsRefusedWithWhatIsWrong) {
