@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -45,9 +46,17 @@ const JsonValue* JsonValue::find(const std::string& key) const {
   return it == members_.end() ? nullptr : &it->second;
 }
 
-namespace {
+void appendJsonNumber(double x, std::string& out) {
+  if (!std::isfinite(x)) {
+    out += "null";
+    return;
+  }
+  char text[32];
+  const auto result = std::to_chars(text, text + sizeof text, x);  // shortest text that reads back exactly
+  out.append(text, result.ptr);
+}
 
-void escape(const std::string& s, std::string& out) {
+void appendJsonString(const std::string& s, std::string& out) {
   out += '"';
   for (char c : s) {
     switch (c) {
@@ -79,6 +88,8 @@ void escape(const std::string& s, std::string& out) {
   out += '"';
 }
 
+namespace {
+
 void dumpTo(const JsonValue& v, int indent, int depth, std::string& out) {
   const std::string pad = indent > 0 ? "\n" + std::string(static_cast<std::size_t>(indent * (depth + 1)), ' ') : "";
   const std::string padEnd = indent > 0 ? "\n" + std::string(static_cast<std::size_t>(indent * depth), ' ') : "";
@@ -89,14 +100,11 @@ void dumpTo(const JsonValue& v, int indent, int depth, std::string& out) {
     case JsonValue::Type::Bool:
       out += v.asBool() ? "true" : "false";
       break;
-    case JsonValue::Type::Number: {
-      char buf[40];
-      std::snprintf(buf, sizeof buf, "%.17g", std::isfinite(v.asNumber()) ? v.asNumber() : 0.0);
-      out += buf;
+    case JsonValue::Type::Number:
+      appendJsonNumber(v.asNumber(), out);
       break;
-    }
     case JsonValue::Type::String:
-      escape(v.asString(), out);
+      appendJsonString(v.asString(), out);
       break;
     case JsonValue::Type::Array: {
       // Arrays of numbers stay on one line (poses are rows of 2 or 3 numbers).
@@ -119,7 +127,7 @@ void dumpTo(const JsonValue& v, int indent, int depth, std::string& out) {
         if (!first) out += ',';
         first = false;
         out += pad;
-        escape(key, out);
+        appendJsonString(key, out);
         out += indent > 0 ? ": " : ":";
         dumpTo(value, indent, depth + 1, out);
       }

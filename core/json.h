@@ -1,4 +1,5 @@
-// A small JSON reader and writer for session files (objects, arrays, strings, numbers, booleans, null).
+// A small JSON reader and writer for session files (objects, arrays, strings, numbers, booleans, null), and the one
+// encoding of numbers and strings every JSON this project writes uses (sessions, the commands' --json).
 // Pure, no dependencies beyond the standard library and core/errors.h.
 #pragma once
 
@@ -37,7 +38,7 @@ class JsonValue {
   // nullptr when missing or when this is not an object.
   const JsonValue* find(const std::string& key) const;
 
-  // Writes indented JSON; numbers with %.17g (finite only; the caller encodes infinities).
+  // Writes indented JSON, numbers and strings as appendJsonNumber and appendJsonString do.
   std::string dump(int indent = 0) const;
 
  private:
@@ -48,6 +49,12 @@ class JsonValue {
   std::vector<JsonValue> items_;
   std::map<std::string, JsonValue> members_;
 };
+
+// A number as the shortest text that reads back to the same double; a non-finite one as null (JSON has no
+// infinities: a session writes nu's as "inf" / "-inf" itself, a command's --json prints null for an undefined value).
+void appendJsonNumber(double x, std::string& out);
+// A quoted string, with quotes, backslashes and control characters escaped.
+void appendJsonString(const std::string& text, std::string& out);
 
 // Parses JSON text; throws InputError(source, line, what, hint) on a syntax error.
 JsonValue parseJson(const std::string& text, const std::string& source);

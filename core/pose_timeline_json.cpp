@@ -144,32 +144,4 @@ Timeline timelineFromJson(const JsonValue& value, const std::string& source) {
   return timeline;
 }
 
-AnimationSource animationSourceFromSessionJson(const std::string& text, const std::string& source) {
-  const JsonValue root = parseJson(text, source);
-  if (!root.isObject()) fail(source, "a session file must hold a JSON object");
-  AnimationSource out;
-  const JsonValue& mesh = member(root, "mesh", source);
-  const JsonValue& cage = member(root, "cage", source);
-  if (!mesh.isString() || !cage.isString()) fail(source, "\"mesh\" and \"cage\" must be strings");
-  out.meshPath = mesh.asString();
-  out.cagePath = cage.asString();
-  const JsonValue& method = member(root, "method", source);
-  if (!method.isString()) fail(source, "\"method\" must be a string");
-  try {
-    out.method = parseMethod(method.asString());
-  } catch (const InputError& e) {
-    fail(source, e.problem());
-  }
-  const JsonValue& params = member(root, "params", source);
-  out.params.blend = numberOf(member(params, "blend", source), "\"blend\"", source);
-  out.params.nu = numberOf(member(params, "nu", source), "\"nu\"", source);
-  out.params.gamma = numberOf(member(params, "gamma", source), "\"gamma\"", source);
-  const JsonValue& traction = member(params, "tractionCorrection", source);
-  if (traction.type() != JsonValue::Type::Bool) fail(source, "\"tractionCorrection\" must be true or false");
-  out.params.tractionCorrection = traction.asBool();
-  if (const JsonValue* poses = root.find("poses")) out.poses = poseLibraryFromJson(*poses, source);
-  if (const JsonValue* timeline = root.find("timeline")) out.timeline = timelineFromJson(*timeline, source);
-  return out;
-}
-
 }  // namespace somicage

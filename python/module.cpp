@@ -10,6 +10,7 @@
 #include "python_cage.h"
 #include "python_deformer.h"
 #include "python_errors.h"
+#include "python_session.h"
 
 namespace py = pybind11;
 
@@ -179,6 +180,13 @@ PYBIND11_MODULE(_somicage, module) {
   module.def(
       "load_posed", [](const std::string& path, const PythonCage& cage) { return loadPosedVertices(path, cage.cage); },
       py::arg("path"), py::arg("cage"), "The vertices (V, d) of a posed cage file, checked against the rest cage.");
+  module.def("load_session", &loadSessionForPython, py::arg("path"),
+             "An editor session (File > Save session), read as the editor and `somicage animate` read it: a dict "
+             "with source, mesh and cage_path (resolved next to the session), cage (a Cage: the session's inline "
+             "cage or its cage file; None for a demo), method, params (Deformer.deform's keywords), pose (the "
+             "posed cage, or None at rest), poses (name: vertices), timeline (fps, first, last, loop, "
+             "interpolation, keys) and frames: one (posed cage, params) per whole frame of the timeline's range, "
+             "as the editor plays it (empty without keys).");
   module.def(
       "check",
       [](const py::handle& cage, const py::handle& faces) {

@@ -1,10 +1,10 @@
 // somicage animate: the timeline of a saved editor session, deformed frame by frame and written as a GLB
 // (morph-target animation) or an OBJ sequence, through the same core calls as `somicage deform`.
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 
 #include "animation_export.h"
+#include "cage_generation.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -12,7 +12,8 @@
 #include "errors.h"
 #include "file_util.h"
 #include "mesh_formats.h"
-#include "pose_timeline_json.h"
+#include "obj_io.h"
+#include "session.h"
 
 namespace somicage {
 
@@ -31,15 +32,6 @@ ArgParser animateOptions() {
                         "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
                        threadsOptionSpec(),
                    });
-}
-
-// A session names its files as the editor opened them; a relative name is looked up next to the session first.
-std::string resolveNextTo(const std::string& sessionPath, const std::string& path) {
-  const std::filesystem::path name(path);
-  if (name.is_absolute()) return path;
-  const std::filesystem::path beside = std::filesystem::path(sessionPath).parent_path() / name;
-  std::error_code error;
-  return std::filesystem::exists(beside, error) ? beside.string() : path;
 }
 
 void parseFrameRange(const std::string& text, int& first, int& last) {
@@ -81,7 +73,7 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   const std::string sessionPath = args.text("--session"), outPath = args.text("--out");
   const int threads = threadsOption(args);
 
-  const AnimationSource session = animationSourceFromSessionJson(readTextFile(sessionPath), sessionPath);
+  const Session session = loadSession(sessionPath);  // core/session.h: the editor's own reader
   if (session.meshPath.empty()) {
     throw InputError(sessionPath, -1, "the session animates a built-in demo, which has no mesh file",
                      "open a mesh and a cage in the editor, key it, and save the session again");
@@ -95,11 +87,25 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   const double fps = args.number("--fps", session.timeline.fps);
   if (!(fps > 0 && fps <= 1000)) throw InputError("--fps", -1, "must be in (0, 1000]", "write e.g. --fps 24");
 
-  const std::string cagePath = resolveNextTo(sessionPath, session.cagePath);
-  const std::string meshPath = resolveNextTo(sessionPath, session.meshPath);
-  const Cage cage = loadUsableCage(cagePath, printNotice);
+  const std::string meshPath = resolveSessionPath(sessionPath, session.meshPath);
   const MeshDocument document = loadMeshDocument(meshPath);
-  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, printNotice);
+  // The rest cage the editor shows: the session's inline cage, else its cage file, else (a version 1-2 session of a
+  // mesh opened alone) the cage the editor generates for the mesh, with `somicage cage`'s defaults.
+  std::string cageSource = resolveSessionPath(sessionPath, session.cagePath);
+  Cage cage;
+  if (session.restCage.numVertices() > 0) {
+    cageSource = sessionPath + " (restCage)";
+    cage = session.restCage;
+    for (const Notice& notice : session.cageNotices) printNotice(notice);
+  } else if (!session.cagePath.empty()) {
+    cage = loadUsableCage(cageSource, printNotice);
+  } else {
+    cageSource = meshPath;
+    const PolygonMesh& mesh = document.geometry;
+    cage = prepareCage(generateCage(mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces), {}, meshPath).cage,
+                       meshPath, printNotice);
+  }
+  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cageSource, printNotice);
   const PrecomputeOptions options = precomputeOptions(threads);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath) &&

@@ -29,7 +29,7 @@ ArgParser deformOptions() {
               {"--posed", "POSED", "the posed cage: the rest cage's vertices, moved, in the same order", true},
               {"--mesh", "IN", "the mesh or point set to deform (2D cage: its x, y; z is kept)", true},
               {"--out", "OUT", "where to write the result (.obj keeps all of IN; .ply, .glb: see the notes)", true},
-              {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"},
+              weldOptionSpec(),
               {"--recompute-normals", "",
                "recompute IN's normals from the deformed faces instead of carrying them by the gradient J"},
           },
@@ -92,8 +92,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   const FrameDevice& device = deviceOption(args, devices);
 
   // Inputs.
-  ReadOptions read;
-  read.weld = args.has("--weld");
+  const ReadOptions read = readOptions(args);
   const Cage cage = loadUsableCage(cagePath, printNotice, read);
   const Eigen::MatrixXd posed = posedVerticesFromMesh(loadAnyMesh(posedPath, read), cage, posedPath);
   const MeshDocument document = loadMeshDocument(meshPath, read);

@@ -41,6 +41,16 @@ int threadsOption(const ArgParser& args) {
   return threads;
 }
 
+OptionSpec weldOptionSpec() {
+  return {"--weld", "", "join vertices at equal positions when reading non-OBJ files (STL has none shared)"};
+}
+
+ReadOptions readOptions(const ArgParser& args) {
+  ReadOptions read;
+  read.weld = args.has("--weld");
+  return read;
+}
+
 PrecomputeOptions precomputeOptions(int threads) {
   PrecomputeOptions options;
   options.threads = threads;

@@ -48,6 +48,10 @@ void setThreadCount(int threads);
 OptionSpec threadsOptionSpec();
 // --threads (0 to 4096), set for everything that follows (setThreadCount).
 int threadsOption(const ArgParser& args);
+// --weld: every command reads its meshes and cages through loadAnyMesh (mesh_formats.h), OBJ or any other format;
+// STL and FBX have no shared vertices, which --weld joins back.
+OptionSpec weldOptionSpec();
+ReadOptions readOptions(const ArgParser& args);
 // The options of a precompute on that many threads (0: all cores), its integration's included.
 PrecomputeOptions precomputeOptions(int threads);
 

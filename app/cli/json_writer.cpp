@@ -1,8 +1,6 @@
 #include "cli/json_writer.h"
 
-#include <charconv>
-#include <cmath>
-#include <cstdio>
+#include "json.h"
 
 namespace somicage {
 
@@ -11,35 +9,9 @@ JsonObjectWriter::JsonObjectWriter(std::ostream& out) : out_(out) { out_ << "{";
 JsonObjectWriter::~JsonObjectWriter() { close(); }
 
 std::string JsonObjectWriter::quote(const std::string& text) {
-  std::string quoted = "\"";
-  for (const char c : text) {
-    switch (c) {
-      case '"':
-        quoted += "\\\"";
-        break;
-      case '\\':
-        quoted += "\\\\";
-        break;
-      case '\n':
-        quoted += "\\n";
-        break;
-      case '\r':
-        quoted += "\\r";
-        break;
-      case '\t':
-        quoted += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-          quoted += escaped;
-        } else {
-          quoted += c;
-        }
-    }
-  }
-  return quoted + "\"";
+  std::string quoted;
+  appendJsonString(text, quoted);
+  return quoted;
 }
 
 void JsonObjectWriter::key(const std::string& name) {
@@ -48,13 +20,9 @@ void JsonObjectWriter::key(const std::string& name) {
 }
 
 void JsonObjectWriter::writeNumber(double value) {
-  if (!std::isfinite(value)) {
-    out_ << "null";
-    return;
-  }
-  char text[32];
-  const auto result = std::to_chars(text, text + sizeof text, value);  // shortest text that reads back exactly
-  out_.write(text, result.ptr - text);
+  std::string text;
+  appendJsonNumber(value, text);
+  out_ << text;
 }
 
 void JsonObjectWriter::field(const std::string& name, double value) {

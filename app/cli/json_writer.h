@@ -1,4 +1,5 @@
-// A flat JSON object written field by field (machine-readable command output). Non-finite numbers become null.
+// A flat JSON object written field by field (machine-readable command output), with core's encoding of numbers and
+// strings (json.h: shortest exact text; a non-finite number is null).
 #pragma once
 
 #include <ostream>

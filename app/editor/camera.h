@@ -4,15 +4,9 @@
 
 #include <Eigen/Core>
 
-namespace somicage::editor {
+#include "camera_state.h"
 
-// What a session file stores about the camera.
-struct CameraState {
-  Eigen::Vector3d target = Eigen::Vector3d::Zero();
-  double distance = 5.0;  // eye to target
-  double yaw = 0.6;       // radians about +y, 0 = looking down -z
-  double pitch = 0.35;    // radians above the horizon, clamped to (-pi/2, pi/2)
-};
+namespace somicage::editor {
 
 class OrbitCamera {
  public:

@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -353,6 +354,112 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
   ASSERT_EQ(r.exitCode, 0) << r;
   const std::vector<Eigen::Vector3d> recomputed = objNormals(dir.file("seq2/tet_0002.obj"));
   EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
+}
+
+// Rows with 17 significant digits: the session holds exactly the numbers the posed files of `deform` hold.
+std::string exactRowsJson(const Eigen::MatrixXd& m) {
+  std::string out = "[";
+  char number[32];
+  for (Eigen::Index i = 0; i < m.rows(); ++i) {
+    out += i ? ", [" : "[";
+    for (Eigen::Index c = 0; c < m.cols(); ++c) {
+      std::snprintf(number, sizeof number, "%.17g", m(i, c));
+      out += (c ? ", " : "") + std::string(number);
+    }
+    out += "]";
+  }
+  return out + "]";
+}
+
+// `animate` plays what the editor shows (issue 23): a version-3 session read by the editor's reader (core/session.h),
+// its inline cage and every parameter included, gives at every frame `somicage deform` of that frame's pose with the
+// session's settings. Keys at frames 0 (rest) and 4 (a twist and a stretch), linear: frame 2 is their mean, which
+// this test computes itself. Before, `animate` had its own reader, which opened the empty cage path of an inline
+// cage ("unknown mesh format") and dropped "corotational".
+class AnimateSettings : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    rest = loadMesh(dataFile("cube_cage.obj")).vertices;
+    posed = rest;
+    const double turn = 0.5;
+    for (Eigen::Index i = 0; i < rest.rows(); ++i) {
+      const double a = turn * (rest(i, 2) + 1) / 2;  // the top turns about z, the bottom stays: a twist
+      posed(i, 0) = std::cos(a) * rest(i, 0) - std::sin(a) * rest(i, 1);
+      posed(i, 1) = std::sin(a) * rest(i, 0) + std::cos(a) * rest(i, 1);
+      posed(i, 2) = 1.3 * rest(i, 2);
+    }
+  }
+
+  // The session, with the cage inline ("cage": "") or as the cube's file.
+  std::string session(const std::string& method, const std::string& params, bool inlineCage) {
+    const PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));
+    Eigen::MatrixXd faces(static_cast<Eigen::Index>(cage.faces.size()), 3);
+    for (size_t f = 0; f < cage.faces.size(); ++f)
+      for (int c = 0; c < 3; ++c) faces(static_cast<Eigen::Index>(f), c) = cage.faces[f][static_cast<size_t>(c)];
+    std::string text = R"({"format": "somicage-session", "version": 3, "mesh": ")" + dataFile("pyramid_mesh.obj") +
+                       R"(", "cage": ")" + (inlineCage ? "" : dataFile("cube_cage.obj")) + "\", ";
+    if (inlineCage)
+      text += R"("restCage": {"vertices": )" + exactRowsJson(rest) + R"(, "faces": )" + exactRowsJson(faces) + "}, ";
+    text += R"("demoDim": 3, "pose": [], "method": ")" + method + R"(", "params": )" + params + R"(,
+      "compare": false, "compareMethods": [], "camera": {"target": [0, 0, 0], "distance": 5, "yaw": 0, "pitch": 0},
+      "poses": [{"name": "rest", "vertices": )" +
+            exactRowsJson(rest) + R"(}, {"name": "twist", "vertices": )" + exactRowsJson(posed) + R"(}],
+      "timeline": {"fps": 24, "first": 0, "last": 4, "loop": false, "interpolation": "linear",
+                   "keys": [{"frame": 0, "pose": "rest"}, {"frame": 4, "pose": "twist"}]}})";
+    const std::string path = dir.file(method + ".json");
+    std::ofstream(path) << text;
+    return path;
+  }
+
+  // `somicage deform` of the pyramid in the cube cage moved to `pose`, with these options.
+  Eigen::MatrixXd deform(const Eigen::MatrixXd& pose, const std::vector<std::string>& options) {
+    const std::string posedFile = dir.file("posed.obj"), out = dir.file("deformed.obj");
+    saveObj(posedFile, pose, loadMesh(dataFile("cube_cage.obj")));
+    std::vector<std::string> args = cubeDeformArgs(out, options);
+    args[4] = posedFile;
+    const RunResult r = runSomicage(args);
+    EXPECT_EQ(r.exitCode, 0) << r;
+    return loadMesh(out).vertices;
+  }
+
+  // Frames 0, 2 and 4 of `animate` equal `deform` of rest, the mean pose and the twist, to 1e-9 of the cage's
+  // diameter; and the settings matter: without them the twist deforms 1e-3 diameters or more elsewhere.
+  void expectFramesEqualDeform(const std::string& sessionPath, const std::vector<std::string>& options,
+                               const std::vector<std::string>& defaults) {
+    const std::string out = dir.file("seq" + std::to_string(runs++));
+    const RunResult r = runSomicage({"animate", "--session", sessionPath, "--out", out + "/"});
+    ASSERT_EQ(r.exitCode, 0) << r;
+    const double diameter = std::sqrt(12.0);  // the cube [-1, 1]^3
+    const Eigen::MatrixXd mean = 0.5 * rest + 0.5 * posed;
+    const std::pair<int, const Eigen::MatrixXd*> frames[] = {{0, &rest}, {2, &mean}, {4, &posed}};
+    for (const auto& [frame, pose] : frames) {
+      SCOPED_TRACE("frame " + std::to_string(frame));
+      const Eigen::MatrixXd animated = loadMesh(out + "/pyramid_mesh_000" + std::to_string(frame) + ".obj").vertices;
+      const Eigen::MatrixXd expected = deform(*pose, options);
+      ASSERT_EQ(animated.rows(), expected.rows());
+      EXPECT_LE((animated - expected).cwiseAbs().maxCoeff(), 1e-9 * diameter);
+    }
+    const Eigen::MatrixXd last = loadMesh(out + "/pyramid_mesh_0004.obj").vertices;
+    EXPECT_GE((last - deform(posed, defaults)).cwiseAbs().maxCoeff(), 1e-3 * diameter) << "the settings are read";
+  }
+
+  ScratchDir dir;
+  Eigen::MatrixXd rest, posed;
+  int runs = 0;
+};
+
+TEST_F(AnimateSettings, InlineCageAndBemCorotational) {
+  const std::string path =
+      session("bem", R"({"blend": 0, "nu": 0.3, "gamma": 0, "tractionCorrection": true, "corotational": true})", true);
+  expectFramesEqualDeform(path, {"--method", "bem", "--nu", "0.3", "--corotational"},
+                          {"--method", "bem", "--nu", "0.3"});
+}
+
+TEST_F(AnimateSettings, SomiglianaLocalWithGamma) {
+  const std::string path =
+      session("somigliana",
+              R"({"blend": 1, "nu": 0.2, "gamma": 0.5, "tractionCorrection": true, "corotational": false})", false);
+  expectFramesEqualDeform(path, {"--variant", "local", "--nu", "0.2", "--gamma", "0.5"}, {"--nu", "0.2"});
 }
 
 TEST(DeformLossless, TexturedObjAtRestKeepsEveryRecord) {

@@ -1,4 +1,4 @@
-// libFuzzer target: the editor's session reader (app/editor/session.h, json.h) on arbitrary text.
+// libFuzzer target: the session reader (core/session.h, json.h: the editor's, animate's and Python's) on any text.
 // Contract: no crash and no sanitizer report; bad input throws InputError; an accepted session has finite numbers
 // where the editor needs them, an inline cage is well-formed, and saving it and reading it back gives the same session.
 #include <cmath>
@@ -13,7 +13,7 @@
 
 namespace {
 
-using somicage::editor::Session;
+using somicage::Session;
 
 void require(bool condition, const char* what) {
   if (condition) return;
@@ -26,8 +26,8 @@ bool sameSession(const Session& a, const Session& b) {
   return a.meshPath == b.meshPath && a.cagePath == b.cagePath && a.demoDim == b.demoDim &&
          a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose && a.method == b.method &&
          a.params.blend == b.params.blend && a.params.nu == b.params.nu && a.params.gamma == b.params.gamma &&
-         a.params.tractionCorrection == b.params.tractionCorrection && a.compare == b.compare &&
-         a.compareViews == b.compareViews && a.camera.target == b.camera.target &&
+         a.params.tractionCorrection == b.params.tractionCorrection && a.params.corotational == b.params.corotational &&
+         a.compare == b.compare && a.compareViews == b.compareViews && a.camera.target == b.camera.target &&
          a.camera.distance == b.camera.distance && a.camera.yaw == b.camera.yaw && a.camera.pitch == b.camera.pitch &&
          a.restCage.vertices.rows() == b.restCage.vertices.rows() &&
          a.restCage.vertices.cols() == b.restCage.vertices.cols() && a.restCage.vertices == b.restCage.vertices &&
@@ -49,7 +49,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
 
   Session session;
   try {
-    session = somicage::editor::sessionFromJson(text, "fuzz.session");
+    session = somicage::sessionFromJson(text, "fuzz.session");
   } catch (const somicage::InputError&) {
     return 0;
   }
@@ -64,7 +64,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
               std::isfinite(session.camera.pitch) && std::isfinite(session.camera.distance),
           "camera numbers are finite");
 
-  const Session reread = somicage::editor::sessionFromJson(somicage::editor::sessionToJson(session), "saved.session");
+  const Session reread = somicage::sessionFromJson(somicage::sessionToJson(session), "saved.session");
   require(sameSession(session, reread), "a saved session reads back unchanged");
   return 0;
 }

@@ -7,7 +7,7 @@
 
 #include "errors.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 double parseNumber(const std::string& text, const std::string& option) {
   if (text == "inf" || text == "+inf" || text == "infinity" || text == "+infinity")
@@ -22,4 +22,4 @@ double parseNumber(const std::string& text, const std::string& option) {
   return x;
 }
 
-}  // namespace somicage::editor
+}  // namespace somicage

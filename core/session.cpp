@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 
 #include "errors.h"
@@ -9,7 +10,7 @@
 #include "json.h"
 #include "pose_timeline_json.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 std::vector<Method> defaultCompareMethods() {
   const std::vector<Method>& all = allMethods();
@@ -224,10 +225,14 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   Session s;
   s.meshPath = r.string(root, "mesh");
   s.cagePath = r.string(root, "cage");
-  const double demoDim = r.number(root, "demoDim");  // compared before the cast: a huge value does not fit an int
-  if (demoDim != 2 && demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
-  s.demoDim = static_cast<int>(demoDim);
-  s.pose = r.rows(r.get(root, "pose"), "\"pose\"");
+  // What only the editor's view needs (the demo's dimension, the pose on screen, the compare view, the camera) may
+  // be left out of a session written by hand for `somicage animate`: the defaults of a new session then.
+  if (root.find("demoDim")) {
+    const double demoDim = r.number(root, "demoDim");  // compared before the cast: a huge value does not fit an int
+    if (demoDim != 2 && demoDim != 3) r.fail("\"demoDim\" must be 2 or 3");
+    s.demoDim = static_cast<int>(demoDim);
+  }
+  if (const JsonValue* pose = root.find("pose")) s.pose = r.rows(*pose, "\"pose\"");
   if (version >= 3) {
     if (const JsonValue* cage = root.find("restCage")) s.restCage = r.cage(*cage, s, s.cageNotices);
   }
@@ -249,26 +254,29 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   } catch (const InputError& e) {
     r.fail(std::string("bad parameters: ") + e.what());
   }
-  s.compare = r.boolean(root, "compare");
-  s.compareViews.clear();
+  if (root.find("compare")) s.compare = r.boolean(root, "compare");
   if (const JsonValue* views = root.find("views")) {
+    s.compareViews.clear();
     if (!views->isArray() || views->items().size() < 2 || views->items().size() > kMaxCompareViews)
       r.fail("\"views\" must be an array of 2 to " + std::to_string(kMaxCompareViews) + " views");
     for (std::size_t i = 0; i < views->items().size(); ++i) s.compareViews.push_back(r.view(views->items()[i], i));
-  } else {  // before "views": the methods, with the shared parameters
-    const JsonValue& methods = r.get(root, "compareMethods");
+  } else if (const JsonValue* list = root.find("compareMethods")) {  // before "views": the shared parameters
+    const JsonValue& methods = *list;
     if (!methods.isArray()) r.fail("\"compareMethods\" must be an array of method names");
+    s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
       s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}});
     }
   }
-  const JsonValue& camera = r.get(root, "camera");
-  s.camera.target = r.vec3(camera, "target");
-  s.camera.distance = r.number(camera, "distance");
-  s.camera.yaw = r.number(camera, "yaw");
-  s.camera.pitch = r.number(camera, "pitch");
-  if (!(s.camera.distance > 0) || !std::isfinite(s.camera.distance)) r.fail("camera \"distance\" must be positive");
+  if (const JsonValue* cameraField = root.find("camera")) {
+    const JsonValue& camera = *cameraField;
+    s.camera.target = r.vec3(camera, "target");
+    s.camera.distance = r.number(camera, "distance");
+    s.camera.yaw = r.number(camera, "yaw");
+    s.camera.pitch = r.number(camera, "pitch");
+    if (!(s.camera.distance > 0) || !std::isfinite(s.camera.distance)) r.fail("camera \"distance\" must be positive");
+  }
   if (const JsonValue* poses = root.find("poses")) s.poses = poseLibraryFromJson(*poses, source);
   if (const JsonValue* timeline = root.find("timeline")) s.timeline = timelineFromJson(*timeline, source);
   return s;
@@ -278,4 +286,12 @@ void saveSession(const std::string& path, const Session& session) { writeFileAto
 
 Session loadSession(const std::string& path) { return sessionFromJson(readTextFile(path), path); }
 
-}  // namespace somicage::editor
+std::string resolveSessionPath(const std::string& sessionPath, const std::string& name) {
+  const std::filesystem::path file(name);
+  if (name.empty() || file.is_absolute()) return name;
+  const std::filesystem::path beside = std::filesystem::path(sessionPath).parent_path() / file;
+  std::error_code error;
+  return std::filesystem::exists(beside, error) ? beside.string() : name;
+}
+
+}  // namespace somicage

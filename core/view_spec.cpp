@@ -2,10 +2,10 @@
 
 #include <cmath>
 
-#include "parse_number.h"
 #include "errors.h"
+#include "parse_number.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 namespace {
 
@@ -128,4 +128,4 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
   return view;
 }
 
-}  // namespace somicage::editor
+}  // namespace somicage

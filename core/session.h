@@ -1,5 +1,6 @@
-// A saved editing session (JSON): which files, the cage pose, the method and its parameters, the view.
-// Pure, no GL.
+// A saved editing session (JSON): which files, the rest cage when no file holds it, the cage pose, the method and its
+// parameters, the compare views, the camera, the poses and the timeline. The one reader and writer of session files:
+// the editor, `somicage animate`, Python's somicage.load_session and the session fuzz target all use it.
 #pragma once
 
 #include <Eigen/Core>
@@ -7,13 +8,13 @@
 #include <vector>
 
 #include "cage.h"
-#include "camera.h"
+#include "camera_state.h"
 #include "deformer.h"
 #include "engine.h"
 #include "pose_timeline.h"
 #include "view_spec.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 // Side-by-side views the layout offers, and the ones a new session compares: the registry's first few methods.
 constexpr std::size_t kMaxCompareViews = 3;
@@ -43,7 +44,9 @@ struct Session {
 // "local", "tractionCorrection": false}, ...], each parameter only when the view has its own). Versions 1 and 2
 // load with an empty library and timeline and no inline cage; a session without "views" compares the methods of
 // "compareMethods" (still written, for older builds) with the shared parameters.
-// nu = +-infinity is written as "inf" / "-inf"; every number with %.17g, so doubles read back bitwise.
+// nu = +-infinity is written as "inf" / "-inf"; every number as the shortest text that reads back to the same double
+// (json.h). What only the editor's view needs ("demoDim", "pose", "compare", "compareMethods", "camera") may be
+// absent: a new session's values then.
 std::string sessionToJson(const Session& session);
 // Throws InputError naming `source` on a syntax error, a missing or mistyped field, an unknown method, or an inline
 // cage that is malformed or that a cage file with the same content would be refused for (prepareCage, engine.h).
@@ -52,4 +55,8 @@ Session sessionFromJson(const std::string& text, const std::string& source);
 void saveSession(const std::string& path, const Session& session);  // atomic
 Session loadSession(const std::string& path);
 
-}  // namespace somicage::editor
+// A file the session at sessionPath names: a relative name is looked up next to the session first, then as given
+// (the editor saves names as it opened them, relative to its working folder).
+std::string resolveSessionPath(const std::string& sessionPath, const std::string& name);
+
+}  // namespace somicage

@@ -10,7 +10,7 @@
 
 #include "deformer.h"
 
-namespace somicage::editor {
+namespace somicage {
 
 enum class Variant { Global, Local };  // blend 0 / 1 (Fig. 4)
 
@@ -44,4 +44,4 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 const char* variantName(Variant variant);  // "global", "local"
 std::optional<Variant> findVariant(const std::string& name);
 
-}  // namespace somicage::editor
+}  // namespace somicage
