@@ -24,7 +24,7 @@ Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices
 }
 
 Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read) {
-  return prepareCage(cageFromMesh(loadAnyMesh(path, read), path), path, notices);
+  return prepareCage(loadCage(path, read), path, notices);
 }
 
 Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,

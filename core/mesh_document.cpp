@@ -38,14 +38,16 @@ int cornerIndex(std::string_view corner, int part, int count, const std::string&
   return static_cast<int>(resolved);
 }
 
+// The numbers of a `vn` or `vt` record, read as a `v` record's (parseObjNumber).
 Eigen::RowVector3d numbersOf(const std::vector<std::string_view>& tokens, size_t count, const std::string& source,
                              long line) {
   Eigen::RowVector3d value = Eigen::RowVector3d::Zero();
   for (size_t k = 1; k <= count && k < tokens.size(); ++k) {
-    const auto result = std::from_chars(tokens[k].data(), tokens[k].data() + tokens[k].size(), value[k - 1]);
-    if (result.ec != std::errc() || !std::isfinite(value[k - 1])) {
-      throw InputError(source, line, "'" + std::string(tokens[k]) + "' is not a finite number",
-                       "write `vt u v` and `vn x y z` with decimal numbers");
+    if (parseObjNumber(tokens[k], value[k - 1]) != ObjNumberStatus::Ok) {
+      throw InputError(
+          source, line,
+          "`" + std::string(tokens[0]) + "` value '" + std::string(tokens[k]) + "' is not a finite decimal number",
+          "write `vt u v` and `vn x y z` with decimal numbers");
     }
   }
   return value;

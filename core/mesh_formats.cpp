@@ -289,16 +289,31 @@ std::string readableExtensions() { return extensionList(false); }
 std::string writableExtensions() { return extensionList(true); }
 
 MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& options) {
+  std::error_code error;  // a folder has no format: say what it is (every command names it so)
+  if (std::filesystem::is_directory(path, error))
+    throw InputError(path, -1, "is a folder, not a file",
+                     "give the path of a mesh file (" + readableExtensions() + ")");
   const FormatDescriptor* format = findFormat(path);
   if (!format) {
-    throw InputError(path, -1, "unknown mesh format '." + extensionOf(path) + "'",
-                     "give a file ending in one of " + readableExtensions());
+    const std::string extension = extensionOf(path);
+    throw InputError(
+        path, -1,
+        extension.empty() ? "has no extension to tell its mesh format" : "unknown mesh format '." + extension + "'",
+        "give a file ending in one of " + readableExtensions());
   }
   return format->read(path, options);
 }
 
 PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options) {
   return loadMeshDocument(path, options).geometry;
+}
+
+Cage loadCage(const std::string& path, const ReadOptions& options) {
+  return cageFromMesh(loadAnyMesh(path, options), path);
+}
+
+Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage, const ReadOptions& options) {
+  return posedVerticesFromMesh(loadAnyMesh(path, options), restCage, path);
 }
 
 std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,

@@ -28,8 +28,13 @@ struct ReadOptions {
 // Throws InputError for an unknown extension (naming the known ones) and for anything the reader rejects.
 MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& options = {});
 
-// The geometry of loadMeshDocument: for meshes and cages read from any supported format.
+// The geometry of loadMeshDocument: the one mesh loader of every command, the editor and Python, for meshes and
+// cages of any supported format (an OBJ gives what loadMesh gives, obj_io.h).
 PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options = {});
+// loadAnyMesh + cageFromMesh (obj_io.h): the cage as written, not repaired (engine.h's loadUsableCage repairs).
+Cage loadCage(const std::string& path, const ReadOptions& options = {});
+// loadAnyMesh + posedVerticesFromMesh: a posed cage file's vertices, checked against the rest cage.
+Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage, const ReadOptions& options = {});
 
 // Writes document with the given positions (#V by 2 or 3) in the format of path's extension, atomically.
 // normals: the deformed `vn` normals (writeObjDocument; empty: recomputed). Returns one sentence per kind of data the

@@ -1,9 +1,7 @@
 #include "mesh_material.h"
 
 #include <algorithm>
-#include <charconv>
 #include <filesystem>
-#include <sstream>
 #include <string_view>
 
 #include "errors.h"
@@ -19,8 +17,7 @@ namespace fs = std::filesystem;
 
 double unitNumber(std::string_view token, const std::string& source, long line, const char* what) {
   double value = 0.0;
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  if (result.ec != std::errc() || result.ptr != token.data() + token.size() || !(value >= 0.0 && value <= 1.0)) {
+  if (parseObjNumber(token, value) != ObjNumberStatus::Ok || !(value >= 0.0 && value <= 1.0)) {
     throw InputError(source, line, "'" + std::string(token) + "' is not a " + what + " in [0, 1]",
                      "write e.g. `Kd 0.8 0.5 0.4` and `d 1` with decimal numbers");
   }
@@ -36,8 +33,7 @@ int optionArguments(std::string_view option) {
 
 bool isNumber(std::string_view token) {
   double value = 0.0;
-  const auto result = std::from_chars(token.data(), token.data() + token.size(), value);
-  return result.ec == std::errc() && result.ptr == token.data() + token.size();
+  return parseObjNumber(token, value) != ObjNumberStatus::NotANumber;
 }
 
 // The file of a `map_Kd [options] FILE` line (FILE may contain blanks), resolved next to the .mtl.
@@ -60,13 +56,11 @@ std::string textureFile(const std::vector<std::string_view>& tokens, const std::
 
 std::vector<MeshMaterial> parseMtl(const std::string& text, const std::string& source) {
   std::vector<MeshMaterial> materials;
-  std::istringstream lines(text);
-  std::string raw;
-  long lineNumber = 0;
+  LineCursor lines(text);  // LF, CRLF or a lone CR, as OBJ files
+  std::string_view raw;
   bool opacityFromD = false;
-  while (std::getline(lines, raw)) {
-    ++lineNumber;
-    if (!raw.empty() && raw.back() == '\r') raw.pop_back();
+  while (lines.next(raw)) {
+    const long lineNumber = lines.lineNumber();
     const std::vector<std::string_view> tokens = splitTokens(raw);
     if (tokens.empty() || tokens[0][0] == '#') continue;
     const std::string_view keyword = tokens[0];

@@ -76,58 +76,12 @@ std::string readTextFile(const std::string& path) {
   return text;
 }
 
-// Splits text into lines: LF, CRLF or a lone CR ends a line.
-class LineCursor {
- public:
-  explicit LineCursor(std::string_view text) : text_(text) {}
-
-  bool next(std::string_view& line) {
-    if (pos_ >= text_.size()) return false;
-    const size_t end = text_.find_first_of("\r\n", pos_);
-    ++lineNumber_;
-    if (end == std::string_view::npos) {
-      line = text_.substr(pos_);
-      pos_ = text_.size();
-      return true;
-    }
-    line = text_.substr(pos_, end - pos_);
-    pos_ = end + 1;
-    if (text_[end] == '\r' && pos_ < text_.size() && text_[pos_] == '\n') ++pos_;
-    return true;
-  }
-
-  long lineNumber() const { return lineNumber_; }
-
- private:
-  std::string_view text_;
-  size_t pos_ = 0;
-  long lineNumber_ = 0;
-};
-
 // The 1-based line that holds text[offset].
 long lineAt(std::string_view text, size_t offset) {
   LineCursor cursor(text.substr(0, offset + 1));
   std::string_view line;
   while (cursor.next(line)) continue;
   return cursor.lineNumber();
-}
-
-enum class NumberStatus { Ok, NotANumber, OutOfRange, NotFinite };
-
-// Correctly rounded and locale-independent (tinyobjloader's parser is neither, and reads "nan" as 0: why the file
-// is parsed here, in one pass, rather than by it).
-NumberStatus parseCoordinate(std::string_view token, double& value) {
-  if (!token.empty() && token[0] == '+') {
-    token.remove_prefix(1);
-    if (!token.empty() && token[0] == '-') return NumberStatus::NotANumber;
-  }
-  const char* end = token.data() + token.size();
-  const auto result = std::from_chars(token.data(), end, value);
-  if (result.ptr != end || token.empty()) return NumberStatus::NotANumber;
-  if (result.ec == std::errc::result_out_of_range) return NumberStatus::OutOfRange;
-  if (result.ec != std::errc()) return NumberStatus::NotANumber;
-  if (!std::isfinite(value)) return NumberStatus::NotFinite;
-  return NumberStatus::Ok;
 }
 
 // The vertex part of a face or line token (i, i/t, i//n, i/t/n): a nonzero integer, negative = relative.
@@ -140,7 +94,7 @@ bool parseVertexIndex(std::string_view token, long long& index) {
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
-// What the one pass over the file collects: vertex positions (see parseCoordinate), faces and `l` polylines
+// What the one pass over the file collects: vertex positions (see parseObjNumber), faces and `l` polylines
 // (tinyobjloader 2.0.0rc10 drops line groups before a `g` and repeats them after a `usemtl`), each element with
 // its line.
 struct ObjScan {
@@ -172,15 +126,15 @@ void scanVertex(const std::string& source, long lineNumber, std::string_view res
     if (k < count) {
       static const char* const kAxis[3] = {"x", "y", "z"};
       const std::string what = element + ": " + kAxis[k] + " = " + quoted(tokens[k]);
-      switch (parseCoordinate(tokens[k], value)) {
-        case NumberStatus::Ok:
+      switch (parseObjNumber(tokens[k], value)) {
+        case ObjNumberStatus::Ok:
           break;
-        case NumberStatus::NotANumber:
+        case ObjNumberStatus::NotANumber:
           throw InputError(source, lineNumber, what + " is not a number", "write coordinates as decimal numbers");
-        case NumberStatus::OutOfRange:
+        case ObjNumberStatus::OutOfRange:
           throw InputError(source, lineNumber, what + " is outside the range of a double",
                            "scale the model to a reasonable size");
-        case NumberStatus::NotFinite:
+        case ObjNumberStatus::NotFinite:
           throw InputError(source, lineNumber, what + " is not finite",
                            "every coordinate must be a finite number: fix or remove this vertex");
       }
@@ -519,6 +473,22 @@ void appendIndexList(std::string& out, char record, const std::vector<int>& indi
 // Public functions
 // ---------------------------------------------------------------------------------------------------------------
 
+// Correctly rounded and locale-independent (tinyobjloader's parser is neither, and reads "nan" as 0: why the file
+// is parsed here, in one pass, rather than by it).
+ObjNumberStatus parseObjNumber(std::string_view token, double& value) {
+  if (!token.empty() && token[0] == '+') {
+    token.remove_prefix(1);
+    if (!token.empty() && token[0] == '-') return ObjNumberStatus::NotANumber;
+  }
+  const char* end = token.data() + token.size();
+  const auto result = std::from_chars(token.data(), end, value);
+  if (result.ptr != end || token.empty()) return ObjNumberStatus::NotANumber;
+  if (result.ec == std::errc::result_out_of_range) return ObjNumberStatus::OutOfRange;
+  if (result.ec != std::errc()) return ObjNumberStatus::NotANumber;
+  if (!std::isfinite(value)) return ObjNumberStatus::NotFinite;
+  return ObjNumberStatus::Ok;
+}
+
 PolygonMesh parseObj(const std::string& rawText, const std::string& source, const ObjLineVisitor& visitor) {
   std::string_view text(rawText);
   if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte order mark
@@ -624,12 +594,6 @@ Cage cageFromMesh(const PolygonMesh& mesh, const std::string& source) {
   cage.faces.resize(vertexCount, 2);
   for (int k = 0; k < vertexCount; ++k) cage.faces.row(k) << loop[k], loop[(k + 1) % vertexCount];
   return cage;
-}
-
-Cage loadCage(const std::string& path) { return cageFromMesh(loadMesh(path), path); }
-
-Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage) {
-  return posedVerticesFromMesh(loadMesh(path), restCage, path);
 }
 
 void requirePosedVertexCount(const Cage& restCage, long vertices, const std::string& source) {

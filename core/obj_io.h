@@ -37,6 +37,36 @@ struct PolygonMesh {
 
 // OBJ separates tokens by spaces and tabs; every reader of OBJ lines splits them with these.
 bool isBlank(char c);
+
+// Splits text into lines: LF, CRLF or a lone CR ends a line (OBJ and MTL files come from every platform).
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+
+  bool next(std::string_view& line) {
+    if (pos_ >= text_.size()) return false;
+    const size_t end = text_.find_first_of("\r\n", pos_);
+    ++lineNumber_;
+    if (end == std::string_view::npos) {
+      line = text_.substr(pos_);
+      pos_ = text_.size();
+      return true;
+    }
+    line = text_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    if (text_[end] == '\r' && pos_ < text_.size() && text_[pos_] == '\n') ++pos_;
+    return true;
+  }
+
+  long lineNumber() const { return lineNumber_; }
+
+ private:
+  std::string_view text_;
+  size_t pos_ = 0;
+  long lineNumber_ = 0;
+};
+
+// The blank-separated tokens of a line.
 std::vector<std::string_view> splitTokens(std::string_view line);
 // The record keyword of a line without leading blanks, as the parser reads it: its first token when a blank follows
 // ("v", "vn", "usemtl"), else empty.
@@ -48,10 +78,16 @@ std::string_view objKeyword(std::string_view line);
 using ObjLineVisitor =
     std::function<void(long lineNumber, std::string_view rawLine, std::string_view line, std::string_view keyword)>;
 
+// The one reader of an OBJ number (`v`, `vn` and `vt` records alike): the whole token (an optional '+' or '-', no
+// trailing text: "1.5x" is NotANumber), correctly rounded, locale-independent, and finite.
+enum class ObjNumberStatus { Ok, NotANumber, OutOfRange, NotFinite };
+ObjNumberStatus parseObjNumber(std::string_view token, double& value);
+
 // Parses OBJ text. source names the text in error messages (normally the file path).
 PolygonMesh parseObj(const std::string& text, const std::string& source, const ObjLineVisitor& visitor = {});
 
-// Reads any OBJ file (mesh, polygon soup or point set).
+// Reads any OBJ file (mesh, polygon soup or point set). OBJ only: the front ends read every format through
+// mesh_formats.h (loadAnyMesh, loadCage, loadPosedVertices), which parses OBJ with the same parser.
 PolygonMesh loadMesh(const std::string& path);
 
 // Triangulates polygons (#F polygons -> #T by 3), keeping the winding of each polygon: triangles stay as they
@@ -70,15 +106,11 @@ Eigen::MatrixXi triangulatePolygons(const Eigen::MatrixXd& vertices, const std::
 //   (cage_validation.h) reports a cage that is not closed, not manifold or inside out.
 Cage cageFromMesh(const PolygonMesh& mesh, const std::string& source);
 
-// loadMesh + cageFromMesh.
-Cage loadCage(const std::string& path);
-
-// The vertices of a posed cage (#V by d, d = restCage.dim(); a 2D cage takes x, y). The file must have the
-// rest cage's vertex count, in the same order; its faces are not compared (a pose may list them in another order).
-Eigen::MatrixXd loadPosedVertices(const std::string& path, const Cage& restCage);
 // Throws InputError naming source unless a pose has the rest cage's vertex count.
 void requirePosedVertexCount(const Cage& restCage, long vertices, const std::string& source);
-// The same from a parsed mesh; source names it in error messages.
+// The vertices of a posed cage (#V by d, d = restCage.dim(); a 2D cage takes x, y). The mesh must have the
+// rest cage's vertex count, in the same order; its faces are not compared (a pose may list them in another order).
+// source names it in error messages.
 Eigen::MatrixXd posedVerticesFromMesh(const PolygonMesh& mesh, const Cage& restCage, const std::string& source);
 
 // The topology to write a cage with saveObj: triangles (3D) or one closed `l` loop (2D). Vertices are copied.

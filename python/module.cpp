@@ -5,8 +5,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "mesh_formats.h"
 #include "numpy_arrays.h"
-#include "obj_io.h"
 #include "python_cage.h"
 #include "python_deformer.h"
 #include "python_errors.h"
@@ -55,8 +55,12 @@ void defineCage(py::module_& module) {
            "vertices (V, 3) with triangles faces (F, 3), counter-clockwise seen from outside; or a 2D polygon: "
            "vertices (V, 2) with edges (F, 2), or faces=None for a counter-clockwise vertex loop.")
       .def_static(
-          "from_obj", [](const std::string& path) { return makeUsableCage(loadCage(path), path); }, py::arg("path"),
-          "A cage from an OBJ file: a closed triangle (or polygon) mesh, or a 2D polygon when every z is 0.")
+          "from_obj",
+          [](const std::string& path, bool weld) { return makeUsableCage(loadCage(path, ReadOptions{weld}), path); },
+          py::arg("path"), py::kw_only(), py::arg("weld") = false,
+          "A cage from a mesh file of any format `somicage deform` reads (OBJ, PLY, OFF, STL, glTF/GLB, FBX): a "
+          "closed triangle (or polygon) mesh, or a 2D polygon when every z is 0. weld joins vertices at equal "
+          "positions (STL and FBX have none shared).")
       .def_property_readonly(
           "vertices", [](const PythonCage& cage) -> const Eigen::MatrixXd& { return cage.cage.vertices; },
           "(V, d) float64, read-only view (no copy)")
@@ -162,11 +166,13 @@ PYBIND11_MODULE(_somicage, module) {
       "keyword arguments of Deformer.deform it reads; it ignores the others).");
   module.def(
       "load_mesh",
-      [](const std::string& path) {
-        PolygonMesh mesh = loadMesh(path);
+      [](const std::string& path, bool weld) {
+        PolygonMesh mesh = loadAnyMesh(path, ReadOptions{weld});
         return py::make_tuple(std::move(mesh.vertices), std::move(mesh.faces));
       },
-      py::arg("path"), "(vertices (V, 3) float64, faces: list of 0-based index lists) of any OBJ file.");
+      py::arg("path"), py::kw_only(), py::arg("weld") = false,
+      "(vertices (V, 3) float64, faces: list of 0-based index lists) of a mesh file of any format `somicage "
+      "deform` reads; weld joins vertices at equal positions.");
   module.def(
       "save_obj",
       [](const std::string& path, const py::handle& vertices, const std::vector<std::vector<int>>& faces) {
@@ -178,8 +184,12 @@ PYBIND11_MODULE(_somicage, module) {
       "Writes vertices (V, 3) or (V, 2) and faces (0-based index lists) with 17 significant digits, atomically, "
       "as `somicage deform` writes its output.");
   module.def(
-      "load_posed", [](const std::string& path, const PythonCage& cage) { return loadPosedVertices(path, cage.cage); },
-      py::arg("path"), py::arg("cage"), "The vertices (V, d) of a posed cage file, checked against the rest cage.");
+      "load_posed",
+      [](const std::string& path, const PythonCage& cage, bool weld) {
+        return loadPosedVertices(path, cage.cage, ReadOptions{weld});
+      },
+      py::arg("path"), py::arg("cage"), py::kw_only(), py::arg("weld") = false,
+      "The vertices (V, d) of a posed cage file of any readable format, checked against the rest cage.");
   module.def("load_session", &loadSessionForPython, py::arg("path"),
              "An editor session (File > Save session), read as the editor and `somicage animate` read it: a dict "
              "with source, mesh and cage_path (resolved next to the session), cage (a Cage: the session's inline "

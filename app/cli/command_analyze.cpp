@@ -36,6 +36,7 @@ ArgParser analyzeOptions() {
               {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
               {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
               {"--json", "", "print one JSON object"},
+              weldOptionSpec(),
               threadsOptionSpec(),
           }));
 }
@@ -103,9 +104,10 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const int threads = threadsOption(args);
   const std::string meshPath = args.text("--mesh");
 
-  const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
-  const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage);
-  const PolygonMesh mesh = loadMesh(meshPath);
+  const ReadOptions read = readOptions(args);
+  const Cage cage = loadUsableCage(args.text("--cage"), printNotice, read);
+  const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage, read);
+  const PolygonMesh mesh = loadAnyMesh(meshPath, read);
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
   noteIgnoredParameters(kCommand, args, method);
 

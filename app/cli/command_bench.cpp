@@ -33,13 +33,14 @@ const char* const kCommand = "somicage bench";
 ArgParser benchOptions() {
   return ArgParser(kCommand,
                    {
-                       {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
+                       {"--mesh", "M.obj", "the points to deform (any readable format)", true},
                        {"--cage", "C.obj", "the rest cage", true},
                        {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
                        {"--frames", "N", "frames timed per backend and variant (default 50)"},
                        {"--repeat", "R", "precomputes timed (default 3)"},
                        {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
                        {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
+                       weldOptionSpec(),
                        threadsOptionSpec(),
                        {"--json", "", "print one JSON object"},
                    });
@@ -136,12 +137,13 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const int threads = threadsOption(options);
   const bool json = options.has("--json");
 
-  const Cage cage = loadUsableCage(options.text("--cage"), printNotice);
-  const PolygonMesh mesh = loadMesh(options.text("--mesh"));
+  const ReadOptions read = readOptions(options);
+  const Cage cage = loadUsableCage(options.text("--cage"), printNotice, read);
+  const PolygonMesh mesh = loadAnyMesh(options.text("--mesh"), read);
   const Eigen::MatrixXd points =
       meshPointsFor(cage, mesh.vertices, options.text("--mesh"), options.text("--cage"), printNotice);
   const Eigen::MatrixXd posed =
-      options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
+      options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage, read) : defaultPose(cage);
   PrecomputeOptions precompute = precomputeOptions(threads);
   precompute.floatStorage = true;
 

@@ -22,7 +22,8 @@ const char* const kCommand = "somicage cage";
 ArgParser cageOptions() {
   return ArgParser(kCommand,
                    {
-                       {"--mesh", "MESH.obj", "the mesh to enclose (any OBJ with faces)", true},
+                       {"--mesh", "MESH.obj", "the mesh to enclose (any readable format, with faces)", true},
+                       weldOptionSpec(),
                        {"--out", "CAGE.obj", "where to write the cage", true},
                        {"--faces", "N", "at most N triangles (default 200, at least 12)"},
                        {"--margin", "M", "distance from the mesh, in bounding-box diagonals (default: automatic)"},
@@ -59,7 +60,7 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
     throw InputError("--margin", -1, "must be in (0, 1) bounding-box diagonals", "give e.g. --margin 0.02");
   const std::string meshPath = args.text("--mesh"), outPath = args.text("--out");
 
-  const PolygonMesh mesh = loadMesh(meshPath);
+  const PolygonMesh mesh = loadAnyMesh(meshPath, readOptions(args));
   const Eigen::MatrixXi triangles = triangulatePolygons(mesh.vertices, mesh.faces);
   const CliClock::time_point start = CliClock::now();
   GeneratedCage generated;

@@ -27,7 +27,8 @@ const char* const kCommand = "somicage check";
 ArgParser checkOptions() {
   return ArgParser(kCommand, {
                                  {"--cage", "C.obj", "the cage to check (3D mesh, or 2D polygon with z = 0)", true},
-                                 {"--mesh", "M.obj", "points for the partition-of-unity check (any OBJ)"},
+                                 {"--mesh", "M.obj", "points for the partition-of-unity check (any readable format)"},
+                                 weldOptionSpec(),
                                  {"--json", "", "print one JSON object instead of the readable report"},
                                  threadsOptionSpec(),
                              });
@@ -262,9 +263,10 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   const int threads = threadsOption(args);
   const std::string cagePath = args.text("--cage"), meshPath = args.text("--mesh");
 
-  const Cage cage = loadCage(cagePath);
+  const ReadOptions read = readOptions(args);
+  const Cage cage = loadCage(cagePath, read);
   PolygonMesh mesh;
-  if (!meshPath.empty()) mesh = loadMesh(meshPath);
+  if (!meshPath.empty()) mesh = loadAnyMesh(meshPath, read);
   const CageReport report = validateCage(cage);
   const std::vector<std::string> problems = describeCageProblems(report);
   // The numbers below are those of the cage that deform uses: the repaired one.

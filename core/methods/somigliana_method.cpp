@@ -256,11 +256,11 @@ std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const E
   return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads);
 }
 
-// Rows go straight into C; the diagnostics keep a winding number and a residual per point; each thread has a
-// row buffer of the main block.
+// Rows go straight into C; the diagnostics keep a winding number, a residual and a region per point; each thread
+// has a row buffer of the main block.
 std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::size_t points, bool, int threads) {
   return static_cast<std::size_t>(threads) * static_cast<std::size_t>(layout.mainColumns()) * sizeof(double) +
-         2 * points * sizeof(double);
+         points * (2 * sizeof(double) + sizeof(PointRegion));
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <random>
 
-#include "obj_io.h"
+#include "mesh_formats.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

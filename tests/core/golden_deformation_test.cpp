@@ -1,7 +1,7 @@
 // Golden deformations of two shared models in the Somigliana paper's poses (FIREHYDRANT, Fig. 4; CACTUS), made by
 // an independent high-order route: the reference evaluation of Eq. 11 (reference/somigliana_reference.h, adaptive
 // Gauss-Legendre quadrature of Eqs. 3-4 at order 10 with pieces of diameter <= dist / 2, converged to ~5e-15 from
-// order 8 in somigliana_reference_test.cpp; boundary conditions from method.md) on a deterministic subset of the
+// order 8 in somigliana_reference_test.cpp; boundary conditions from docs/method.md) on a deterministic subset of the
 // mesh vertices, computed here rather than stored, and compared with the core deformer. Skips visibly when the
 // shared models are absent.
 //
@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "deformer.h"
+#include "mesh_formats.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
 #include "reference/somigliana_reference.h"
 #include "test_models.h"
 

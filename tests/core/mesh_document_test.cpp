@@ -134,5 +134,22 @@ TEST(MeshDocument, BadTextureOrNormalIndexNamesTheLine) {
   }
 }
 
+// `vn` and `vt` numbers are read by the `v` line's parser (parseObjNumber): the whole token, finite. Before, they were
+// read with from_chars alone, which stops at the first character it cannot use, so "1.5x" was 1.5.
+TEST(MeshDocument, NormalAndUvNumbersAreCheckedAsPositionsAre) {
+  for (const std::string bad : {"vn 1.5x 0 0", "vt 0.5 1e", "vn 0 nan 1", "vt inf 0", "vn 0 0 1e999", "vt 0.5 --1"}) {
+    try {
+      parseObjDocument("v 0 0 0\nv 1 0 0\nv 0 1 0\n" + bad + "\nf 1 2 3\n", "bad.obj");
+      ADD_FAILURE() << "accepted: " << bad;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.line(), 4) << e.what();
+      EXPECT_NE(e.problem().find("is not a finite decimal number"), std::string::npos) << e.what();
+    }
+  }
+  const MeshDocument good = parseObjDocument("v 0 0 0\nvn +0.5 -0.25 1e-3\nvt 0.125 .5\n", "good.obj");
+  EXPECT_EQ(good.normals.row(0), Eigen::RowVector3d(0.5, -0.25, 1e-3));
+  EXPECT_EQ(good.uvs.row(0).head(2), Eigen::RowVector2d(0.125, 0.5));
+}
+
 }  // namespace
 }  // namespace somicage

@@ -42,5 +42,20 @@ TEST(ParseMtl, BadValuesNameTheLine) {
   expectError("newmtl a\nd nan\n", 2, "opacity");
 }
 
+// Classic Mac OS line ends (a lone CR), as the OBJ parser takes them: before, std::getline saw one line, so the
+// materials after the first were lost and a colour read "0.1 0.2 0.3\rKd" as its numbers.
+TEST(ParseMtl, CarriageReturnOnlyFilesHaveLines) {
+  const std::vector<MeshMaterial> materials = parseMtl("newmtl a\rKd 0.1 0.2 0.3\rnewmtl b\rd 0.25\r", "m.mtl");
+  ASSERT_EQ(materials.size(), 2u);
+  EXPECT_EQ(materials[0].baseColor, Eigen::Vector4d(0.1, 0.2, 0.3, 1));
+  EXPECT_EQ(materials[1].baseColor, Eigen::Vector4d(1, 1, 1, 0.25));
+  try {
+    parseMtl("newmtl a\r\rKd 0.5 2 0.5\r", "m.mtl");
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 3) << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace somicage

@@ -2,6 +2,7 @@
 // the shape of the matrix C its deformer stores; nothing outside a descriptor knows a method by heart.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <set>
 #include <string>
 
@@ -28,6 +29,17 @@ TEST(MethodRegistry, ListsEveryMethodOnceInListOrder) {
   }
   EXPECT_TRUE(names.count("somigliana") && names.count("green") && names.count("mvc"));
   EXPECT_EQ(Method(), methods::somigliana()) << "the default method is the paper's";
+  // The registry is generated from the method files (core/CMakeLists.txt): it names exactly the NAME of each
+  // core/methods/NAME_method.cpp, read here from the source folder itself.
+  std::set<std::string> files;
+  const std::filesystem::path folder = std::filesystem::path(SOMICAGE_TEST_DATA_DIR) / ".." / ".." / "core" / "methods";
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    const std::string file = entry.path().filename().string();
+    const std::string suffix = "_method.cpp";
+    if (file.size() > suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0)
+      files.insert(file.substr(0, file.size() - suffix.size()));
+  }
+  EXPECT_EQ(names, files);
 }
 
 TEST(MethodRegistry, NamesRoundTripAndUnknownNamesAreRefusedWithTheList) {

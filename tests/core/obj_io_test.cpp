@@ -19,6 +19,7 @@
 
 #include "cage_validation.h"
 #include "errors.h"
+#include "mesh_formats.h"
 
 namespace somicage {
 namespace {

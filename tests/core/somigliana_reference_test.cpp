@@ -1,5 +1,5 @@
 // The Somigliana deformer against an independent evaluation of Eq. 11 (reference/somigliana_reference.h: adaptive
-// Gauss-Legendre quadrature of the kernels of Eqs. 3-4, boundary conditions written from method.md), on poses that
+// Gauss-Legendre quadrature of the kernels of Eqs. 3-4, boundary conditions written from docs/method.md), on poses that
 // are not similarities (a smooth random perturbation, a twist, a bend), in 2D and 3D, for the global, local and
 // blended variants, several nu and gamma, with and without the traction correction. The similarity and rest-pose
 // tests (somigliana_deformer_test.cpp) cannot see a rotation given to the wrong vertex, a mis-signed kernel term or

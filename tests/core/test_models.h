@@ -17,7 +17,7 @@
 #include "cage.h"
 #include "deformer.h"
 #include "errors.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage::test {
 

@@ -85,7 +85,26 @@ TEST(EditorWorker, PrecomputesEveryRequestedMethod) {
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->error.empty()) << out->error;
   EXPECT_FALSE(out->cancelled);
-  EXPECT_EQ(out->deformers.size(), 2u);
+  EXPECT_EQ(out->scene, r.scene);
+  ASSERT_EQ(out->deformers.size(), 2u);
+  // Each delivered deformer is the requested method's, made for the scene's points: at the rest pose it gives the
+  // points back (both methods reproduce the identity, float storage: 1e-5 diameters), and a translated pose
+  // translates them (partition of unity).
+  const Scene& scene = *r.scene;
+  const double diameter = cageDiameter(scene.restCage.vertices);
+  for (Method m : r.methods) {
+    SCOPED_TRACE(methodName(m));
+    ASSERT_EQ(out->deformers.count(m), 1u);
+    const CageDeformer& deformer = *out->deformers.at(m);
+    ASSERT_EQ(deformer.numPoints(), scene.meshVertices.rows());
+    EXPECT_LE((deformer.deform(scene.restCage.vertices, {}) - scene.meshVertices).cwiseAbs().maxCoeff(),
+              1e-5 * diameter);
+    const Eigen::RowVector2d shift(0.25, -0.5);
+    EXPECT_LE((deformer.deform(scene.restCage.vertices.rowwise() + shift, {}) - (scene.meshVertices.rowwise() + shift))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-5 * diameter);
+  }
   EXPECT_EQ(worker.progress(), 1.0);
   EXPECT_FALSE(worker.poll().has_value());  // taken once
 }
@@ -103,20 +122,35 @@ TEST(EditorWorker, LoaderErrorsAreReportedNotThrown) {
 }
 
 TEST(EditorWorker, CancelStopsWithoutResults) {
+  // A loader that waits for the cancel, so that it lands before any precompute (deterministically): the outcome
+  // must say cancelled and deliver no deformer, not some of the three.
   PrecomputeWorker worker;
   PrecomputeRequest r;
-  r.loadScene = []() { return makeDemoScene(3); };
+  std::atomic<bool> loading{false}, cancelled{false};
+  r.loadScene = [&]() {
+    loading = true;
+    while (!cancelled) std::this_thread::yield();
+    return makeDemoScene(3);
+  };
   r.methods = {methods::somigliana(), methods::green(), methods::mvc()};
   worker.start(r);
+  while (!loading) std::this_thread::yield();
   worker.cancel();
+  cancelled = true;
   const std::optional<PrecomputeOutcome> out = worker.wait();
   ASSERT_TRUE(out.has_value());
-  // The cancel may land after the last progress report; either way nothing half-done is delivered.
-  if (out->cancelled) {
-    EXPECT_TRUE(out->deformers.empty());
-  } else {
-    EXPECT_EQ(out->deformers.size(), 3u);
-  }
+  EXPECT_TRUE(out->cancelled);
+  EXPECT_TRUE(out->deformers.empty());
+  EXPECT_TRUE(out->error.empty()) << out->error;
+  // A cancel after the request finished changes nothing: the next request runs whole.
+  r.loadScene = []() { return makeDemoScene(2); };
+  r.methods = {methods::green()};
+  worker.start(r);
+  const std::optional<PrecomputeOutcome> done = worker.wait();
+  worker.cancel();
+  ASSERT_TRUE(done.has_value());
+  EXPECT_FALSE(done->cancelled);
+  EXPECT_EQ(done->deformers.size(), 1u);
 }
 
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {

@@ -1,5 +1,5 @@
-// Session JSON: exact round trip (numbers written with %.17g), infinities, the inline cage of a cage without a file,
-// and errors that name the problem.
+// Session JSON: exact round trip (numbers written as their shortest exact text), infinities, the inline cage of a cage
+// without a file, and errors that name the problem.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -158,7 +158,7 @@ TEST(EditorSession, NonFiniteNumbersAreRejectedWithTheirField) {
   rejects("\"demoDim\": 3", "\"demoDim\": -inf", "malformed number");
   rejects("\"demoDim\": 3", "\"demoDim\": 0x3", "malformed number");
   rejects("\"yaw\": -1.25", "\"yaw\": \"inf\"", "field \"yaw\" must be a number");
-  rejects("0.10000000000000001, 0.20000000000000001", "1e999, 0.2", "number out of range");
+  rejects("[0.1, 0.2, 0.3]", "[1e999, 0.2, 0.3]", "number out of range");
   rejects("\"mesh\": \"", "\"mesh\": \"\\u00zz", "4 hexadecimal digits");
   // nu alone may be infinite.
   EXPECT_EQ(sessionFromJson(good, "s.json").params.nu, -std::numeric_limits<double>::infinity());

@@ -8,7 +8,7 @@
 #include "cage_generation.h"
 #include "core/generated_cage_checks.h"
 #include "core/test_models.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage {
 namespace {

@@ -37,6 +37,15 @@ def test_firehydrant_matches_cli(tmp_path, firehydrant, settings, flags):
     vertices = firehydrant["cage"].vertices
     error = np.abs(moved - expected).max() / np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))
     assert error <= 1e-12, f"module and CLI differ by {error:.2e} cage diameters"
+    # Both front ends drive one engine, so agreeing proves the binding, not the numbers. Independent of the engine:
+    # Somigliana coordinates are similarity-invariant (any variant, nu, gamma), so the pose moved by a similarity S
+    # (scale 1.5, a rotation, a translation) gives S of the CLI's output.
+    angle = 0.7
+    rotation = np.array([[np.cos(angle), -np.sin(angle), 0], [np.sin(angle), np.cos(angle), 0], [0, 0, 1]])
+    similarity = lambda x: 1.5 * x @ rotation.T + np.array([0.3, -2.0, 5.0])  # noqa: E731
+    turned = firehydrant["deformer"].deform(similarity(firehydrant["pose"]), **settings)
+    error = np.abs(turned - similarity(expected)).max() / np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))
+    assert error <= 1e-8, f"a similarity of the pose moves the mesh {error:.2e} cage diameters off S(deformed)"
 
 
 def test_points_outside_warn(cube_cage, cube_points):

@@ -106,7 +106,7 @@ std::vector<Coordinates> integrateCoordinates(const Cage& cage, const Eigen::Vec
 }
 
 // ---------------------------------------------------------------------------------------------------------------
-// Boundary conditions (Eqs. 12-15, method.md "Deformer")
+// Boundary conditions (Eqs. 12-15, docs/method.md "Deformer")
 // ---------------------------------------------------------------------------------------------------------------
 
 namespace {
@@ -147,7 +147,7 @@ std::vector<Eigen::VectorXd> vertexNormals(const Cage& cage, const Eigen::Matrix
   return normals;
 }
 
-// The solid angle (3D) / angle (2D) spanned by face j's vertex normals, signed as method.md says.
+// The solid angle (3D) / angle (2D) spanned by face j's vertex normals, signed as docs/method.md says.
 double normalSpan(const Cage& cage, const std::vector<Eigen::VectorXd>& N, int j) {
   if (cage.dim() == 3) {
     const Eigen::Vector3d n1 = N[cage.faces(j, 0)], n2 = N[cage.faces(j, 1)], n3 = N[cage.faces(j, 2)];

@@ -3,7 +3,7 @@
 //   - the coordinates T_i(x), K_j(x) (Eq. 8) by adaptive Gauss-Legendre quadrature (adaptive_quadrature.h) of the
 //     kernels exactly as Eqs. 3 and 4 write them (mu = 1, a = 1/(2^{d-1} pi), b = a/(4(1-nu)), r = y - x), at the
 //     requested nu (no nu-independent split, no closed form);
-//   - the boundary conditions of method.md (Umeyama similarity, polar face rotations and the mean singular value,
+//   - the boundary conditions of docs/method.md (Umeyama similarity, polar face rotations and the mean singular value,
 //     the geodesic blend, area-weighted vertex rotations, signed-solid-angle bulging, Eqs. 12-15);
 //   - the deformed point of Eq. 11, x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j s_j R_j K_j n_j].
 // Only points strictly inside the cage have a defined Eq. 11 (core's exterior rule is a separate convention).
@@ -47,7 +47,7 @@ struct BoundaryConditions {
   std::vector<double> tractionScale;                          // s_j (s'_j after Eq. 15)
 };
 
-// Rotations and traction scales of a posed cage (#V by d, rest order): method.md "Deformer", Eqs. 12-15.
+// Rotations and traction scales of a posed cage (#V by d, rest order): docs/method.md "Deformer", Eqs. 12-15.
 BoundaryConditions boundaryConditions(const Cage& rest, const Eigen::MatrixXd& posed, const PoseParameters& p);
 
 // Eq. 11: x~ = T(x)^-1 [sum_i R_i T_i R_i^T v~_i + sum_j s_j R_j K_j n_j], T(x) = sum_i R_i T_i R_i^T.
