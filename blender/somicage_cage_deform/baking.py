@@ -6,24 +6,31 @@ from . import binding, shape_keys
 from .geometry import write_base_coordinates
 
 
+def deformed_frames(scene, mesh_object, frames):
+    """{frame: the mesh's deformed local coordinates}; the scene is back at its frame afterwards."""
+    current, result = scene.frame_current, {}
+    try:
+        for frame in frames:
+            scene.frame_set(frame)
+            result[frame] = binding.deformed_local(mesh_object, bpy.context.evaluated_depsgraph_get())
+    finally:
+        scene.frame_set(current)
+    return result
+
+
 def bake(scene, mesh_object, frame_start, frame_end):
     """One shape key per frame ("SomiCage frame N": value 1 at N, 0 at N - 1 and N + 1) over the rest coordinates
     as the basis. Every frame is deformed before anything changes; then the range's earlier keys are replaced (two
     keys of one frame would add their displacements) and Live is switched off (the keys carry the animation)."""
     if frame_end < frame_start:
         raise ValueError(f"the frame range {frame_start}..{frame_end} is empty: End must not be before Start")
-    settings, current = mesh_object.somicage, scene.frame_current
+    settings = mesh_object.somicage
     was_live, settings.live = settings.live, False  # Live would deform each frame a second time
-    frames = {}
     try:
-        for frame in range(frame_start, frame_end + 1):
-            scene.frame_set(frame)
-            frames[frame] = binding.deformed_local(mesh_object, bpy.context.evaluated_depsgraph_get())
+        frames = deformed_frames(scene, mesh_object, range(frame_start, frame_end + 1))
     except BaseException:
-        settings.live = was_live  # as it was: nothing baked
+        settings.live = was_live  # as it was, at the scene's frame again: nothing baked
         raise
-    finally:
-        scene.frame_set(current)
 
     shape_keys.remove_keys(mesh_object, [name for name, frame in shape_keys.baked_keys(mesh_object).items()
                                          if frame_start <= frame <= frame_end])

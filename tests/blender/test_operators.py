@@ -9,8 +9,8 @@ consistent state.
 - A cage with a Subdivision or a Mirror modifier binds as Blender shows it (its own triangles).
 - The engine's warnings (points outside the cage, a mesh in other units) are reported and shown in the panel, in the
   objects' names.
-- Baking a range again replaces its keys; Live and baked keys never both drive the mesh; Unbind removes the baked
-  keys or, when told, keeps them.
+- Baking a range again replaces its keys; a Bake that fails makes none; Live and baked keys never both drive the
+  mesh; Unbind removes the baked keys or, when told, keeps them; a Live deformation that fails says why in the panel.
 - A renamed or deleted object leaves no deformer behind in the cache.
 
 Expected positions are closed forms: every method reproduces a translation of the cage, so a cage moved by d moves
@@ -295,6 +295,31 @@ def unbind_keeps_or_removes_keys():
         assert np.array_equal(shown(mesh_object), original), f"frame {frame} after Unbind is not the original mesh"
 
 
+def failed_bake_changes_nothing():
+    """The cage's Subdivision levels go from 1 to 2 at frame 3: its vertex count changes, so frame 3 cannot be
+    deformed. Bake 1..3 then fails naming the objects, before any shape key is made; Live at frame 3 stops and the
+    panel says why."""
+    mesh_object, cage = ball(), box(size=2.4)
+    subdivision = cage.modifiers.new("Subdivision", "SUBSURF")
+    for frame, levels in ((2, 1), (3, 2)):
+        subdivision.levels = levels
+        subdivision.keyframe_insert("levels", frame=frame)
+    scene.frame_set(1)
+    prepare(mesh_object, cage)
+    assert bpy.ops.somicage.bind() == {"FINISHED"}
+    try:
+        result = bpy.ops.somicage.bake(frame_start=1, frame_end=3)
+        raise AssertionError(f"Bake over a change of the cage's vertex count gave {result}")
+    except RuntimeError as error:
+        assert "cannot bake 'Ball' to cage 'Box' (as its modifier Subdivision makes it)" in str(error), error
+    assert mesh_object.data.shape_keys is None, "the failed bake left shape keys"
+    assert mesh_object.somicage.live and scene.frame_current == 1, "the failed bake changed Live or the frame"
+    scene.frame_set(3)
+    binding = mesh_object.somicage
+    assert not binding.live and "Live stopped for 'Ball' to cage 'Box'" in binding.messages, binding.messages
+    assert binding.messages in panel_text(), "the panel does not say why Live stopped"
+
+
 def cache_follows_the_object():
     mesh_object, cage = ball(), box()
     original = local(mesh_object.data)
@@ -322,7 +347,8 @@ def cache_follows_the_object():
 
 
 CASES = (module_not_found, failed_binds_change_nothing, modifier_cages_bind, warnings_name_the_objects,
-         rebake_replaces_keys, live_and_keys_do_not_fight, unbind_keeps_or_removes_keys, cache_follows_the_object)
+         rebake_replaces_keys, live_and_keys_do_not_fight, unbind_keeps_or_removes_keys, failed_bake_changes_nothing,
+         cache_follows_the_object)
 failed = []
 for case in CASES:
     clear()
