@@ -94,8 +94,9 @@ def in_blender_words(message, mesh_object, cage_object):
     for argument, name in ((POINTS_ARGUMENT, mesh), (CAGE_ARGUMENT, cage)):
         if message.startswith(argument + ": "):  # describeNotice's "source: text"
             message = name + message[len(argument):]
-    # describeMeshPlacement's "the mesh MESH and the cage CAGE do not fit"
-    return message.replace(f"mesh {POINTS_ARGUMENT} ", f"{mesh} ").replace(f"cage {CAGE_ARGUMENT}", cage)
+    # describeMeshPlacement's "the mesh MESH and the cage CAGE do not fit: ... are the two files in different units?"
+    return (message.replace(f"mesh {POINTS_ARGUMENT} ", f"{mesh} ").replace(f"cage {CAGE_ARGUMENT}", cage)
+            .replace("the two files", "the two objects"))
 
 
 def error_message(error, what, mesh_object, cage_object):
