@@ -81,7 +81,7 @@ class SOMICAGE_OT_bake(bpy.types.Operator):
 
     @classmethod
     def poll(cls, context):
-        return SOMICAGE_OT_unbind.poll(context)
+        return SOMICAGE_OT_unbind.poll(context) and context.object.somicage.cage is not None
 
     def invoke(self, context, event):
         self.frame_start, self.frame_end = context.scene.frame_start, context.scene.frame_end
