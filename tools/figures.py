@@ -23,7 +23,7 @@ from PIL import Image
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.environ.get("SOMICAGE", os.path.join(ROOT, "build", "app", "somicage"))
-MODELS = os.environ.get("SOMICAGE_MODELS", os.path.join(ROOT, "..", "shared", "models"))
+MODELS = os.path.normpath(os.environ.get("SOMICAGE_MODELS", os.path.join(ROOT, "..", "shared", "models")))
 PANE_SIZE = (420, 420)  # one pane of a figure; a shot of n panes is n * 420 wide
 COLORS = 160            # palette colours of the written PNGs (keeps the gallery a few hundred KB)
 
@@ -51,9 +51,9 @@ def log(*words):
     print(*words, flush=True)
 
 
-def run(args, **kw):
+def run(args):
     """Runs a somicage command; a failure stops the script with the command and its output."""
-    done = subprocess.run(args, capture_output=True, text=True, **kw)
+    done = subprocess.run(args, capture_output=True, text=True)
     if done.returncode != 0:
         sys.exit("figures: failed (exit %d): %s\n%s%s" % (done.returncode, " ".join(args), done.stdout, done.stderr))
     return done.stdout
@@ -70,6 +70,8 @@ def shown(args):
             a = "../shared/models" + a[len(MODELS):]
         elif os.path.isabs(a) and "/scenes/" in a:
             a = "scenes/" + os.path.basename(a)
+        elif os.path.isabs(a) and "/somicage-figures-" in a:  # a working file of this run
+            a = os.path.basename(a)
         words.append(a)
     return " ".join(words)
 
@@ -125,7 +127,8 @@ def rotate(p, center, degrees):
 
 
 def shape_2d(name):
-    """(rest polygon, posed polygon, a point the polygon is star-shaped about), counter-clockwise: the paper's STAR (Fig. 4), hexagon and L (Fig. 10)."""
+    """(rest polygon, posed polygon, a point the polygon is star-shaped about), counter-clockwise: the paper's
+    STAR (Fig. 4), hexagon and L (Fig. 10)."""
     if name == "star":
         rest = [(math.cos(math.radians(90 + 36 * k)) * (1.0 if k % 2 == 0 else 0.45),
                  math.sin(math.radians(90 + 36 * k)) * (1.0 if k % 2 == 0 else 0.45)) for k in range(10)]
@@ -166,7 +169,8 @@ def scene_2d(work, name):
 # ---------------------------------------------------------------------------------------------------------------
 # Panes: a view of the editor (METHOD[:nu=X][:gamma=Y][:variant=V]) and its numbers from `somicage analyze`.
 
-def view_options(view):
+def view_options(view, editor=False):
+    """The options of one view for `analyze` (or, editor=True, for the editor, which spells the variant --local)."""
     method, *keys = view.split(":")
     values = dict(k.split("=") for k in keys)
     args = ["--method", method]
@@ -175,7 +179,7 @@ def view_options(view):
     if "gamma" in values:
         args += ["--gamma", values["gamma"]]
     if "variant" in values:
-        args += ["--variant", values["variant"]]
+        args += ["--" + values["variant"]] if editor else ["--variant", values["variant"]]
     return args
 
 
@@ -194,7 +198,7 @@ def shot(scene, views, out, extra=(), size=None, ui=False):
     width, height = size or (PANE_SIZE[0] * len(views), PANE_SIZE[1])
     args = [EXE] + list(scene)
     if len(views) == 1:
-        args += view_options(views[0])
+        args += view_options(views[0], editor=True)
     else:
         for v in views:
             args += ["--view", v]
@@ -281,10 +285,10 @@ def figure(out, name, title, rows, extra=(), ui=False, size=None, analyzed=True,
 # distortion under its label, and the legend on the last pane).
 DETJ = ["--show", "detj"]
 
-def hero(out):  # README: the editor with FIREHYDRANT, three panes and the det J legend
-    figure(out, "hero", "The editor: FIREHYDRANT, MVC | Green | Somigliana, det J",
-           [("firehydrant", model("firehydrant"), ["mvc", "green", "somigliana:nu=0.3:gamma=1"])],
-           extra=DETJ, ui=True, size=(1200, 520))
+def hero(out):  # README: the editor with FIREHYDRANT, three panes and the det J legend (numbers: under the labels)
+    figure(out, "hero", "The editor: FIREHYDRANT, MVC | Green | Somigliana (nu = 0.3, gamma = 1), det J",
+           [("firehydrant", model("firehydrant"), ["mvc", "green", "somigliana"])],
+           extra=DETJ + ["--nu", "0.3", "--gamma", "1", "--hide-cage"], ui=True, size=(1200, 520), analyzed=False)
 
 
 def fig11(out):  # paper Figs. 1 and 11: MVC | GC | Somigliana, global, gamma = 1, nu = 0.3
@@ -448,10 +452,9 @@ def fig09(out):  # paper Fig. 9: distance to BEM against the pose's amplitude (g
                   commands + ["(and the same for each amplitude a: the posed cage is rest + a (posed - rest))"], [],
                   table + [""] + skipped)
     # The panes: BEM | Somigliana | MVC at a = 1 on the star, coloured by the distance to BEM.
-    star = scenes[0][1]
+    views = ["bem:nu=0", "somigliana:nu=0:gamma=2", "mvc"]
     figure(out, "fig09_panes", "Fig. 9 panes: BEM | Somigliana (nu = 0, gamma = 2) | MVC, distance to BEM",
-           [("star", star, ["bem:nu=0", "somigliana:nu=0:gamma=2", "mvc"])],
-           extra=["--show", "detj,difference,difference"])
+           [(label, scene, views) for label, scene in scenes[:2]], extra=["--show", "detj,difference,difference"])
 
 
 def fig06(out):  # paper Fig. 6: partition-of-unity error against the quadrature points per triangle
@@ -494,10 +497,16 @@ def guide_editor(out):
            analyzed=False)
 
 
+def guide_pose(out):  # --show field:N selects cage vertex N, so its gizmo is drawn
+    figure(out, "guide_pose", "Guide: a selected handle and its gizmo (cage vertex 30)",
+           [("firehydrant", model("firehydrant"), ["somigliana:nu=0.3"])], extra=["--show", "field:30"], ui=True,
+           size=(1000, 560), analyzed=False)
+
+
 def guide_analysis(out):
-    figure(out, "guide_analysis", "Guide: det J | distortion | fold-overs, local variant at nu = 0.45",
-           [("firehydrant", model("firehydrant"), ["somigliana:nu=0.45:variant=local"] * 3)],
-           extra=["--show", "detj,distortion,foldover", "--hide-cage"])
+    figure(out, "guide_analysis", "Guide: det J | distortion | fold-overs, CACTUS, local variant at nu = 0.3",
+           [("cactus", model("cactus"), ["somigliana:nu=0.3:variant=local"] * 3)],
+           extra=["--show", "detj,distortion,foldover", "--range", "0.1:10"])  # the automatic range would reach 6,000
 
 
 def guide_nuplot(out):
@@ -514,8 +523,8 @@ def guide_makecage(out):
 
 FIGURES = {"hero": hero, "fig02": fig02, "fig03": fig03, "fig04": fig04, "fig05": fig05, "fig06": fig06,
            "fig07": fig07, "fig08": fig08, "fig09": fig09, "fig10": fig10, "fig11": fig11,
-           "guide_editor": guide_editor, "guide_analysis": guide_analysis, "guide_nuplot": guide_nuplot,
-           "guide_makecage": guide_makecage}
+           "guide_editor": guide_editor, "guide_pose": guide_pose, "guide_analysis": guide_analysis,
+           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage}
 
 
 class Output:

@@ -32,8 +32,9 @@ def panes(path, rows, columns):
 
 
 def check_render(path, rows, columns):
-    """Each pane shows something: >= 3 % of its pixels differ by > 40 (of 255) from the image's background colour
-    (its most common one), and its pixels are not one flat colour; no two panes are equal."""
+    """Each pane shows a mesh: in its middle band (below the label and numbers, above the legend: rows 80 to
+    height - 100, where only the mesh and the cage are drawn) >= 3 % of the pixels differ by > 40 (of 255) from the
+    image's background colour (its most common one) and they are not one flat colour; no two panes are equal."""
     check(os.path.exists(path), "%s exists" % path)
     if not os.path.exists(path):
         return
@@ -42,6 +43,7 @@ def check_render(path, rows, columns):
     background = colours[counts.argmax()].astype(float)
     cut = panes(path, rows, columns)
     for k, pane in enumerate(cut):
+        pane = pane[80:pane.shape[0] - 100]
         drawn = (np.abs(pane - background).max(axis=2) > 40).mean()
         check(drawn > 0.03 and pane.std() > 10,
               "%s pane %d: %.1f %% of its pixels drawn (> 3 %%), std %.1f (> 10)" % (
