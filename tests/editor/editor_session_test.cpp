@@ -13,7 +13,6 @@
 #include "session.h"
 
 using namespace somicage;
-using namespace somicage::editor;
 
 namespace {
 Session sample() {

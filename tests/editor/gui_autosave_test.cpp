@@ -77,10 +77,10 @@ double share(const std::vector<bool>& a, const std::vector<bool>& b, bool differ
 }
 
 // The 2D demo, bent, framed the way the editor frames it: not the default (3D) picture.
-somicage::editor::Session crashedSession() {
+somicage::Session crashedSession() {
   using namespace somicage::editor;
   const Scene demo = makeDemoScene(2);
-  Session s;
+  somicage::Session s;
   s.demoDim = 2;
   s.pose = demo.restCage.vertices;
   s.pose.col(1) += 0.3 * s.pose.col(0);
@@ -110,7 +110,7 @@ TEST(GuiAutosave, RestoreAutosaveShowsTheCrashedSessionAndLeavesTheFilesAlone) {
   const ConfigHome config("autosave_restore");
   const somicage::editor::AutosavePaths paths = config.paths();
   fs::create_directories(fs::path(paths.session).parent_path());
-  const std::string session = somicage::editor::sessionToJson(crashedSession());
+  const std::string session = somicage::sessionToJson(crashedSession());
   std::ofstream(paths.session) << session;
   std::ofstream(config.root() / "same.json") << session;
   writeCrashMarker(paths.marker);
