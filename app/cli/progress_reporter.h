@@ -1,5 +1,6 @@
 // Progress of a long computation on stderr: a live percentage when stderr is a terminal, otherwise a line every
-// 10% once the computation has taken more than a second (so that logs of quick runs stay clean).
+// 10% once the computation has taken more than a second (so that logs of quick runs stay clean); nothing when silent
+// (--quiet: command_log.h).
 #pragma once
 
 #include <chrono>
@@ -11,7 +12,7 @@ namespace somicage {
 
 class ProgressReporter {
  public:
-  explicit ProgressReporter(std::string label);
+  explicit ProgressReporter(std::string label, bool silent = false);
   ~ProgressReporter();
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
@@ -26,7 +27,7 @@ class ProgressReporter {
 
   using Clock = std::chrono::steady_clock;
   std::string label_;
-  bool terminal_;
+  bool terminal_, silent_;
   Clock::time_point start_, lastPrint_;
   int lastTenth_ = -1;
   bool printed_ = false;
