@@ -9,6 +9,7 @@
 
 #include "cli/arg_parser.h"
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "errors.h"
 
 namespace somicage {
@@ -80,12 +81,17 @@ int runCli(int argc, char** argv, const FrameDevices& devices) {
   const std::vector<std::string> args(argv + 2, argv + argc);
   const std::string prefix = std::string("somicage ") + command->name + ": ";
   CommandLog log(std::string("somicage ") + command->name);
+  catchInterrupt();
   try {
     return log.exitCode(command->run(args, devices, log));
   } catch (const InputError& e) {
     std::cerr << prefix << e.what() << "\n";
     return kExitBadInput;
   } catch (const Cancelled& e) {
+    if (interruptRequested()) {
+      std::cerr << prefix << "interrupted (Ctrl-C); no output was written\n";
+      return kExitInterrupted;
+    }
     std::cerr << prefix << e.what() << "\n";
     return kExitFailure;
   } catch (const std::bad_alloc&) {

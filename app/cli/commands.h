@@ -25,9 +25,10 @@ const CliCommand* findCliCommand(const std::string& name);
 
 // Exit codes.
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;   // the command ran and the answer is "no" (check: the cage has problems)
-constexpr int kExitBadInput = 2;  // the input (files, options) is not usable
-constexpr int kExitWarnings = 3;  // --strict: the command did its work, but printed a warning (command_log.h)
+constexpr int kExitFailure = 1;        // the command ran and the answer is "no" (check: the cage has problems)
+constexpr int kExitBadInput = 2;       // the input (files, options) is not usable
+constexpr int kExitWarnings = 3;       // --strict: the command did its work, but printed a warning (command_log.h)
+constexpr int kExitInterrupted = 130;  // Ctrl-C stopped it (128 + SIGINT, as shells report it; interrupt.h)
 
 int runHelpCommand(const std::vector<std::string>& args);
 std::string helpUsage();

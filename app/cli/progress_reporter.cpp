@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli/interrupt.h"
+
 namespace somicage {
 
 ProgressReporter::ProgressReporter(std::string label, bool silent)
@@ -21,6 +23,7 @@ ProgressCallback ProgressReporter::callback() {
 }
 
 bool ProgressReporter::report(double fraction) {
+  if (interruptRequested()) return false;  // Ctrl-C: the computation throws Cancelled (interrupt.h)
   if (finished_ || silent_ || !std::isfinite(fraction)) return true;
   const Clock::time_point now = Clock::now();
   const double percent = 100.0 * std::min(1.0, std::max(0.0, fraction));

@@ -17,7 +17,8 @@ class ProgressReporter {
   ProgressReporter(const ProgressReporter&) = delete;
   ProgressReporter& operator=(const ProgressReporter&) = delete;
 
-  // A callback for core functions; it refers to this reporter, which must outlive the computation.
+  // A callback for core functions; it refers to this reporter, which must outlive the computation. It returns false
+  // (stop) once Ctrl-C was pressed (interrupt.h).
   ProgressCallback callback();
   // Ends the progress line, if one was started.
   void finish();

@@ -2,7 +2,8 @@
 // outside the cage, a mesh in other units, a repaired cage, a self-intersecting cage, a widened --margin) leaves the
 // exit code 0 without --strict and makes it 3 with it, once the output is written, in every command that can give
 // it; a clean run stays 0 under --strict and bad input stays 2. --quiet leaves stderr without the progress,
-// estimate and summary lines, but keeps the warnings.
+// estimate and summary lines, but keeps the warnings. Ctrl-C exits 130 and leaves no output.
+#include <csignal>
 #include <cstdlib>
 
 #include "cli/progress_reporter.h"
@@ -183,6 +184,42 @@ TEST(QuietOption, SilentProgressReporterPrintsNothing) {
   const std::string text = readFile(captured);
   EXPECT_NE(text.find("loud step: 50%"), std::string::npos) << text;
   EXPECT_EQ(text.find("silent step"), std::string::npos) << text;
+}
+
+// Ctrl-C (SIGINT) during a command: the computation stops at its next progress report, the process exits 130 with
+// one line saying so, and no output (nor a temporary) is left. The signal is sent once the cage's progress shows
+// (after a second), so the handler is in place; a machine that makes the cage before that skips.
+TEST(InterruptOption, CtrlCExits130AndLeavesNoOutput) {
+  ScratchDir dir;
+  const std::string out = dir.file("cage.obj"), errPath = dir.file("stderr");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  std::vector<std::string> storage = {SOMICAGE_EXE, "cage", "--mesh",  dataFile("pyramid_mesh.obj"),
+                                      "--out",      out,    "--faces", "40"};
+  std::vector<char*> argv;
+  for (std::string& arg : storage) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  ASSERT_EQ(posix_spawn(&pid, SOMICAGE_EXE, &actions, nullptr, argv.data(), environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  bool sent = false, ended = false;
+  for (int wait = 0; wait < 6000 && !sent && !ended; ++wait) {  // up to a minute on a loaded machine
+    ::usleep(10000);
+    ended = ::waitpid(pid, &status, WNOHANG) == pid;
+    if (!ended && readFile(errPath).find("making the cage: ") != std::string::npos) sent = ::kill(pid, SIGINT) == 0;
+  }
+  if (!ended) ::waitpid(pid, &status, 0);
+  if (!sent) GTEST_SKIP() << "the cage was made before its progress showed: " << readFile(errPath);
+  ASSERT_TRUE(WIFEXITED(status)) << "ended by a signal, not by the handler: " << readFile(errPath);
+  EXPECT_EQ(WEXITSTATUS(status), 130) << readFile(errPath);
+  EXPECT_NE(readFile(errPath).find("somicage cage: interrupted (Ctrl-C); no output was written"), std::string::npos)
+      << readFile(errPath);
+  std::vector<std::string> left;
+  for (const auto& entry : fs::directory_iterator(dir.path())) left.push_back(entry.path().filename().string());
+  EXPECT_EQ(left, std::vector<std::string>{"stderr"}) << "no cage and no temporary";
 }
 
 }  // namespace
