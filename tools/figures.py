@@ -227,12 +227,14 @@ def zoom_panes(path, count, zoom):
     H, W = big.shape[0], big.shape[1] // count
     h, w = H // zoom, W // zoom
     result = Image.new("RGB", (w * count, h))
+    top, legend = 75, (95, 420)  # the bands where the editor draws the numbers (top) and the legend (bottom right)
     for k in range(count):
         pane = big[:, k * W:(k + 1) * W]
         drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
-        drawn[:75, :300] = False  # the numbers' and the legend's boxes (their text keeps its size in pixels)
-        drawn[H - 95:, W - 255:] = False
-        ys, xs = np.nonzero(drawn)
+        overlay = np.zeros_like(drawn)
+        overlay[:top] = drawn[:top]
+        overlay[H - legend[0]:, W - legend[1]:] = drawn[H - legend[0]:, W - legend[1]:]
+        ys, xs = np.nonzero(drawn & ~overlay)
         if len(ys) == 0:
             ys, xs = np.array([0, H - 1]), np.array([0, W - 1])
         # The mesh fills the lower 78 % of the square (the numbers stay above it), with a small margin.
@@ -241,10 +243,13 @@ def zoom_panes(path, count, zoom):
         sw = side * w // h
         x0 = int(np.clip((xs.max() + xs.min()) // 2 - sw // 2, 0, W - sw))
         crop = Image.fromarray(pane[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
-        for (y, x, bh, bw), (ty, tx) in (((0, 0, 75, 300), (0, 0)), ((H - 95, W - 255, 95, 255), (h - 95, w - 255))):
-            box = pane[y:y + bh, x:x + bw]
-            if (np.abs(box.astype(int) - background).max(axis=2) > 12).any():  # the editor drew a box here
-                crop.paste(Image.fromarray(box), (tx, ty))
+        # The editor's boxes go back at their own size, in the same corners.
+        for y, x, bh, bw in ((0, 0, top, w), (H - legend[0], W - legend[1], legend[0], legend[1])):
+            mask = overlay[y:y + bh, x:x + bw]
+            if mask.any():
+                where = (0 if x == 0 else w - bw, 0 if y == 0 else h - bh)
+                box, alpha = pane[y:y + bh, x:x + bw], (mask * 255).astype(np.uint8)
+                crop.paste(Image.fromarray(box), where, Image.fromarray(alpha))
         result.paste(crop, (k * w, 0))
     result.save(path)
 
