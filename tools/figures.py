@@ -242,7 +242,9 @@ def zoom_panes(path, count, zoom):
         y0 = int(np.clip(ys.min() - 0.19 * side, 0, H - side))
         sw = side * w // h
         x0 = int(np.clip((xs.max() + xs.min()) // 2 - sw // 2, 0, W - sw))
-        crop = Image.fromarray(pane[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
+        clean = pane.copy()
+        clean[overlay] = background  # the boxes must not come along, scaled down, in the crop
+        crop = Image.fromarray(clean[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
         # The editor's boxes go back at their own size, in the same corners.
         for y, x, bh, bw in ((0, 0, top, w), (H - legend[0], W - legend[1], legend[0], legend[1])):
             mask = overlay[y:y + bh, x:x + bw]
