@@ -11,7 +11,7 @@
 #include <cstdlib>
 
 #include "cli_test_support.h"
-#include "obj_io.h"
+#include "mesh_formats.h"
 
 namespace somicage {
 namespace {
