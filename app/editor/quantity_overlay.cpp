@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh_renderer.h"
+#include "panels.h"  // tooltip
 #include "selection.h"
 
 namespace somicage::editor {
@@ -95,7 +96,12 @@ void measureViews(AppState& state) {
       state.statusMessage = "measuring cancelled";
     } else if (outcome->key.sweep) {
       q.nuSweep = std::move(outcome->sweep);
-      q.nuSweepGeneration = outcome->key.poseGeneration;
+      const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
+      const bool current = outcome->key.poseGeneration == state.deformGeneration && deformer;
+      q.nuSweepPose = current ? state.pose : Eigen::MatrixXd();
+      q.nuSweepDeformer = current ? *deformer : nullptr;
+      q.nuSweepParams = state.params;
+      logLine(state, "job nu sweep");
     } else if (outcome->key == key) {
       for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
         q.measured[v] = std::move(outcome->views[v]);
@@ -428,15 +434,26 @@ void drawShowChoice(AppState& state) {
 
 void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
 
+bool nuSweepCurrent(const AppState& state) {
+  const ViewQuantities& q = state.quantities;
+  const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
+  const DeformParams &a = q.nuSweepParams, &b = state.params;
+  return !q.nuSweep.empty() && deformer && q.nuSweepDeformer.lock() == *deformer &&
+         q.nuSweepPose.rows() == state.pose.rows() && q.nuSweepPose.cols() == state.pose.cols() &&
+         q.nuSweepPose == state.pose && a.gamma == b.gamma && a.blend == b.blend &&
+         a.tractionCorrection == b.tractionCorrection && a.corotational == b.corotational;
+}
+
 void drawNuPlot(AppState& state) {
   if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
+  tooltip(
+      "Deform the current pose at 25 values of nu in (-0.95, 0.49) and plot the volume change and the fold-over\n"
+      "count against nu (on the measuring worker); a click on the plot sets nu.");
   const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
-  const bool stale = state.quantities.nuSweepGeneration != state.deformGeneration;
   ImGui::SameLine();
-  ImGui::TextDisabled(sweep.empty() ? "volume change vs nu"
-                      : stale       ? "(pose changed: sweep again)"
-                                    : "volume change vs nu");
+  ImGui::TextDisabled(sweep.empty() || nuSweepCurrent(state) ? "volume change vs nu"
+                                                             : "(the pose changed: sweep again)");
   if (sweep.empty()) return;
   std::vector<float> change;
   int folds = 0;
@@ -465,6 +482,17 @@ void drawNuPlot(AppState& state) {
   if (std::isfinite(state.params.nu)) {  // the current nu
     const float x = xOf(state.params.nu);
     draw->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
+  }
+  {  // the nu axis: its ends under the plot's corners, its name in the middle
+    char lo[24], hi[24];
+    std::snprintf(lo, sizeof lo, "%.2f", nu0);
+    std::snprintf(hi, sizeof hi, "%.2f", nu1);
+    const ImU32 axis = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    const float y = b.y + 1;
+    draw->AddText(ImVec2(a.x, y), axis, lo);
+    draw->AddText(ImVec2(b.x - ImGui::CalcTextSize(hi).x, y), axis, hi);
+    draw->AddText(ImVec2(0.5f * (a.x + b.x) - 0.5f * ImGui::CalcTextSize("nu").x, y), axis, "nu");
+    ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight()));
   }
   ImGui::TextColored(ImGui::GetStyleColorVec4(ImGuiCol_PlotLines), "- volume change %% (left scale)");
   ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(foldColor), "- fold-overs (0 .. %d)", folds);
