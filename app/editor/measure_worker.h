@@ -10,8 +10,8 @@
 
 #include <Eigen/Core>
 #include <cstdint>
-#include <map>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>

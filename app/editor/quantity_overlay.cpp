@@ -163,8 +163,31 @@ int colorMapRow(const QuantityDescriptor& d) {
   return d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
 }
 
+// Fold-overs have two classes, not a scale: every unfolded vertex at the map's neutral centre, the folded ones
+// magenta. A colour bar from 0.999 to 1.001 said nothing (issue 24, row 8); two swatches say what the colours mean.
+void drawCategoryLegend(const QuantityDescriptor& d, const ViewRect& view) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const char* labels[2] = {"det J > 0", "fold-over (det J <= 0)"};
+  const ImU32 colors[2] = {toImColor(render::colorMapColor(render::kDivergingMap, 0.5f)),
+                           toImColor(render::kFoldoverColor)};
+  const float boxW = std::max(ImGui::CalcTextSize(d.name).x, 18 + ImGui::CalcTextSize(labels[1]).x);
+  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
+  const float y0 = static_cast<float>(view.y + view.height) - 58;
+  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + 50), IM_COL32(20, 20, 24, 190), 3.0f);
+  draw->AddText(ImVec2(x0, y0 - 20), kText, d.name);
+  for (int k = 0; k < 2; ++k) {
+    const float y = y0 + 4 + 20 * static_cast<float>(k);
+    draw->AddRectFilled(ImVec2(x0, y), ImVec2(x0 + 12, y + 12), colors[k]);
+    draw->AddText(ImVec2(x0 + 18, y - 1), kText, labels[k]);
+  }
+}
+
 void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
+  if (std::string(d.id) == "foldover") {
+    drawCategoryLegend(d, view);
+    return;
+  }
   const ColorRange range = shownRange(state, quantity);
   const auto fixed = state.quantities.show.ranges.find(quantity);
   const bool isFixed = fixed != state.quantities.show.ranges.end() && fixed->second.fixed;
@@ -366,7 +389,7 @@ void drawRangeSetting(AppState& state, int quantity) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
   auto it = state.quantities.show.ranges.find(quantity);
   RangeSetting setting = it != state.quantities.show.ranges.end() ? it->second : RangeSetting{};
-  if (it == state.quantities.show.ranges.end()) setting.range = shownRange(state, quantity);
+  setting.range = rangeFieldsValue(state.quantities.show, quantity, shownRange(state, quantity));
   ImGui::PushID(quantity);
   bool changed = ImGui::Checkbox("fixed range", &setting.fixed);
   ImGui::SameLine();

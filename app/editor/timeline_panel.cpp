@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
 #include "panels.h"  // tooltip
 #include "pose_keys.h"
@@ -170,6 +172,9 @@ void drawAnimationExportDialogs(AppState& state) {
     ImGui::SameLine();
     ImGui::RadioButton("PNG images of the views", &kind, 2);
     ImGui::InputText(kind == 0 ? "file (.glb)" : "new folder", &path);
+    std::error_code ec;  // where a bare name goes: the editor's working folder
+    const std::filesystem::path where = std::filesystem::absolute(path, ec);
+    ImGui::TextDisabled("writes %s", ec ? path.c_str() : where.lexically_normal().c_str());
     ImGui::TextDisabled("frames %d..%d at %.1f fps (Timeline panel)", a.timeline.firstFrame, a.timeline.lastFrame,
                         a.timeline.fps);
     if (ImGui::Button("Export")) {

@@ -1,6 +1,8 @@
 // The precomputes' parallel loop (core/point_blocks.h): every point once, and an exception thrown on an OpenMP
 // thread (a point that fails, a scratch buffer that cannot be allocated) reaches the caller as that exception,
 // instead of ending the process (std::terminate, which an exception leaving a parallel region calls).
+#include "point_blocks.h"
+
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -8,7 +10,6 @@
 #include <vector>
 
 #include "errors.h"
-#include "point_blocks.h"
 
 namespace somicage {
 namespace {

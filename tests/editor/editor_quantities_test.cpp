@@ -88,6 +88,14 @@ TEST(EditorQuantities, ViewsShowingAQuantityShareItsRangeAndATypedRangeReplacesI
   EXPECT_DOUBLE_EQ(r.hi, 3.0);  // the automatic range again
   EXPECT_FALSE(rangeProblem(ColorRange{3, 1}, ColorScale::Viridis).empty());
   EXPECT_TRUE(rangeProblem(ColorRange{0, 0.1}, ColorScale::Viridis).empty());
+
+  // Issue 24, row 8: the fields showed a typed range after "fixed" was unticked; they show the range drawn then.
+  const ColorRange drawn = quantityRange(show, quantity("detj"), views);
+  show.ranges[quantity("detj")] = RangeSetting{true, ColorRange{0.5, 4.0}};
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).hi, 4.0);
+  show.ranges[quantity("detj")].fixed = false;
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).lo, 1.0 / 3.0);
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).hi, 3.0);
 }
 
 TEST(EditorQuantities, ShowParsesOnePerViewAndTheFieldVertex) {

@@ -66,9 +66,8 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
   EXPECT_EQ(wakes.load(), 3) << "cage generation";
   EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Ready);
 
-  ASSERT_TRUE(state.exporter.start("nowhere", "done", [](const ProgressCallback&) {
-    return std::vector<std::string>{};
-  }));
+  ASSERT_TRUE(
+      state.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
   ASSERT_TRUE(state.exporter.wait().has_value());
   EXPECT_EQ(wakes.load(), 4) << "export";
 }
