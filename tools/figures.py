@@ -564,10 +564,40 @@ def guide_makecage(out):
            extra=["--make-cage", "200"], ui=True, size=(1000, 560), analyzed=False)
 
 
+def guide_timeline(out):  # a session with two poses keyed at frames 1 and 48: the pose library and the timeline
+    mesh, cage, posed = model("cactus")
+    rest, moved = read_vertices(cage), read_vertices(posed)
+    points = np.vstack([read_vertices(mesh), rest, moved])
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    radius = 0.5 * np.linalg.norm(hi - lo)
+    half_fov = math.radians(35) / 2  # the editor's framing (app/editor/camera.cpp, OrbitCamera::frame)
+    session = {
+        "format": "somicage-session", "version": 3, "mesh": mesh, "cage": cage, "demoDim": 3,
+        "pose": moved.tolist(), "method": "somigliana",
+        "params": {"blend": 0, "nu": 0.3, "gamma": 0, "tractionCorrection": True, "corotational": False},
+        "compare": False, "compareMethods": [],
+        "camera": {"target": ((lo + hi) / 2).tolist(), "distance": 1.1 * radius / math.sin(half_fov),
+                   "yaw": 0.6, "pitch": 0.35},
+        "poses": [{"name": "rest", "vertices": rest.tolist()}, {"name": "bent", "vertices": moved.tolist()}],
+        "timeline": {"fps": 24, "first": 1, "last": 48, "loop": True, "interpolation": "catmull-rom",
+                     "keys": [{"frame": 1, "pose": "rest"}, {"frame": 48, "pose": "bent"}]},
+    }
+    path = os.path.join(out.work, "guide_timeline.json")
+    with open(path, "w") as f:
+        json.dump(session, f)
+    image = os.path.join(out.work, "guide_timeline_0.png")
+    args = [EXE, "--session", path, "--size", "1000x560", "--screenshot", image]
+    run(args)
+    save_png([image], os.path.join(out.dir, "guide_timeline.png"))
+    title = "Guide: poses and keys (CACTUS, rest at frame 1, the paper's pose at 48)"
+    write_numbers(os.path.join(out.dir, "guide_timeline.md"), title,
+                  [shown(args) + "   (the session: poses rest and bent, keyed at frames 1 and 48)"], [])
+
+
 FIGURES = {"hero": hero, "fig02": fig02, "fig03": fig03, "fig04": fig04, "fig05": fig05, "fig06": fig06,
            "fig07": fig07, "fig08": fig08, "fig09": fig09, "fig10": fig10, "fig11": fig11,
            "guide_editor": guide_editor, "guide_pose": guide_pose, "guide_analysis": guide_analysis,
-           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage}
+           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline}
 
 
 class Output:
