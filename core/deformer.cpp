@@ -4,6 +4,7 @@
 #include <string>
 
 #include "errors.h"
+#include "medit_io.h"
 
 namespace somicage {
 
@@ -22,6 +23,30 @@ void validateDeformParams(const DeformParams& params) {
 void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params,
                           Eigen::MatrixXd& out) const {
   evaluateFrame(coordinates_, frameWeights(posedVertices, params), dim(), threads_, out);
+}
+
+std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
+                                                int* reoriented) {
+  if (options.volumeMesh) return options.volumeMesh;
+  int flipped = 0;
+  std::shared_ptr<VolumeMesh> mesh;
+  if (const auto file = options.methodOptions.find("tets"); file != options.methodOptions.end()) {
+    MeditMesh read = readMedit(file->second);
+    flipped = checkVolumeMesh(read.mesh, restCage, read.source);
+    mesh = std::make_shared<VolumeMesh>(std::move(read.mesh));
+  } else if (std::unique_ptr<VolumeMesh> star = options.methodOptions.count("tet-level") == 0 ? starVolumeMesh(restCage)
+                                                                                            : nullptr) {
+    mesh = std::move(star);  // the coarsest mesh there is, the same in every front end
+  } else if (options.volumeMesher) {
+    mesh = std::make_shared<VolumeMesh>(options.volumeMesher(restCage, options.methodOptions));
+    flipped = checkVolumeMesh(*mesh, restCage, {"the generated volume mesh", {}, {}});
+  } else {
+    throw InputError("--tets", -1, "the cage needs a tetrahedral mesh, and it is not star-shaped from its centroid",
+                     "give one with --tets FILE.mesh (Python: tets=), or use a front end that tetrahedralizes cages "
+                     "(the somicage command, the editor)");
+  }
+  if (reoriented) *reoriented = flipped;
+  return mesh;
 }
 
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,

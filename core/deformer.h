@@ -14,6 +14,7 @@
 #include "integration_options.h"
 #include "method.h"
 #include "progress.h"
+#include "volume_mesh.h"
 
 namespace somicage {
 
@@ -36,7 +37,21 @@ struct PrecomputeOptions {
   // Integrates the rows of the methods that integrate row by row (Somigliana): empty = the CPU's; a device's
   // (cuda_backend.h: cudaRowIntegrator) may be injected. The rows are written into C by the method either way.
   RowIntegrator rowIntegrator;
+  // The method's own options (MethodDescriptor::options), by key: e.g. Phong's "tets" and "tet-level".
+  MethodOptions methodOptions;
+  // For a method that needs a volume mesh of the rest cage (MethodDescriptor::needsVolumeMesh): the mesh when a
+  // front end has made it already (engine.h: prepareVolumeMesh), else the method makes it (volumeMeshFor: the
+  // "tets" file, else volumeMesher, else the star of the cage's faces).
+  std::shared_ptr<const VolumeMesh> volumeMesh;
+  VolumeMesher volumeMesher;
 };
+
+// A volume method's mesh: options.volumeMesh; else the MEDIT file methodOptions["tets"] (checkVolumeMesh: *reoriented
+// counts the reoriented simplices); else, with no "tet-level" asked for, the cage's star (starVolumeMesh) when it is
+// star-shaped from its centroid; else options.volumeMesher's (checked too). Throws InputError naming --tets when
+// there is none (a cage not star-shaped from its centroid, and no mesher).
+std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
+                                                int* reoriented = nullptr);
 
 // Per-point facts established by the precompute (#P each; empty where a method does not provide them).
 struct PrecomputeDiagnostics {

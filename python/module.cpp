@@ -78,13 +78,15 @@ void defineCage(py::module_& module) {
 void defineDeformer(py::module_& module) {
   py::class_<PythonDeformer>(module, "Deformer",
                              "Precomputed coordinates of points in a rest cage (GIL released, progress, cancel).")
-      .def(py::init<const PythonCage&, const py::handle&, const std::string&, int, bool, const py::object&>(),
+      .def(py::init<const PythonCage&, const py::handle&, const std::string&, int, bool, const py::object&,
+                    const std::string&>(),
            py::arg("cage"), py::arg("points"), py::arg("method") = "somigliana", py::kw_only(), py::arg("threads") = 0,
-           py::arg("float_storage") = false, py::arg("progress") = py::none(),
+           py::arg("float_storage") = false, py::arg("progress") = py::none(), py::arg("tets") = "",
            "points (P, d) (a 2D cage also takes (P, 3) and uses x, y); method: one of somicage.methods(); "
            "threads: 0 = all cores, for the precompute and every deform; float_storage: store the coordinates in "
            "float (half the memory, ~1e-7 relative error); progress(fraction) -> False cancels (somicage.Cancelled); "
-           "Ctrl-C raises KeyboardInterrupt.")
+           "Ctrl-C raises KeyboardInterrupt; tets: a MEDIT .mesh tetrahedral mesh of the cage for method='phong' "
+           "(default: the cage coned from its centroid, when it is star-shaped from it).")
       .def(
           "deform",
           [](const PythonDeformer& deformer, const py::handle& posed, double nu, double gamma,

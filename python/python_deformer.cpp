@@ -52,7 +52,7 @@ Eigen::MatrixXd inCageDimension(Eigen::MatrixXd matrix, int dim, const std::stri
 }  // namespace
 
 PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points, const std::string& method, int threads,
-                               bool floatStorage, const py::object& progress)
+                               bool floatStorage, const py::object& progress, const std::string& tets)
     : restCage_(cage.cage) {
   const Method chosen = methodArgument(method);
   const int dim = restCage_.dim();
@@ -62,9 +62,15 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
   options.threads = threads;
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
+  if (!tets.empty()) options.methodOptions["tets"] = tets;
   points_ =
       meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
+  try {
+    prepareVolumeMesh(chosen, restCage_, options, [](const Notice& n) { warn(describeNotice(n)); });
+  } catch (const InputError& e) {  // the keyword, not the command line's option
+    throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+  }
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;

@@ -32,8 +32,10 @@ struct PythonDeformOptions {
 class PythonDeformer {
  public:
   // points: (#P, d), or (#P, 3) for a 2D cage (x, y are used, as by `somicage deform`).
+  // tets: a MEDIT volume mesh of the cage for a method that needs one (Phong's option "tets"); empty: the
+  // cage's star when it is star-shaped from its centroid (the module does not link CGAL's tetrahedralization).
   PythonDeformer(const PythonCage& cage, const pybind11::handle& points, const std::string& method, int threads,
-                 bool floatStorage, const pybind11::object& progress);
+                 bool floatStorage, const pybind11::object& progress, const std::string& tets = "");
 
   // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
   Eigen::MatrixXd deform(const pybind11::handle& posed, const PythonDeformOptions& options) const;

@@ -109,7 +109,8 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
   noteIgnoredParameters(kCommand, args, method);
 
-  const PrecomputeOptions options = precomputeOptions(threads);
+  PrecomputeOptions options = precomputeOptions(threads);
+  applyMethodOptions(args, method, cage, options);
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {

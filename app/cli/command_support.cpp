@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <iostream>
 
+#include "cage_tetrahedralization.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
@@ -89,8 +90,26 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
                     {"--corotational", "",
                      "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
                 });
+  const std::vector<OptionSpec> own = methodOptionSpecs();
+  before.insert(before.end(), own.begin(), own.end());
   before.insert(before.end(), after.begin(), after.end());
   return before;
+}
+
+std::vector<OptionSpec> methodOptionSpecs() {
+  std::vector<OptionSpec> specs;
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      specs.push_back({std::string("--") + o.key, o.value, std::string(o.help) + "; " + m->name + " only"});
+  return specs;
+}
+
+void applyMethodOptions(const ArgParser& args, Method method, const Cage& cage, PrecomputeOptions& options) {
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      if (args.has(std::string("--") + o.key)) options.methodOptions[o.key] = args.text(std::string("--") + o.key);
+  options.volumeMesher = tetrahedralizeCageWithOptions;
+  prepareVolumeMesh(method, cage, options, printNotice);
 }
 
 std::string methodsHelp() {
@@ -127,6 +146,10 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
   for (const ParameterOption& o : kParameterOptions)
     if (args.has(o.option) && !readsParameter(method, o.parameter))
       ignored += (ignored.empty() ? "" : ", ") + std::string(o.option) + " (" + methodsReading(o.parameter) + ")";
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      if (m != method && args.has(std::string("--") + o.key))
+        ignored += (ignored.empty() ? "" : ", ") + std::string("--") + o.key + " (" + m->name + " only)";
   if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
 }
 

@@ -51,6 +51,14 @@ int threadsOption(const ArgParser& args);
 // The options of a precompute on that many threads (0: all cores), its integration's included.
 PrecomputeOptions precomputeOptions(int threads);
 
+// Every method's own precompute options (MethodDescriptor::options) as --KEY VALUE, with "; NAME only": part of
+// withDeformParams, for the commands that precompute without it (animate, bench).
+std::vector<OptionSpec> methodOptionSpecs();
+// The method options given (--KEY VALUE) in options.methodOptions, the CGAL tetrahedralization as the volume
+// mesher, and, for a method that needs a volume mesh, the mesh made now (engine.h: prepareVolumeMesh), its
+// notices printed.
+void applyMethodOptions(const ArgParser& args, Method method, const Cage& cage, PrecomputeOptions& options);
+
 // Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
 // PATH: ..." for a warning. The commands load through the engine facade with it.
 void printNotice(const Notice& notice);

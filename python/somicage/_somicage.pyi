@@ -48,8 +48,9 @@ class Cage:
 
 class Deformer:
     def __init__(self, cage: Cage, points: ArrayLike, method: str = "somigliana", *, threads: int = 0,
-                 float_storage: bool = False, progress: Optional[Progress] = None) -> None:
-        """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released."""
+                 float_storage: bool = False, progress: Optional[Progress] = None, tets: str = "") -> None:
+        """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released; tets: a MEDIT
+        tetrahedral mesh of the cage for method="phong"."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
                blend: Optional[float] = None, traction_fix: bool = True,
                corotational: bool = False) -> npt.NDArray[np.float64]:
