@@ -34,12 +34,17 @@ std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const Prec
     MeditMesh read = readMedit(file->second);
     flipped = checkVolumeMesh(read.mesh, restCage, read.source);
     mesh = std::make_shared<VolumeMesh>(std::move(read.mesh));
-  } else if (std::unique_ptr<VolumeMesh> star = options.methodOptions.count("tet-level") == 0 ? starVolumeMesh(restCage)
-                                                                                            : nullptr) {
+  } else if (std::unique_ptr<VolumeMesh> star =
+                 options.methodOptions.count("tet-level") == 0 ? starVolumeMesh(restCage) : nullptr) {
     mesh = std::move(star);  // the coarsest mesh there is, the same in every front end
   } else if (options.volumeMesher) {
     mesh = std::make_shared<VolumeMesh>(options.volumeMesher(restCage, options.methodOptions));
-    flipped = checkVolumeMesh(*mesh, restCage, {"the generated volume mesh", {}, {}});
+    try {
+      flipped = checkVolumeMesh(*mesh, restCage, {"the generated tetrahedral mesh", {}, {}});
+    } catch (const InputError& e) {  // e.g. a sliver CGAL left flat: the user can only change the level
+      throw InputError("--tet-level", -1, "the generated tetrahedral mesh is unusable: " + e.problem(),
+                       "try another --tet-level, or give a tetrahedral mesh with --tets");
+    }
   } else {
     throw InputError("--tets", -1, "the cage needs a tetrahedral mesh, and it is not star-shaped from its centroid",
                      "give one with --tets FILE.mesh (Python: tets=), or use a front end that tetrahedralizes cages "

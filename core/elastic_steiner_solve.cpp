@@ -23,7 +23,8 @@ Eigen::SparseMatrix<double> block(const Eigen::SparseMatrix<double>& K, const st
       const int r = rowIndex[static_cast<std::size_t>(it.row())], k = colIndex[static_cast<std::size_t>(it.col())];
       if (r >= 0 && k >= 0) entries.emplace_back(r, k, it.value());
     }
-  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(rows.size()) * d, static_cast<Eigen::Index>(cols.size()) * d);
+  Eigen::SparseMatrix<double> out(static_cast<Eigen::Index>(rows.size()) * d,
+                                  static_cast<Eigen::Index>(cols.size()) * d);
   out.setFromTriplets(entries.begin(), entries.end());
   return out;
 }
@@ -77,16 +78,19 @@ ElasticSteinerSolver::ElasticSteinerSolver(const VolumeMesh& rest, const std::ve
   freeKnownLambda_ = block(kLambda_, freeVertices_, knownVertices_, d);
 }
 
-Eigen::SparseMatrix<double> ElasticSteinerSolver::stiffness(double nu) const { return kMu_ + lameLambda(nu) * kLambda_; }
+Eigen::SparseMatrix<double> ElasticSteinerSolver::stiffness(double nu) const {
+  return kMu_ + lameLambda(nu) * kLambda_;
+}
 
 void ElasticSteinerSolver::factor(double nu) {
   if (factored_ && nu == nu_) return;
   const int d = static_cast<int>(rest_.cols());
   if (!elasticEnergyPositiveDefinite(nu, d))
     throw InputError("nu", -1,
-                     "Poisson ratio " + std::to_string(nu) + " makes the elastic energy of the Steiner vertices "
-                     "indefinite (lambda = 2 nu / (1 - 2 nu) needs mu + " + std::to_string(d) +
-                         " lambda / 2 > 0), so they would have no resting place",
+                     "Poisson ratio " + std::to_string(nu) +
+                         " makes the elastic energy of the Steiner vertices "
+                         "indefinite (lambda = 2 nu / (1 - 2 nu) needs mu + " +
+                         std::to_string(d) + " lambda / 2 > 0), so they would have no resting place",
                      d == 3 ? "use a finite nu in (-1, 0.5)" : "use a finite nu below 0.5");
   freeKnown_ = freeKnownMu_ + lameLambda(nu) * freeKnownLambda_;
   factor_ = std::make_unique<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>>();
@@ -110,7 +114,8 @@ void ElasticSteinerSolver::solve(Eigen::MatrixXd& positions) const {
         (positions.row(knownVertices_[i]) - rest_.row(knownVertices_[i])).transpose();
   const Eigen::VectorXd u = factor_->solve(-(freeKnown_ * known));
   for (std::size_t i = 0; i < freeVertices_.size(); ++i)
-    positions.row(freeVertices_[i]) = rest_.row(freeVertices_[i]) + u.segment(static_cast<Eigen::Index>(i) * d, d).transpose();
+    positions.row(freeVertices_[i]) =
+        rest_.row(freeVertices_[i]) + u.segment(static_cast<Eigen::Index>(i) * d, d).transpose();
 }
 
 }  // namespace somicage

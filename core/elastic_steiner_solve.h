@@ -49,7 +49,7 @@ class ElasticSteinerSolver {
   std::vector<int> freeVertices_, knownVertices_;
   Eigen::SparseMatrix<double> kMu_, kLambda_;  // all vertices, vertex-major
   Eigen::SparseMatrix<double> freeFreeMu_, freeFreeLambda_, freeKnownMu_, freeKnownLambda_;
-  Eigen::SparseMatrix<double> freeKnown_;       // at the factored nu
+  Eigen::SparseMatrix<double> freeKnown_;  // at the factored nu
   std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
   double nu_ = 0;
   bool factored_ = false;

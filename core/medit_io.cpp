@@ -100,9 +100,10 @@ struct SkippedSection {
   const char* keyword;
   int numbers;
 };
-constexpr SkippedSection kSkipped[] = {{"Edges", 3},          {"Triangles", 4},        {"Quadrilaterals", 5},
-                                       {"Corners", 1},        {"Ridges", 1},           {"RequiredVertices", 1},
-                                       {"RequiredEdges", 1},  {"RequiredTriangles", 1}, {"Hexahedra", 9}};
+constexpr SkippedSection kSkipped[] = {
+    {"Edges", 3},    {"Triangles", 4},        {"Quadrilaterals", 5}, {"Corners", 1},
+    {"Ridges", 1},   {"RequiredVertices", 1}, {"RequiredEdges", 1},  {"RequiredTriangles", 1},
+    {"Hexahedra", 9}};
 
 // Far more than any cage's volume mesh; keeps a corrupt count from reserving the machine's memory.
 constexpr long long kMaxEntries = 50000000;
@@ -130,7 +131,8 @@ MeditMesh parseMedit(const std::string& text, const std::string& source) {
       const long long n = in.integer("the vertex count", 1, kMaxEntries);
       for (long long v = 0; v < n; ++v) {
         for (int a = 0; a < dim; ++a) {
-          coordinates.push_back(in.number("coordinate " + std::to_string(a + 1) + " of vertex " + std::to_string(v + 1)));
+          coordinates.push_back(
+              in.number("coordinate " + std::to_string(a + 1) + " of vertex " + std::to_string(v + 1)));
           if (a == 0) out.source.vertexLines.push_back(in.line());  // the line of its first number
         }
         in.integer("the reference of vertex " + std::to_string(v + 1), -(1LL << 31), (1LL << 31) - 1);
@@ -159,7 +161,8 @@ MeditMesh parseMedit(const std::string& text, const std::string& source) {
       if (skipped == nullptr)
         in.fail("unknown keyword '" + std::string(token) + "'",
                 "a volume mesh has MeshVersionFormatted, Dimension, Vertices, " +
-                    std::string(dim == 2 ? "Triangles" : "Tetrahedra") + " and End (Edges, Triangles, Corners, "
+                    std::string(dim == 2 ? "Triangles" : "Tetrahedra") +
+                    " and End (Edges, Triangles, Corners, "
                     "Ridges and Required* are skipped)");
       const long long n = in.integer("the entry count of " + std::string(skipped->keyword), 0, kMaxEntries);
       for (long long e = 0; e < n * skipped->numbers; ++e) in.expect("an entry of " + std::string(skipped->keyword));

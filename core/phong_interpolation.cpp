@@ -27,7 +27,8 @@ PhongVertexWeights phongVertexWeights(const VolumeMesh& rest) {
     double sum = 0;
     const std::size_t first = out.weight.size();
     for (std::size_t t = 0; t < star.size(); ++t) {
-      const double w = (1 + a.dot(directions.col(static_cast<Eigen::Index>(t)))) / lengths(static_cast<Eigen::Index>(t));
+      const double w =
+          (1 + a.dot(directions.col(static_cast<Eigen::Index>(t)))) / lengths(static_cast<Eigen::Index>(t));
       out.simplex.push_back(star[t]);
       out.weight.push_back(w);
       sum += w;
@@ -56,7 +57,8 @@ std::vector<Eigen::MatrixXd> vertexGradients(const PhongVertexWeights& weights,
   std::vector<Eigen::MatrixXd> out(n, Eigen::MatrixXd::Zero(d, d));
   for (std::size_t v = 0; v < n; ++v)
     for (int k = weights.start[v]; k < weights.start[v + 1]; ++k)
-      out[v] += weights.weight[static_cast<std::size_t>(k)] * simplexF[static_cast<std::size_t>(weights.simplex[static_cast<std::size_t>(k)])];
+      out[v] += weights.weight[static_cast<std::size_t>(k)] *
+                simplexF[static_cast<std::size_t>(weights.simplex[static_cast<std::size_t>(k)])];
   return out;
 }
 

@@ -18,8 +18,8 @@ class SimplexLocator {
   static constexpr double kTolerance = 1e-10;
 
   struct Location {
-    int simplex = -1;              // -1: in no simplex (outside the cage)
-    Eigen::VectorXd barycentric;   // d + 1 numbers summing to 1, for vertex k of the simplex
+    int simplex = -1;             // -1: in no simplex (outside the cage)
+    Eigen::VectorXd barycentric;  // d + 1 numbers summing to 1, for vertex k of the simplex
   };
   // Of the simplices holding x, the one in which x lies deepest (largest smallest coordinate).
   Location locate(const Eigen::VectorXd& x) const;
@@ -33,8 +33,8 @@ class SimplexLocator {
   const VolumeMesh& mesh_;
   std::vector<Eigen::MatrixXd> gradients_;
   Eigen::VectorXd lower_, cellSize_;
-  Eigen::VectorXi cells_;                       // per axis
-  std::vector<std::vector<int>> buckets_;       // per cell, the simplices whose box meets it
+  Eigen::VectorXi cells_;                  // per axis
+  std::vector<std::vector<int>> buckets_;  // per cell, the simplices whose box meets it
   int cellIndex(const Eigen::VectorXi& cell) const;
 };
 

@@ -39,8 +39,8 @@ double longestEdge(const VolumeMesh& mesh, int s) {
   double longest = 0;
   for (int a = 0; a <= mesh.dim(); ++a)
     for (int b = a + 1; b <= mesh.dim(); ++b)
-      longest = std::max(
-          longest, (mesh.vertices.row(mesh.simplices(s, a)) - mesh.vertices.row(mesh.simplices(s, b))).norm());
+      longest =
+          std::max(longest, (mesh.vertices.row(mesh.simplices(s, a)) - mesh.vertices.row(mesh.simplices(s, b))).norm());
   return longest;
 }
 
@@ -91,7 +91,9 @@ std::vector<BoundaryFace> boundaryFaces(const VolumeMesh& mesh, int* overShared)
 int checkVolumeMesh(VolumeMesh& mesh, const Cage& cage, const VolumeMeshSource& source) {
   const int d = cage.dim(), n = cage.numVertices();
   const double diameter = cageDiameter(cage.vertices);
-  const auto vertexLine = [&](int v) { return v < static_cast<int>(source.vertexLines.size()) ? source.vertexLines[v] : -1L; };
+  const auto vertexLine = [&](int v) {
+    return v < static_cast<int>(source.vertexLines.size()) ? source.vertexLines[v] : -1L;
+  };
   const auto simplexLine = [&](int s) {
     return s < static_cast<int>(source.simplexLines.size()) ? source.simplexLines[s] : -1L;
   };
@@ -101,18 +103,19 @@ int checkVolumeMesh(VolumeMesh& mesh, const Cage& cage, const VolumeMeshSource& 
                      "the mesh is " + std::to_string(mesh.dim()) + "D but the cage is " + std::to_string(d) + "D",
                      "give a volume mesh of this cage");
   if (mesh.numVertices() < n)
-    throw InputError(source.name, -1,
-                     "the mesh has " + std::to_string(mesh.numVertices()) + " vertices, fewer than the cage's " +
-                         std::to_string(n),
-                     "its first " + std::to_string(n) + " vertices must be the cage's, in the cage file's order");
+    throw InputError(
+        source.name, -1,
+        "the mesh has " + std::to_string(mesh.numVertices()) + " vertices, fewer than the cage's " + std::to_string(n),
+        "its first " + std::to_string(n) + " vertices must be the cage's, in the cage file's order");
   for (int i = 0; i < n; ++i) {
     const double distance = (mesh.vertices.row(i) - cage.vertices.row(i)).norm() / diameter;
     if (!(distance <= kOnCage))
       throw InputError(source.name, vertexLine(i),
-                       "vertex " + std::to_string(i + 1) + " is " + format(distance) + " cage diameters from cage vertex " +
-                           std::to_string(i + 1),
-                       "the first " + std::to_string(n) + " vertices must be the cage's vertices in the cage file's "
-                       "order (to 1e-9 cage diameters)");
+                       "vertex " + std::to_string(i + 1) + " is " + format(distance) +
+                           " cage diameters from cage vertex " + std::to_string(i + 1),
+                       "the first " + std::to_string(n) +
+                           " vertices must be the cage's vertices in the cage file's "
+                           "order (to 1e-9 cage diameters)");
   }
   for (int s = 0; s < mesh.numSimplices(); ++s)
     for (int k = 0; k <= d; ++k)
@@ -163,14 +166,16 @@ int checkVolumeMesh(VolumeMesh& mesh, const Cage& cage, const VolumeMeshSource& 
     if (!(distance <= kOnCage * diameter))
       throw InputError(source.name, simplexLine(use.simplex),
                        element + " " + std::to_string(use.simplex + 1) + " has a boundary face " +
-                           format(distance / diameter) + " cage diameters off the cage: the mesh has a hole, or reaches "
+                           format(distance / diameter) +
+                           " cage diameters off the cage: the mesh has a hole, or reaches "
                            "outside the cage",
                        "mesh the cage's interior with the cage's faces as its boundary (or give no mesh: somicage "
                        "tetrahedralizes the cage itself)");
     if (normal.dot(proximity.closest(centroid).normal) <= 0)
-      throw InputError(source.name, simplexLine(use.simplex),
-                       element + " " + std::to_string(use.simplex + 1) + " lies outside the cage, against one of its faces",
-                       "mesh the cage's interior only");
+      throw InputError(
+          source.name, simplexLine(use.simplex),
+          element + " " + std::to_string(use.simplex + 1) + " lies outside the cage, against one of its faces",
+          "mesh the cage's interior only");
   }
   const double cageMeasure = faceAreas(cage, cage.vertices).sum();
   if (!(std::abs(boundaryMeasure - cageMeasure) <= 1e-9 * cageMeasure))

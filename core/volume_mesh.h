@@ -17,7 +17,7 @@
 namespace somicage {
 
 struct VolumeMesh {
-  Eigen::MatrixXd vertices;  // #N by d; rows 0 .. #V - 1 are the cage's
+  Eigen::MatrixXd vertices;   // #N by d; rows 0 .. #V - 1 are the cage's
   Eigen::MatrixXi simplices;  // #S by d + 1, 0-based; positively oriented after checkVolumeMesh
 
   int dim() const { return static_cast<int>(vertices.cols()); }

@@ -16,6 +16,7 @@
 #include "cli/progress_reporter.h"
 #include "cli/tightness_report.h"
 #include "deformer.h"
+#include "errors.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
 

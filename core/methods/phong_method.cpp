@@ -50,7 +50,8 @@ Eigen::VectorXd faceBarycentrics(const Cage& cage, int j, const Eigen::VectorXd&
   const int d = cage.dim();
   Eigen::VectorXd w(d);
   if (d == 2) {
-    const Eigen::VectorXd a = cage.vertices.row(cage.faces(j, 0)).transpose(), b = cage.vertices.row(cage.faces(j, 1)).transpose();
+    const Eigen::VectorXd a = cage.vertices.row(cage.faces(j, 0)).transpose(),
+                          b = cage.vertices.row(cage.faces(j, 1)).transpose();
     const double t = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
     w << 1 - t, t;
     return w;
@@ -125,7 +126,8 @@ class PhongDeformer final : public CageDeformer {
       }
     }
     std::vector<FrameCoordinates> frames;
-    for (auto& g : rows) frames.push_back(makeFrameCoordinates(std::move(g), layout_.mainColumns(), coordinates_.isFloat()));
+    for (auto& g : rows)
+      frames.push_back(makeFrameCoordinates(std::move(g), layout_.mainColumns(), coordinates_.isFloat()));
     return frames;
   }
 
@@ -221,7 +223,8 @@ class PhongDeformer final : public CageDeformer {
       return located;
     });
     for (std::size_t e = 0; e < plan.blends.size(); ++e)
-      writeSimilarityRow(plan.proxies, static_cast<int>(e), C.row(numPoints + 2 * static_cast<int>(e) + 1).data(), columns);
+      writeSimilarityRow(plan.proxies, static_cast<int>(e), C.row(numPoints + 2 * static_cast<int>(e) + 1).data(),
+                         columns);
   }
 
   Cage rest_;
@@ -260,10 +263,12 @@ const MethodDescriptor& phong() {
       kParamNu,
       false,
       true,
-      {{"tets", "FILE", "a MEDIT .mesh tetrahedral mesh of the rest cage whose first vertices are the cage's "
-                        "(default: tetrahedralize the cage)"},
-       {"tet-level", "L", "detail of the generated tetrahedral mesh: 0 (coarse, about the cage's vertices) to 4 "
-                          "(default 1)"}},
+      {{"tets", "FILE",
+        "a MEDIT .mesh tetrahedral mesh of the rest cage whose first vertices are the cage's "
+        "(default: tetrahedralize the cage)"},
+       {"tet-level", "L",
+        "detail of the generated tetrahedral mesh: 0 (coarse, about the cage's vertices) to 4 "
+        "(default 1)"}},
       validatePhongParams,
       phongLayout,
       phongWorkingBytes,

@@ -1,8 +1,9 @@
 // CGAL's tetrahedra of a cage (core/cage_tetrahedralization.cpp): the cage's vertices first and exactly, a mesh
 // of the cage that checkVolumeMesh accepts as it is, finer with each level.
+#include "cage_tetrahedralization.h"
+
 #include <gtest/gtest.h>
 
-#include "cage_tetrahedralization.h"
 #include "core/test_models.h"
 #include "core/test_shapes.h"
 #include "core/volume_mesh_checks.h"

@@ -97,11 +97,15 @@ Eigen::MatrixXd refSteiner(const VolumeMesh& mesh, Eigen::MatrixXd x, const std:
   Eigen::MatrixXd Kff(free.size(), free.size());
   for (std::size_t r = 0; r < free.size(); ++r) {
     for (int c = 0; c < dofs; ++c)
-      if (!isFree[static_cast<std::size_t>(c)]) rhs(static_cast<Eigen::Index>(r)) -= K(static_cast<Eigen::Index>(r), c) * (x(c / 3, c % 3) - mesh.vertices(c / 3, c % 3));
-    for (std::size_t k = 0; k < free.size(); ++k) Kff(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k)) = K(static_cast<Eigen::Index>(r), free[k]);
+      if (!isFree[static_cast<std::size_t>(c)])
+        rhs(static_cast<Eigen::Index>(r)) -=
+            K(static_cast<Eigen::Index>(r), c) * (x(c / 3, c % 3) - mesh.vertices(c / 3, c % 3));
+    for (std::size_t k = 0; k < free.size(); ++k)
+      Kff(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(k)) = K(static_cast<Eigen::Index>(r), free[k]);
   }
   const Eigen::VectorXd u = Kff.fullPivLu().solve(rhs);
-  for (std::size_t r = 0; r < free.size(); ++r) x(free[r] / 3, free[r] % 3) = mesh.vertices(free[r] / 3, free[r] % 3) + u(static_cast<Eigen::Index>(r));
+  for (std::size_t r = 0; r < free.size(); ++r)
+    x(free[r] / 3, free[r] % 3) = mesh.vertices(free[r] / 3, free[r] % 3) + u(static_cast<Eigen::Index>(r));
   return x;
 }
 
@@ -136,8 +140,8 @@ Eigen::Matrix3d refVertexF(const VolumeMesh& mesh, const Eigen::MatrixXd& x, int
 // phi(X) = 1/2 sum l_i x_i + 1/2 sum l_i (x_i + F_i (X - X_i)) in the tetrahedron holding X (a scan).
 Eigen::Vector3d refPhong(const VolumeMesh& mesh, const Eigen::MatrixXd& x, const Eigen::Vector3d& X) {
   for (int s = 0; s < mesh.numSimplices(); ++s) {
-    const Eigen::Vector3d l123 = refEdges(mesh, mesh.vertices, s).inverse() *
-                                 (X - mesh.vertices.row(mesh.simplices(s, 0)).transpose());
+    const Eigen::Vector3d l123 =
+        refEdges(mesh, mesh.vertices, s).inverse() * (X - mesh.vertices.row(mesh.simplices(s, 0)).transpose());
     const Eigen::Vector4d l(1 - l123.sum(), l123(0), l123(1), l123(2));
     if (l.minCoeff() < -1e-12) continue;
     Eigen::Vector3d out = Eigen::Vector3d::Zero();
@@ -242,10 +246,10 @@ TEST(PhongMethod, SteinerSolveMatchesClosedFormsOnASymmetricStar) {
 TEST(PhongMethod, RefusesPoissonRatiosWhereTheEnergyIsNotPositiveDefinite) {
   EXPECT_TRUE(elasticEnergyPositiveDefinite(0.49, 3));
   EXPECT_TRUE(elasticEnergyPositiveDefinite(-0.99, 3));
-  EXPECT_FALSE(elasticEnergyPositiveDefinite(-1.0, 3));   // 2 mu + 3 lambda = 0
+  EXPECT_FALSE(elasticEnergyPositiveDefinite(-1.0, 3));  // 2 mu + 3 lambda = 0
   EXPECT_FALSE(elasticEnergyPositiveDefinite(0.5, 3));
   EXPECT_FALSE(elasticEnergyPositiveDefinite(INFINITY, 3));  // lambda -> -1
-  EXPECT_TRUE(elasticEnergyPositiveDefinite(-5, 2));       // 2D: mu + lambda > 0 for every nu < 1/2
+  EXPECT_TRUE(elasticEnergyPositiveDefinite(-5, 2));         // 2D: mu + lambda > 0 for every nu < 1/2
   const Cage cube = test::makeCube();
   const auto deformer = makeDeformer(methods::phong(), cube, test::randomBoxPoints(3, 3, -0.5, 0.5, 1));
   try {
@@ -273,7 +277,7 @@ TEST(PhongInterpolation, VertexWeightsMatchTheirClosedFormOnHandBuiltStars) {
   // Two tetrahedra at vertex 0 whose centroids lie along +x (at 1) and +y (at 3).
   VolumeMesh two;
   two.vertices.resize(7, 3);
-  two.vertices << 0, 0, 0,  //
+  two.vertices << 0, 0, 0,                  //
       2, 0.5, 0.5, 1, -0.5, -0.5, 1, 0, 0,  // centroid (1, 0, 0): (0 + 2 + 1 + 1) / 4 = 1, y, z sum to 0
       0.5, 6, 0.5, -0.5, 3, -0.5, 0, 3, 0;  // centroid (0, 3, 0)
   two.simplices.resize(2, 4);
@@ -312,7 +316,9 @@ TEST(PhongMethod, ReproducesAffinePosesWithGivenAndGeneratedMeshes) {
   cases.push_back({test::makeCube(), {}, test::randomBoxPoints(60, 3, -0.99, 0.99, 2), "cube, MEDIT file"});
   cases.back().options.methodOptions["tets"] = file;
   for (int level : {0, 1}) {
-    cases.push_back({test::makeExtrudedL(), {}, test::randomLPoints(60, 3, 0.001, 3),
+    cases.push_back({test::makeExtrudedL(),
+                     {},
+                     test::randomLPoints(60, 3, 0.001, 3),
                      "extruded L, CGAL level " + std::to_string(level)});
     cases.back().options.volumeMesh = std::make_shared<VolumeMesh>(tetrahedralizeCage(cases.back().cage, level));
   }

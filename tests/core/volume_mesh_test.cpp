@@ -1,5 +1,7 @@
 // Volume meshes of a cage (core/volume_mesh.cpp): what checkVolumeMesh accepts, repairs and refuses, and the
 // star of a star-shaped cage.
+#include "volume_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -7,7 +9,6 @@
 #include "core/test_shapes.h"
 #include "core/volume_mesh_checks.h"
 #include "errors.h"
-#include "volume_mesh.h"
 
 namespace somicage {
 namespace {

@@ -43,7 +43,8 @@ somicage::Cage cubeCage() {
   cube.vertices.resize(8, 3);
   for (int i = 0; i < 8; ++i) cube.vertices.row(i) << (i & 1), (i & 2) >> 1, (i & 4) >> 2;
   cube.faces.resize(12, 3);
-  cube.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5;
+  cube.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7,
+      5;
   return cube;
 }
 
