@@ -22,16 +22,18 @@ namespace {
 const char* const kCommand = "somicage animate";
 
 ArgParser animateOptions() {
-  return ArgParser(kCommand,
-                   withScriptOptions({
-                       {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
-                       {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
-                       {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
-                       {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
-                       {"--recompute-normals", "",
-                        "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
-                       threadsOptionSpec(),
-                   }));
+  std::vector<OptionSpec> options = withScriptOptions({
+      {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
+      {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
+      {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
+      {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
+      {"--recompute-normals", "",
+       "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
+      threadsOptionSpec(),
+  });
+  const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // the session's method's own (--tets)
+  options.insert(options.end(), methodOptions.begin(), methodOptions.end());
+  return ArgParser(kCommand, options);
 }
 
 void parseFrameRange(const std::string& text, int& first, int& last) {
@@ -111,7 +113,8 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
                        meshPath, notices);
   }
   const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cageSource, notices);
-  const PrecomputeOptions options = precomputeOptions(threads);
+  PrecomputeOptions options = precomputeOptions(threads);
+  applyMethodOptions(args, session.method, cage, options, notices);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient =
       document.normalCount > 0 && !args.has("--recompute-normals") && output == AnimationOutput::ObjSequence &&

@@ -275,6 +275,8 @@ const MethodDescriptor& somigliana() {
       0,
       kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
       false,
+      false,
+      {},
       validateDeformParams,
       somiglianaLayout,
       somiglianaWorkingBytes,
