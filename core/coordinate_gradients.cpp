@@ -63,7 +63,7 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
     PortableTriangleIntegralsOf<DualOf<3>> I;
     for (int j = 0; j < cage.numFaces(); ++j) {
       if (frames[j].degenerate) continue;
-      integrateTrianglePortable(frames[j].kernel, x, I);
+      integrateTriangle(frames[j], x, I);
       perFace(j, I);
     }
   } else {

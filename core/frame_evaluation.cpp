@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "cpu_dispatch.h"
 #include "errors.h"
 #include "frame_point_kernel.h"
 
@@ -75,7 +76,7 @@ struct PreparedWeights {
   const Scalar* row(int output) const { return mainRows.data() + static_cast<size_t>(output) * mainColumns; }
 };
 
-// A 32-byte SIMD vector of Scalar (GCC/Clang vector extensions: one AVX2 register where the build targets AVX2,
+// A 32-byte SIMD vector of Scalar (GCC/Clang vector extensions: one AVX2 register in the x86-64-v3 copy,
 // two SSE halves otherwise). This file is compiled with -ffp-contract=fast, so `sum += c * w` is one FMA.
 template <typename Scalar>
 struct Simd {
@@ -168,6 +169,25 @@ void outputsOfRows(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scal
   }
 }
 
+// A block of `rows` points from `first` on (kBlockRows, or 1 for the last few): the frame's hot loop, dispatched
+// (cpu_dispatch.h), for float and for double storage.
+template <typename Scalar>
+void outputsOfBlock(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int first, int rows,
+                    double (*y)[kMaxOutputs]) {
+  if (rows == kBlockRows)
+    outputsOfRows<Scalar, kBlockRows>(C, W, first, y);
+  else
+    outputsOfRows<Scalar, 1>(C, W, first, y);
+}
+SOMICAGE_DISPATCH void dispatchedOutputsOfBlock(const CoordinateMatrix<float>& C, const PreparedWeights<float>& W,
+                                                int first, int rows, double (*y)[kMaxOutputs]) {
+  outputsOfBlock(C, W, first, rows, y);
+}
+SOMICAGE_DISPATCH void dispatchedOutputsOfBlock(const CoordinateMatrix<double>& C, const PreparedWeights<double>& W,
+                                                int first, int rows, double (*y)[kMaxOutputs]) {
+  outputsOfBlock(C, W, first, rows, y);
+}
+
 template <typename Scalar, int Dim>
 void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int threads,
               Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor>& out) {
@@ -175,13 +195,13 @@ void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& 
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
-    outputsOfRows<Scalar, kBlockRows>(C, W, b * kBlockRows, y);
+    dispatchedOutputsOfBlock(C, W, b * kBlockRows, kBlockRows, y);
     for (int r = 0; r < kBlockRows; ++r)
       finishFramePoint<Dim>(y[r], W.outputs, W.origin, out.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
-    outputsOfRows<Scalar, 1>(C, W, p, y);
+    dispatchedOutputsOfBlock(C, W, p, 1, y);
     finishFramePoint<Dim>(y[0], W.outputs, W.origin, out.row(p).data());
   }
 }
@@ -210,12 +230,12 @@ void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const F
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
-    outputsOfRows<Scalar, kBlockRows>(C, prepared, b * kBlockRows, y);
+    dispatchedOutputsOfBlock(C, prepared, b * kBlockRows, kBlockRows, y);
     for (int r = 0; r < kBlockRows; ++r) std::copy(y[r], y[r] + W.outputs, rows.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
-    outputsOfRows<Scalar, 1>(C, prepared, p, y);
+    dispatchedOutputsOfBlock(C, prepared, p, 1, y);
     std::copy(y[0], y[0] + W.outputs, rows.row(p).data());
   }
 }
