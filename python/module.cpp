@@ -5,6 +5,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include "cpu_dispatch.h"
 #include "numpy_arrays.h"
 #include "obj_io.h"
 #include "python_cage.h"
@@ -138,6 +139,7 @@ PYBIND11_MODULE(_somicage, module) {
       "Cage deformation with Somigliana coordinates and the other methods of somicage.methods() (SomiCage's "
       "engine).";
   module.attr("__version__") = SOMICAGE_VERSION;
+  module.attr("cpu_kernels") = dispatchedKernelTarget();
   registerErrors(module);
   defineCage(module);
   defineDeformer(module);

@@ -5,6 +5,7 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
+cpu_kernels: str  # the dispatched CPU kernels: "x86-64-v3" (AVX2, FMA), "baseline" or "native"
 
 ArrayLike = npt.ArrayLike
 Progress = Callable[[float], Optional[bool]]
