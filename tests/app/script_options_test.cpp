@@ -97,13 +97,13 @@ TEST(StrictOption, MeshInOtherUnitsRepairedAndSelfIntersectingCages) {
   }
 }
 
-// 1e-6 diagonals is far below the voxel size of a 40-face budget: the cage is made at a wider margin, a warning.
+// 1e-6 diagonals is far below the voxel size of a 100-face budget: the cage is made at a wider margin, a warning.
 // (The same run without --strict, which exits 0, is in QuietOption: a cage takes seconds.)
 TEST(StrictOption, CageMadeAtAWiderMarginThanAskedFor) {
   ScratchDir dir;
   const std::string out = dir.file("cage.obj");
   const RunResult r = runSomicage(
-      {"cage", "--mesh", dataFile("pyramid_mesh.obj"), "--out", out, "--faces", "40", "--margin", "1e-6", "--strict"});
+      {"cage", "--mesh", dataFile("pyramid_mesh.obj"), "--out", out, "--faces", "100", "--margin", "1e-6", "--strict"});
   EXPECT_EQ(r.exitCode, 3) << r;
   EXPECT_NE(r.err.find("not the 1e-06 asked for (--margin)"), std::string::npos) << r;
   EXPECT_TRUE(fs::exists(out)) << "the cage is written before exit 3";
@@ -154,7 +154,7 @@ TEST(QuietOption, SilencesTheEstimateAndSummaryButKeepsWarnings) {
   }
   // The cage made at a wider margin than asked (StrictOption): without --strict, exit 0 and only the warning.
   const RunResult cage = runSomicage({"cage", "--mesh", dataFile("pyramid_mesh.obj"), "--out", dir.file("cage.obj"),
-                                      "--faces", "40", "--margin", "1e-6", "--quiet"});
+                                      "--faces", "100", "--margin", "1e-6", "--quiet"});
   EXPECT_EQ(cage.exitCode, 0) << cage;
   EXPECT_EQ(cage.errLines(), 1) << cage;
   EXPECT_EQ(cage.err.rfind("somicage: warning: " + dir.file("cage.obj") + ": the cage was made at a margin of ", 0), 0u)
