@@ -1,21 +1,36 @@
 #include "deformer.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "errors.h"
 
 namespace somicage {
 
+namespace {
+// A parameter value as the user would type it: 0.7, 1e+06, inf.
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+}  // namespace
+
+std::string rangeText(const ParameterRange& range, bool open) {
+  return (open ? "(" : "[") + text(range.min) + ", " + text(range.max) + (open ? ")" : "]");
+}
+
 void validateDeformParams(const DeformParams& params) {
-  if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= -1 || params.nu >= 0.5)))
-    throw InputError("nu", -1, "Poisson ratio " + std::to_string(params.nu) + " is out of range",
-                     "use a value in (-1, 0.5), or inf / -inf for the limit");
-  if (!(params.gamma >= 0) || std::isinf(params.gamma))
-    throw InputError("gamma", -1, "bulging scale " + std::to_string(params.gamma) + " is invalid",
-                     "use a finite value >= 0");
-  if (!(params.blend >= 0 && params.blend <= 1))
-    throw InputError("blend", -1, "blend " + std::to_string(params.blend) + " is outside [0, 1]",
+  if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= kNuRange.min || params.nu >= kNuRange.max)))
+    throw InputError("nu", -1, "Poisson ratio " + text(params.nu) + " is out of range",
+                     "use a value in " + rangeText(kNuRange, true) + ", or inf / -inf for the limit");
+  if (!(params.gamma >= kGammaRange.min && params.gamma <= kGammaRange.max))
+    throw InputError("gamma", -1, "bulging scale " + text(params.gamma) + " is out of range",
+                     "use a value in " + rangeText(kGammaRange) +
+                         ": beyond it a face's normal stretch, up to exp(gamma), loses all meaning");
+  if (!(params.blend >= kBlendRange.min && params.blend <= kBlendRange.max))
+    throw InputError("blend", -1, "blend " + text(params.blend) + " is outside " + rangeText(kBlendRange),
                      "use 0 for the global variant, 1 for the local variant, or a value in between");
 }
 

@@ -35,7 +35,7 @@ void setThreadCount(int threads) {
 OptionSpec threadsOptionSpec() { return {"--threads", "N", "OpenMP threads (default: all cores)"}; }
 
 int threadsOption(const ArgParser& args) {
-  const int threads = args.integer("--threads", 0, 0, 4096);
+  const int threads = args.integer("--threads", 0, 0, kMaxThreads);
   setThreadCount(threads);
   return threads;
 }
@@ -75,17 +75,19 @@ constexpr ParameterOption kParameterOptions[] = {
 
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
   const auto forMethods = [](DeformParameter p) { return "; " + methodsReading(p); };
-  before.insert(before.end(),
-                {
-                    {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
-                    {"--variant", "NAME", "global (default, blend 0) or local (blend 1)" + forMethods(kParamBlend)},
-                    {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0)" + forMethods(kParamNu)},
-                    {"--gamma", "G", "bulging scale >= 0 (default 0)" + forMethods(kParamGamma)},
-                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
-                    {"--corotational", "",
-                     "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
-                });
+  before.insert(
+      before.end(),
+      {
+          {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
+          {"--variant", "NAME", "global (default, blend 0) or local (blend 1)" + forMethods(kParamBlend)},
+          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
+          {"--nu", "V",
+           "Poisson ratio in " + rangeText(kNuRange, true) + ", or inf / -inf (default 0)" + forMethods(kParamNu)},
+          {"--gamma", "G", "bulging scale in " + rangeText(kGammaRange) + " (default 0)" + forMethods(kParamGamma)},
+          {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
+          {"--corotational", "",
+           "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
+      });
   before.insert(before.end(), after.begin(), after.end());
   return before;
 }
