@@ -52,12 +52,14 @@ class Deformer:
         """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
                blend: Optional[float] = None, traction_fix: bool = True,
-               corotational: bool = False) -> npt.NDArray[np.float64]:
+               corotational: bool = False, bulging: str = "solid-angle",
+               normals: str = "area") -> npt.NDArray[np.float64]:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
     def analyze(self, posed: ArrayLike, faces: Sequence[Sequence[int]] = ..., *, nu: float = 0.0, gamma: float = 0.0,
                 variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
                 corotational: bool = False,
-                nu_sweep: Optional[tuple[float, float, int]] = None) -> dict[str, object]:
+                nu_sweep: Optional[tuple[float, float, int]] = None, bulging: str = "solid-angle",
+                normals: str = "area") -> dict[str, object]:
         """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
         det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked."""
     @property
@@ -76,6 +78,8 @@ class Deformer:
     def coordinate_bytes(self) -> int: ...
 
 def methods() -> list[str]: ...
+def choice_info() -> list[dict[str, Union[str, list[tuple[str, str]]]]]:
+    """Deformer.deform's keywords that take a name (bulging, normals): name, description, values (default first)."""
 def method_info() -> list[dict[str, Union[str, list[str]]]]:
     """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
 def load_mesh(path: str) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
