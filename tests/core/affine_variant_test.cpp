@@ -9,6 +9,7 @@
 
 #include "boundary_conditions.h"
 #include "deformer.h"
+#include "jacobian.h"
 #include "methods/method_descriptors.h"
 #include "obj_io.h"
 #include "test_models.h"
@@ -78,6 +79,20 @@ TEST(AffineVariant, ReproducesAffinePosesForEveryNu) {
       }
     }
   }
+}
+
+TEST(AffineVariant, TheExactGradientOfAnAffinePoseIsA) {
+  // J from the dual-number gradients of C (jacobian.h), the affine terms' included: A everywhere, to 1e-9.
+  const Cage cage = test::makeBumpySphere(1);
+  const Eigen::MatrixXd points = test::randomBallPoints(20, 0.6, 4);
+  const auto deformer = makeDeformer(methods::somigliana(), cage, points, {}, noProgress);
+  const DeformationGradients gradients(*deformer, points);
+  const AffineMap map = randomAffine(3, 7);
+  Eigen::MatrixXd positions, jacobians;
+  gradients.evaluate(apply(map, cage.vertices), affineParams(0.45), positions, jacobians);
+  for (int p = 0; p < points.rows(); ++p)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) EXPECT_NEAR(jacobians(p, a * 3 + b), map.linear(a, b), 1e-9) << p;
 }
 
 TEST(AffineVariant, PointsOutsideTheCageFollowTheAffineMap) {
