@@ -1,8 +1,9 @@
 #include "animation_export.h"
 
+#include <unistd.h>
+
 #include <cctype>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <system_error>
 
@@ -30,6 +31,20 @@ struct TemporaryFolder {
   }
 };
 
+// A new, empty folder next to target, made as mkdir makes folders (0777 less the umask): mkdtemp's 0700 would stay on
+// the sequence once it is renamed into place.
+fs::path makeTemporaryFolder(const std::string& out, const fs::path& target, const fs::path& parent) {
+  const std::string stem = (parent / target.filename()).string() + ".tmp-" + std::to_string(::getpid()) + "-";
+  std::error_code error;
+  for (int attempt = 0; attempt < 1000; ++attempt) {
+    const fs::path candidate = stem + std::to_string(attempt);
+    if (fs::create_directory(candidate, error)) return candidate;
+    if (error) break;  // not "it exists already": permissions, a full disk
+  }
+  throw InputError(out, -1, "cannot create a folder next to it" + (error ? ": " + error.message() : std::string()),
+                   "check the permissions of " + parent.string());
+}
+
 std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocument& document,
                                           const std::vector<Eigen::MatrixXd>& frames, int first,
                                           const ProgressCallback& progress,
@@ -45,12 +60,8 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
   if (!fs::is_directory(parent, error)) {
     throw InputError(out, -1, "the folder " + parent.string() + " does not exist", "create it first");
   }
-  std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
   TemporaryFolder temporary;
-  if (!::mkdtemp(pattern.data())) {
-    throw InputError(out, -1, "cannot create a folder next to it", "check the permissions of " + parent.string());
-  }
-  temporary.path = pattern;
+  temporary.path = makeTemporaryFolder(out, target, parent);
   const std::string stem = document.sourcePath.empty() ? "mesh" : fs::path(document.sourcePath).stem().string();
   for (size_t k = 0; k < frames.size(); ++k) {
     char number[16];
@@ -73,6 +84,14 @@ std::vector<std::string> writeObjSequence(const std::string& out, const MeshDocu
 bool writesGlb(std::string out) {
   for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return out.size() > 4 && out.compare(out.size() - 4, 4, ".glb") == 0;
+}
+
+AnimationOutput animationOutput(const std::string& out) {
+  if (writesGlb(out)) return AnimationOutput::Glb;
+  const fs::path path(out);
+  if (!out.empty() && (out.back() == '/' || !path.has_extension())) return AnimationOutput::ObjSequence;
+  throw InputError(out, -1, "is neither a .glb file nor a folder",
+                   "write anim.glb for one GLB, or a folder such as frames/ (ending in '/') for an OBJ sequence");
 }
 
 std::vector<Eigen::MatrixXd> deformTimelineFrames(const CageDeformer& deformer, const Cage& cage,
@@ -116,9 +135,9 @@ std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& g
 std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
                                         const ProgressCallback& progress, const std::vector<Eigen::MatrixXd>& normals) {
-  if (writesGlb(out)) {
+  if (animationOutput(out) == AnimationOutput::Glb) {
     step(progress, 0.0);  // the last chance to stop: once the file is in place, it stays
-    std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps);
+    std::vector<std::string> notes = writeGlbAnimation(out, document, frames, fps, first);
     progress(1.0);
     return notes;
   }

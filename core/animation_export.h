@@ -33,13 +33,19 @@ std::vector<Eigen::MatrixXd> deformTimelineNormals(const DeformationGradients& g
                                                    const std::vector<Eigen::MatrixXd>& frames, int first,
                                                    const ProgressCallback& progress = noProgress);
 
-// Whether writeAnimation writes out as one GLB (a path ending in .glb, any case) rather than an OBJ sequence.
+// Whether out names one GLB (a path ending in .glb, any case) rather than an OBJ sequence.
 bool writesGlb(std::string out);
 
-// Writes frames (frame k is timeline frame first + k) to out: a path ending in .glb gives one GLB at fps,
-// anything else is a folder for the OBJ sequence (it must not exist, or be empty). Returns the notes of what the
-// format could not carry. normals: per frame, the OBJ sequence's `vn` (empty: recomputed per frame; GLB carries
-// none). progress as above (for the writing).
+// What writeAnimation makes of out: one GLB for a path ending in .glb (any case), an OBJ sequence for a folder path
+// (ending in '/', or whose last name has no extension). Anything else (a.obj: neither a GLB nor clearly a folder)
+// throws InputError naming out, so that a command refuses it before any work.
+enum class AnimationOutput { Glb, ObjSequence };
+AnimationOutput animationOutput(const std::string& out);
+
+// Writes frames (frame k is timeline frame first + k) to out (animationOutput): one GLB at fps whose morph targets
+// are named by timeline frame (gltf_writer.h), or a new folder for the OBJ sequence (it must not exist, or be empty;
+// created with the user's umask). Returns the notes of what the format could not carry. normals: per frame, the OBJ
+// sequence's `vn` (empty: recomputed per frame; GLB carries none). progress as above (for the writing).
 std::vector<std::string> writeAnimation(const std::string& out, const MeshDocument& document,
                                         const std::vector<Eigen::MatrixXd>& frames, int first, double fps,
                                         const ProgressCallback& progress = noProgress,

@@ -23,8 +23,34 @@ Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices
   return std::move(repair.cage);
 }
 
+namespace {
+
+// A cage read without welding from a format that may repeat a vertex per face corner (mesh_formats.h: weldApplies)
+// and not closed: refused first with --weld as the remedy, before the warnings of prepareCage, whose "pairs of faces
+// meet" would only be the unjoined corners touching.
+void requireClosedUnwelded(const PolygonMesh& mesh, const Cage& cage, const std::string& path) {
+  if (cage.dim() != 3) return;
+  const std::size_t open = validateCage(cage).boundaryRidges.size();
+  if (open == 0) return;
+  const std::size_t openWelded = validateCage(cageFromMesh(weldVertices(mesh), path)).boundaryRidges.size();
+  throw InputError(path, -1,
+                   "the cage is not closed as read: " + std::to_string(open) +
+                       " edges have only one face; this format may repeat a vertex for each face corner",
+                   openWelded == 0 ? "read it with --weld, which joins vertices at equal positions: welded, the cage "
+                                     "is closed"
+                                   : "read it with --weld, which joins vertices at equal positions; welded, " +
+                                         std::to_string(openWelded) +
+                                         " edges still have only one face: fill those holes so that every edge has "
+                                         "exactly two faces");
+}
+
+}  // namespace
+
 Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read) {
-  return prepareCage(cageFromMesh(loadAnyMesh(path, read), path), path, notices);
+  const PolygonMesh mesh = loadAnyMesh(path, read);
+  Cage cage = cageFromMesh(mesh, path);
+  if (!read.weld && weldApplies(path)) requireClosedUnwelded(mesh, cage, path);
+  return prepareCage(std::move(cage), path, notices);
 }
 
 Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,

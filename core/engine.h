@@ -45,7 +45,9 @@ inline void ignoreNotices(const Notice&) {}
 // Throws InputError naming `source` when the repaired cage is still not valid.
 Cage prepareCage(Cage cage, const std::string& source, const NoticeSink& notices);
 
-// The cage in a file of any readable format (mesh_formats.h: loadAnyMesh, cageFromMesh), then prepareCage.
+// The cage in a file of any readable format (mesh_formats.h: loadAnyMesh, cageFromMesh), then prepareCage. A 3D cage
+// that is not closed as read from a format ReadOptions::weld applies to, read without it, is refused first with
+// --weld as the remedy (saying whether the welded cage would be closed).
 Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const ReadOptions& read = {});
 
 // The points a cage of dimension d deforms (#V by d: the mesh's x, y, z, or x, y for a 2D cage), with a Warning

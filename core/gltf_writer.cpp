@@ -222,7 +222,7 @@ tinygltf::Material gltfMaterial(const MeshMaterial& source, TextureBuilder& text
 }  // namespace
 
 std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDocument& document,
-                                           const std::vector<Eigen::MatrixXd>& frames, double fps) {
+                                           const std::vector<Eigen::MatrixXd>& frames, double fps, int firstFrame) {
   SOMICAGE_ASSERT(!frames.empty() && fps > 0, "writeGlbAnimation takes at least one frame and a positive fps");
   for (size_t k = 0; k < frames.size(); ++k) {
     if (frames[k].rows() != document.geometry.numVertices() || !frames[k].allFinite()) {
@@ -255,7 +255,7 @@ std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDo
   tinygltf::Value::Array targetNames;
   for (size_t k = 1; k < frames.size(); ++k) {
     targets.push_back(buffer.addVec3(positionsOf(layout, frames[k], &frames[0])));
-    targetNames.emplace_back("frame_" + std::to_string(k));
+    targetNames.emplace_back("frame_" + std::to_string(firstFrame + static_cast<int>(k)));
   }
 
   std::vector<std::string> notes;

@@ -19,9 +19,10 @@
 namespace somicage {
 
 // frames: one #V by 2 or 3 position matrix per frame (frame k plays at time k / fps). The first frame is the
-// mesh's own positions; frames 1.. are morph targets, weight 1 at their time and 0 elsewhere (LINEAR sampler).
+// mesh's own positions; frames 1.. are morph targets, weight 1 at their time and 0 elsewhere (LINEAR sampler),
+// named "frame_N" by the timeline frame N = firstFrame + k they hold (Blender's shape key names).
 // Written atomically; returns one sentence per kind of data the file does not carry.
 std::vector<std::string> writeGlbAnimation(const std::string& path, const MeshDocument& document,
-                                           const std::vector<Eigen::MatrixXd>& frames, double fps);
+                                           const std::vector<Eigen::MatrixXd>& frames, double fps, int firstFrame = 0);
 
 }  // namespace somicage

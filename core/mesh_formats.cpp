@@ -1,5 +1,6 @@
 #include "mesh_formats.h"
 
+#include <assimp/config.h>
 #include <assimp/material.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -113,8 +114,12 @@ MeshDocument readWithAssimp(const std::string& path, const ReadOptions& options)
     throw InputError(path, -1, "cannot open the file", "check the path and the file name");
   }
   Assimp::Importer importer;
-  // No post-processing: aiProcess_JoinIdenticalVertices, SortByPType or Triangulate would renumber vertices.
-  const aiScene* scene = importer.ReadFile(path, 0);
+  // No post-processing that renumbers vertices (JoinIdenticalVertices, SortByPType, Triangulate). GlobalScale only
+  // multiplies by the file's unit: FBX counts in centimetres times its UnitScaleFactor (Blender's default export is
+  // 1 cm units under a 100x node scale), which assimp reports as its file scale; the step brings it to metres, as
+  // glTF is by its specification (scale 1 there, and for the unitless formats).
+  importer.SetPropertyFloat(AI_CONFIG_GLOBAL_SCALE_FACTOR_KEY, 1.0f);
+  const aiScene* scene = importer.ReadFile(path, aiProcess_GlobalScale);
   if (!scene || !scene->mRootNode) {
     throw InputError(path, -1, std::string("cannot read the file: ") + importer.GetErrorString(),
                      "check that the file is a valid " + extensionOf(path) + " file (assimp reads it)");
@@ -299,6 +304,11 @@ MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& option
 
 PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options) {
   return loadMeshDocument(path, options).geometry;
+}
+
+bool weldApplies(const std::string& path) {
+  const FormatDescriptor* format = findFormat(path);
+  return format && format->read == readWithAssimp;
 }
 
 std::vector<std::string> writeMeshDocument(const std::string& path, const MeshDocument& document,

@@ -2,11 +2,13 @@
 //
 // Read: .obj (parseObjDocument: every record kept), and .ply .stl .off .gltf .glb .fbx through assimp, with no
 // post-processing step that welds, reorders or drops vertices, so vertex i of the file is vertex i of the mesh
-// (a cage's posed and rest files match index for index). assimp stores coordinates as 32-bit floats, so these
-// formats read with float precision. A file with several meshes gives their vertices one after the other, in the
-// file's mesh order, each moved by the transform of the first node that shows it. STL has no shared vertices:
-// each triangle brings its own three, so a closed STL surface reads as a soup; ReadOptions::weld joins vertices
-// at exactly equal positions (in order of first appearance), which a cage read from STL needs.
+// (a cage's posed and rest files match index for index). Coordinates come in metres where the format has a unit:
+// FBX's unit scale (UnitScaleFactor, centimetres per unit) is applied, as are its nodes' transforms; glTF is in
+// metres by its specification; OBJ, PLY, STL and OFF have no unit and read as written. assimp stores coordinates as
+// 32-bit floats, so these formats read with float precision. A file with several meshes gives their vertices one after
+// the other, in the file's mesh order, each moved by the transform of the first node that shows it. STL has no shared
+// vertices: each triangle brings its own three, so a closed STL surface reads as a soup; ReadOptions::weld joins
+// vertices at exactly equal positions (in order of first appearance), which a cage read from STL needs.
 //
 // Written: .obj (writeObjDocument: lossless), .ply (binary, double positions and the polygons; nothing else)
 // and .glb (gltf_writer.h: triangles, UVs, materials with their colours and textures). What a format cannot carry is
@@ -30,6 +32,10 @@ MeshDocument loadMeshDocument(const std::string& path, const ReadOptions& option
 
 // The geometry of loadMeshDocument: for meshes and cages read from any supported format.
 PolygonMesh loadAnyMesh(const std::string& path, const ReadOptions& options = {});
+
+// Whether ReadOptions::weld applies to path's format: every format read through assimp (all but OBJ), whose files
+// may repeat a vertex per face corner (STL always, FBX as assimp expands it, glTF at UV and normal seams).
+bool weldApplies(const std::string& path);
 
 // Writes document with the given positions (#V by 2 or 3) in the format of path's extension, atomically.
 // normals: the deformed `vn` normals (writeObjDocument; empty: recomputed). Returns one sentence per kind of data the

@@ -27,6 +27,8 @@ class ArgParser {
   void parse(const std::vector<std::string>& args);
 
   bool helpRequested() const { return help_; }
+  // Whether the command declares the option at all (has() insists that it does).
+  bool declares(const std::string& name) const { return find(name) != nullptr; }
   bool has(const std::string& name) const;
 
   std::string text(const std::string& name, const std::string& fallback = "") const;

@@ -9,6 +9,7 @@
 
 #include "cli/arg_parser.h"
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "errors.h"
 
 namespace somicage {
@@ -16,17 +17,26 @@ namespace somicage {
 const std::vector<CliCommand>& cliCommands() {
   static const std::vector<CliCommand> commands = {
       {"help", "show this help, or the options of one command",
-       [](const std::vector<std::string>& a, const FrameDevices&) { return runHelpCommand(a); }, helpUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&, CommandLog&) { return runHelpCommand(a); },
+       helpUsage},
       {"deform", "deform a mesh (or point set) with a posed cage and write it (OBJ, PLY, GLB)", runDeformCommand,
        deformUsage},
       {"animate", "write a session's keyframed animation as a GLB or an OBJ sequence",
-       [](const std::vector<std::string>& a, const FrameDevices&) { return runAnimateCommand(a); }, animateUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&, CommandLog& log) {
+         return runAnimateCommand(a, log);
+       },
+       animateUsage},
       {"analyze", "measure a pose: volume change, det J, distortion and fold-overs of a deformed mesh",
-       [](const std::vector<std::string>& a, const FrameDevices&) { return runAnalyzeCommand(a); }, analyzeUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&, CommandLog& log) {
+         return runAnalyzeCommand(a, log);
+       },
+       analyzeUsage},
       {"check", "check a cage, and the partition of unity on the points of a mesh",
-       [](const std::vector<std::string>& a, const FrameDevices&) { return runCheckCommand(a); }, checkUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&, CommandLog& log) { return runCheckCommand(a, log); },
+       checkUsage},
       {"cage", "make a cage that strictly encloses a mesh, with at most N faces, and write it as OBJ",
-       [](const std::vector<std::string>& a, const FrameDevices&) { return runCageCommand(a); }, cageUsage},
+       [](const std::vector<std::string>& a, const FrameDevices&, CommandLog& log) { return runCageCommand(a, log); },
+       cageUsage},
       {"bench", "time the precompute and the per-frame deformation, and compare with the paper's quadrature",
        runBenchCommand, benchUsage},
   };
@@ -70,12 +80,18 @@ int runCli(int argc, char** argv, const FrameDevices& devices) {
 
   const std::vector<std::string> args(argv + 2, argv + argc);
   const std::string prefix = std::string("somicage ") + command->name + ": ";
+  CommandLog log(std::string("somicage ") + command->name);
+  catchInterrupt();
   try {
-    return command->run(args, devices);
+    return log.exitCode(command->run(args, devices, log));
   } catch (const InputError& e) {
     std::cerr << prefix << e.what() << "\n";
     return kExitBadInput;
   } catch (const Cancelled& e) {
+    if (interruptRequested()) {
+      std::cerr << prefix << "interrupted (Ctrl-C); no output was written\n";
+      return kExitInterrupted;
+    }
     std::cerr << prefix << e.what() << "\n";
     return kExitFailure;
   } catch (const std::bad_alloc&) {

@@ -10,7 +10,7 @@ bool isCliCommand(const char* firstArgument);
 
 // Runs the command in argv[1] with the frame devices the executable offers (frame_evaluator.h: the CLI library
 // knows no OpenGL, so main.cpp adds that device when it links the editor's backend); returns the process exit
-// code (0 ok, 1 failure, 2 bad input).
+// code (commands.h: 0 ok, 1 failure, 2 bad input, 3 a warning under --strict, 130 Ctrl-C).
 int runCli(int argc, char** argv, const FrameDevices& devices);
 
 }  // namespace somicage

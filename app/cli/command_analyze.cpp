@@ -32,12 +32,12 @@ ArgParser analyzeOptions() {
               {"--posed", "POSED.obj", "the posed cage: the rest cage's vertices, moved, in the same order", true},
               {"--mesh", "MESH.obj", "the mesh whose deformation is measured (2D cage: its x, y)", true},
           },
-          {
+          withScriptOptions({
               {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
               {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
               {"--json", "", "print one JSON object"},
               threadsOptionSpec(),
-          }));
+          })));
 }
 
 // FROM:TO:N.
@@ -89,9 +89,10 @@ std::string analyzeUsage() {
   return out.str();
 }
 
-int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
+int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   ArgParser args = analyzeOptions();
   args.parse(rawArgs);
+  log.configure(args);
   if (args.helpRequested()) {
     std::cout << analyzeUsage();
     return kExitOk;
@@ -103,37 +104,37 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs) {
   const int threads = threadsOption(args);
   const std::string meshPath = args.text("--mesh");
 
-  const Cage cage = loadUsableCage(args.text("--cage"), printNotice);
+  const Cage cage = loadUsableCage(args.text("--cage"), log.sink());
   const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage);
   const PolygonMesh mesh = loadMesh(meshPath);
-  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), printNotice);
-  noteIgnoredParameters(kCommand, args, method);
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), log.sink());
+  noteIgnoredParameters(log, args, method);
 
   const PrecomputeOptions options = precomputeOptions(threads);
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {
-    ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
-    deformer =
-        precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(kCommand, true));
+    ProgressReporter progress = log.progress("precomputing " + methodName(method) + " coordinates");
+    deformer = precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(log, true));
   }
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) log.notice(*outside);
   {
-    ProgressReporter progress("integrating their gradients");
+    ProgressReporter progress = log.progress("integrating their gradients");
     gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
   }
   if (!nus.empty() && !readsParameter(method, kParamNu))
-    std::cerr << kCommand << ": note: " << methodName(method) << " does not depend on nu; the sweep is flat\n";
+    log.note(methodName(method) + " does not depend on nu; the sweep is flat");
   PoseAnalysis analysis;
   {
-    ProgressReporter progress("sweeping nu");  // the only part that reports: a sweep takes a while
+    ProgressReporter progress = log.progress("sweeping nu");  // the only part that reports: a sweep takes a while
     analysis = analyzePose(*deformer, *gradients, cage, points, mesh.faces, posed, params, nus, args.text("--posed"),
                            meshPath, progress.callback());
   }
   const DeformationAnalysis& a = analysis.fields;
   if (args.has("--fields")) saveTextFile(args.text("--fields"), fieldsCsv(a, cage.dim()));
   if (!a.volume.closed)
-    std::cerr << kCommand << ": note: " << meshPath << " is not a closed mesh: it encloses no volume; the volume "
-              << "change with its holes capped by cones is reported instead (volume_change_capped)\n";
+    log.note(meshPath + " is not a closed mesh: it encloses no volume; the volume change with its holes capped by " +
+             "cones is reported instead (volume_change_capped)");
 
   if (json) {
     JsonObjectWriter out(std::cout);

@@ -22,7 +22,7 @@ const char* const kCommand = "somicage animate";
 
 ArgParser animateOptions() {
   return ArgParser(kCommand,
-                   {
+                   withScriptOptions({
                        {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
                        {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
                        {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
@@ -30,7 +30,7 @@ ArgParser animateOptions() {
                        {"--recompute-normals", "",
                         "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
                        threadsOptionSpec(),
-                   });
+                   }));
 }
 
 // A session names its files as the editor opened them; a relative name is looked up next to the session first.
@@ -63,22 +63,26 @@ std::string animateUsage() {
   std::ostringstream out;
   out << "usage: " << kCommand << " --session S.json --out anim.glb|DIR/ [--fps 24] [--frames A:B]\n\n"
       << "Plays the session's timeline (its keys, poses and interpolation; core/pose_timeline.h) and writes every\n"
-      << "whole frame of A..B: a .glb OUT gets the mesh and one morph target per frame, animated at F frames per\n"
-      << "second (Blender imports it as shape keys); any other OUT is a new folder of NAME_0001.obj ... files, each\n"
-      << "keeping everything of the OBJ mesh but its positions. Nothing is left half-written on failure.\n\n"
+      << "whole frame of A..B: a .glb OUT gets the mesh at frame A and one morph target per later frame N, named\n"
+      << "frame_N, animated at F frames per second (Blender imports them as shape keys); a folder OUT (ending in '/',\n"
+      << "or without an extension) becomes a new folder of NAME_0001.obj ... files (numbered by frame), each keeping\n"
+      << "everything of the OBJ mesh but its positions. Any other OUT (a.obj) is refused before any work. Nothing\n"
+      << "is left half-written on failure.\n\n"
       << "options:\n"
       << animateOptions().optionHelp();
   return out.str();
 }
 
-int runAnimateCommand(const std::vector<std::string>& rawArgs) {
+int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   ArgParser args = animateOptions();
   args.parse(rawArgs);
+  log.configure(args);
   if (args.helpRequested()) {
     std::cout << animateUsage();
     return kExitOk;
   }
   const std::string sessionPath = args.text("--session"), outPath = args.text("--out");
+  const AnimationOutput output = animationOutput(outPath);  // a.obj is refused before any work
   const int threads = threadsOption(args);
 
   const AnimationSource session = animationSourceFromSessionJson(readTextFile(sessionPath), sessionPath);
@@ -97,23 +101,24 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
 
   const std::string cagePath = resolveNextTo(sessionPath, session.cagePath);
   const std::string meshPath = resolveNextTo(sessionPath, session.meshPath);
-  const Cage cage = loadUsableCage(cagePath, printNotice);
+  const Cage cage = loadUsableCage(cagePath, log.sink());
   const MeshDocument document = loadMeshDocument(meshPath);
-  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, printNotice);
+  const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, log.sink());
   const PrecomputeOptions options = precomputeOptions(threads);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
-  const bool normalsByGradient = document.normalCount > 0 && !args.has("--recompute-normals") && !writesGlb(outPath) &&
-                                 gradientsFitForNormals(kCommand, session.method, cage,
-                                                        static_cast<std::size_t>(points.rows()), options, meshPath);
+  const bool normalsByGradient =
+      document.normalCount > 0 && !args.has("--recompute-normals") && output == AnimationOutput::ObjSequence &&
+      gradientsFitForNormals(log, session.method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   std::unique_ptr<CageDeformer> deformer;
   {
-    ProgressReporter progress("precomputing " + methodName(session.method) + " coordinates");
+    ProgressReporter progress = log.progress("precomputing " + methodName(session.method) + " coordinates");
     deformer = precompute(session.method, cage, points, options, meshPath, progress.callback(),
-                          commandMemoryCheck(kCommand, normalsByGradient));
+                          commandMemoryCheck(log, normalsByGradient));
   }
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) log.notice(*outside);
   std::vector<Eigen::MatrixXd> frames;
   {
-    ProgressReporter progress("deforming frames " + std::to_string(first) + ".." + std::to_string(last));
+    ProgressReporter progress = log.progress("deforming frames " + std::to_string(first) + ".." + std::to_string(last));
     frames = deformTimelineFrames(*deformer, cage, session.timeline, session.poses, session.params,
                                   document.geometry.vertices, cage.dim(), first, last, progress.callback());
   }
@@ -121,20 +126,20 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs) {
   if (normalsByGradient) {
     std::unique_ptr<DeformationGradients> gradients;
     {
-      ProgressReporter progress("integrating the gradients for the normals");
+      ProgressReporter progress = log.progress("integrating the gradients for the normals");
       gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
     }
-    ProgressReporter progress("carrying the normals");
+    ProgressReporter progress = log.progress("carrying the normals");
     normals = deformTimelineNormals(*gradients, cage, session.timeline, session.poses, session.params, document, frames,
                                     first, progress.callback());
   }
   {
-    ProgressReporter progress("writing " + outPath);
+    ProgressReporter progress = log.progress("writing " + outPath);
     for (const std::string& note : writeAnimation(outPath, document, frames, first, fps, progress.callback(), normals))
-      std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
+      log.note(outPath + ": " + note);
   }
-  std::cerr << kCommand << ": " << frames.size() << " frames (" << first << ".." << last << ") of " << meshPath
-            << " at " << formatNumber(fps) << " fps; wrote " << outPath << "\n";
+  log.status(std::to_string(frames.size()) + " frames (" + std::to_string(first) + ".." + std::to_string(last) +
+             ") of " + meshPath + " at " + formatNumber(fps) + " fps; wrote " + outPath);
   return kExitOk;
 }
 

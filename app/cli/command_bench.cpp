@@ -122,7 +122,7 @@ std::string benchUsage() {
          benchOptions().optionHelp();
 }
 
-int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices) {
+int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices, CommandLog& log) {
   ArgParser options = benchOptions();
   options.parse(args);
   if (options.helpRequested()) {
@@ -136,10 +136,10 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const int threads = threadsOption(options);
   const bool json = options.has("--json");
 
-  const Cage cage = loadUsableCage(options.text("--cage"), printNotice);
+  const Cage cage = loadUsableCage(options.text("--cage"), log.sink());
   const PolygonMesh mesh = loadMesh(options.text("--mesh"));
   const Eigen::MatrixXd points =
-      meshPointsFor(cage, mesh.vertices, options.text("--mesh"), options.text("--cage"), printNotice);
+      meshPointsFor(cage, mesh.vertices, options.text("--mesh"), options.text("--cage"), log.sink());
   const Eigen::MatrixXd posed =
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
   PrecomputeOptions precompute = precomputeOptions(threads);
@@ -154,7 +154,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     ProgressReporter progress("precompute " + std::to_string(r + 1) + "/" + std::to_string(repeat));
     const CliClock::time_point start = CliClock::now();
     deformer = somicage::precompute(somigliana, cage, points, precompute, options.text("--mesh"), progress.callback(),
-                                    commandMemoryCheck(kCommand));
+                                    commandMemoryCheck(log));
     precomputeTimes.push_back(secondsSince(start));
   }
   std::vector<double> unity;
@@ -274,7 +274,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     if (method == somigliana) continue;
     ProgressReporter progress("precompute " + methodName(method));
     const std::unique_ptr<CageDeformer> other = somicage::precompute(
-        method, cage, points, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(kCommand));
+        method, cage, points, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(log));
     progress.finish();
     DeformParams params;
     params.nu = 0.3;

@@ -21,13 +21,13 @@ const char* const kCommand = "somicage cage";
 
 ArgParser cageOptions() {
   return ArgParser(kCommand,
-                   {
+                   withScriptOptions({
                        {"--mesh", "MESH.obj", "the mesh to enclose (any OBJ with faces)", true},
                        {"--out", "CAGE.obj", "where to write the cage", true},
                        {"--faces", "N", "at most N triangles (default 200, at least 12)"},
                        {"--margin", "M", "distance from the mesh, in bounding-box diagonals (default: automatic)"},
                        {"--json", "", "print one JSON object instead of the readable report"},
-                   });
+                   }));
 }
 
 }  // namespace
@@ -45,9 +45,10 @@ std::string cageUsage() {
   return out.str();
 }
 
-int runCageCommand(const std::vector<std::string>& rawArgs) {
+int runCageCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   ArgParser args = cageOptions();
   args.parse(rawArgs);
+  log.configure(args);
   if (args.helpRequested()) {
     std::cout << cageUsage();
     return kExitOk;
@@ -64,11 +65,16 @@ int runCageCommand(const std::vector<std::string>& rawArgs) {
   const CliClock::time_point start = CliClock::now();
   GeneratedCage generated;
   {
-    ProgressReporter progress("making the cage");
+    ProgressReporter progress = log.progress("making the cage");
     generated = generateCage(mesh.vertices, triangles, options, meshPath, progress.callback());
   }
   const double seconds = secondsSince(start);
   saveObj(outPath, generated.cage.vertices, cageTopology(generated.cage));
+  if (args.has("--margin") && generated.margin > options.margin * (1 + 1e-9))
+    log.notice({Notice::Kind::Warning, outPath,
+                "the cage was made at a margin of " + formatNumber(generated.margin, 3) + " diagonals, not the " +
+                    formatNumber(options.margin, 3) + " asked for (--margin): none of at most " +
+                    std::to_string(options.maxFaces) + " faces fits closer; ask for more faces (--faces)"});
 
   const CageTightness& tightness = generated.tightness;
   const bool valid = validateCage(generated.cage).valid();

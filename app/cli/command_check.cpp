@@ -25,12 +25,12 @@ namespace {
 const char* const kCommand = "somicage check";
 
 ArgParser checkOptions() {
-  return ArgParser(kCommand, {
+  return ArgParser(kCommand, withScriptOptions({
                                  {"--cage", "C.obj", "the cage to check (3D mesh, or 2D polygon with z = 0)", true},
                                  {"--mesh", "M.obj", "points for the partition-of-unity check (any OBJ)"},
                                  {"--json", "", "print one JSON object instead of the readable report"},
                                  threadsOptionSpec(),
-                             });
+                             }));
 }
 
 // The partition-of-unity residual max_ij |sum_i T_i(x) - I|_ij over the points inside the cage.
@@ -40,8 +40,8 @@ struct UnityCheck {
   double max = 0.0, median = 0.0, precomputeSeconds = 0.0;
 };
 
-UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                 Eigen::VectorXd& winding) {
+UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points, int threads, Eigen::VectorXd& winding,
+                                 const CommandLog& log) {
   UnityCheck check;
   check.points = static_cast<int>(points.rows());
   IntegrationOptions options;
@@ -49,7 +49,7 @@ UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points
   const CliClock::time_point start = CliClock::now();
   SomiglianaCoordinates coords;
   {
-    ProgressReporter progress("computing somigliana coordinates");
+    ProgressReporter progress = log.progress("computing somigliana coordinates");
     coords = computeSomiglianaCoordinates(cage, points, options, progress.callback());
   }
   check.precomputeSeconds = secondsSince(start);
@@ -83,12 +83,13 @@ UnityCheck checkPartitionOfUnity(const Cage& cage, const Eigen::MatrixXd& points
 // a method that reproduces outside the cage too: mean value coordinates, which are defined everywhere). Somigliana and
 // Green reproduce the identity up to their integration error; mean value coordinates exactly.
 std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, const Eigen::MatrixXd& points,
-                                                              const Eigen::VectorXd& winding, int threads) {
+                                                              const Eigen::VectorXd& winding, int threads,
+                                                              const CommandLog& log) {
   std::vector<std::pair<std::string, double>> errors;
   const double diameter = cageDiameter(cage.vertices);
   const PrecomputeOptions options = precomputeOptions(threads);
   for (Method method : allMethods()) {
-    ProgressReporter progress("reproduction with " + methodName(method));
+    ProgressReporter progress = log.progress("reproduction with " + methodName(method));
     const auto deformer = makeDeformer(method, cage, points, options, progress.callback());
     progress.finish();
     const Eigen::VectorXd moved = (deformer->deform(cage.vertices, {}) - points).rowwise().norm();
@@ -246,15 +247,17 @@ std::string checkUsage() {
       << "counter-clockwise polygon (2D), with no degenerate faces or duplicate vertices. With --mesh, computes the\n"
       << "Somigliana coordinates of the mesh vertices and the partition-of-unity residual max |sum_i T_i - I| over\n"
       << "those inside the cage (winding number >= 0.5). Lists what deform would repair (face orientation) and\n"
-      << "warns about 3D self-intersections. Exit status: 0 the cage is valid as given, 1 it has problems.\n\n"
+      << "warns about 3D self-intersections. Exit status: 0 the cage is valid as given, 1 it has problems; with\n"
+      << "--strict, 3 when it is valid but intersects itself, or leaves points of the mesh outside (or on it).\n\n"
       << "options:\n"
       << checkOptions().optionHelp();
   return out.str();
 }
 
-int runCheckCommand(const std::vector<std::string>& rawArgs) {
+int runCheckCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   ArgParser args = checkOptions();
   args.parse(rawArgs);
+  log.configure(args);
   if (args.helpRequested()) {
     std::cout << checkUsage();
     return kExitOk;
@@ -281,10 +284,10 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   std::vector<std::pair<std::string, double>> reproduction;
   // Integrating needs valid indices and faces with a normal; other defects still give numbers worth seeing.
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
-    const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
+    const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, log.sink());
     Eigen::VectorXd winding;
-    unity = checkPartitionOfUnity(repaired.cage, points, threads, winding);
-    reproduction = checkReproduction(repaired.cage, points, winding, threads);
+    unity = checkPartitionOfUnity(repaired.cage, points, threads, winding, log);
+    reproduction = checkReproduction(repaired.cage, points, winding, threads, log);
   }
   Fit fit;
   if (unity.computed && cage.dim() == 3 && !mesh.faces.empty()) {
@@ -296,6 +299,10 @@ int runCheckCommand(const std::vector<std::string>& rawArgs) {
   } else {
     writeReport(cagePath, meshPath, report, problems, repair, unity, reproduction, fit);
   }
+  // The report lists them; --strict counts them as the other commands' warnings: the repairs they would make, the
+  // self-intersections, and the points outside the cage (or on it).
+  log.listed(static_cast<int>(repair.fixes.size() + repair.warnings.size()) +
+             (unity.outside + unity.singular > 0 ? 1 : 0));
   return report.valid() ? kExitOk : kExitFailure;
 }
 

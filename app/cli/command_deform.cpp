@@ -33,12 +33,12 @@ ArgParser deformOptions() {
               {"--recompute-normals", "",
                "recompute IN's normals from the deformed faces instead of carrying them by the gradient J"},
           },
-          {
+          withScriptOptions({
               threadsOptionSpec(),
               {"--device", "NAME",
                "where the frame is evaluated: cpu (default), opengl, cuda (which integrates the "
                "3D Somigliana coordinates on the device too)"},
-          }));
+          })));
 }
 
 // The device of --device (default cpu), refused now, before any file is read, when it says it cannot run here.
@@ -75,9 +75,10 @@ std::string deformUsage() {
   return out.str();
 }
 
-int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices& devices) {
+int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices& devices, CommandLog& log) {
   ArgParser args = deformOptions();
   args.parse(rawArgs);
+  log.configure(args);
   if (args.helpRequested()) {
     std::cout << deformUsage();
     return kExitOk;
@@ -94,12 +95,12 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   // Inputs.
   ReadOptions read;
   read.weld = args.has("--weld");
-  const Cage cage = loadUsableCage(cagePath, printNotice, read);
+  const Cage cage = loadUsableCage(cagePath, log.sink(), read);
   const Eigen::MatrixXd posed = posedVerticesFromMesh(loadAnyMesh(posedPath, read), cage, posedPath);
   const MeshDocument document = loadMeshDocument(meshPath, read);
   const PolygonMesh& mesh = document.geometry;
-  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, printNotice);
-  noteIgnoredParameters(kCommand, args, method);
+  const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, log.sink());
+  noteIgnoredParameters(log, args, method);
 
   // Precompute once, deform once.
   PrecomputeOptions options = precomputeOptions(threads);
@@ -107,16 +108,16 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
   const bool normalsByGradient =
       document.normalCount > 0 && !args.has("--recompute-normals") &&
-      gradientsFitForNormals(kCommand, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
+      gradientsFitForNormals(log, method, cage, static_cast<std::size_t>(points.rows()), options, meshPath);
   const CliClock::time_point precomputeStart = CliClock::now();
   std::unique_ptr<CageDeformer> deformer;
   {
-    ProgressReporter progress("precomputing " + methodName(method) + " coordinates");
+    ProgressReporter progress = log.progress("precomputing " + methodName(method) + " coordinates");
     deformer = precompute(method, cage, points, options, meshPath, progress.callback(),
-                          commandMemoryCheck(kCommand, normalsByGradient));
+                          commandMemoryCheck(log, normalsByGradient));
   }
   const double precomputeSeconds = secondsSince(precomputeStart);
-  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) printNotice(*outside);
+  if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) log.notice(*outside);
   const CliClock::time_point deformStart = CliClock::now();
   const Eigen::MatrixXd deformed =
       deformPoints(*deformer, *makeEvaluator(device, *deformer), cage, posed, params, posedPath, meshPath);
@@ -126,20 +127,19 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   result.leftCols(cage.dim()) = deformed;
   Eigen::MatrixXd normals;  // empty: recomputed by the writer
   if (normalsByGradient) {
-    ProgressReporter progress("integrating the gradients for the normals");
+    ProgressReporter progress = log.progress("integrating the gradients for the normals");
     const DeformationGradients gradients(*deformer, points, progress.callback());
     const TransformedNormals transformed = transformNormals(document, result, gradients, posed, params);
     normals = transformed.normals;
     if (transformed.recomputed > 0)
-      std::cerr << kCommand << ": note: " << transformed.recomputed << " of " << document.normalCount
-                << " normals were recomputed from the deformed faces: their vertices lie outside the cage (or on "
-                << "it), where the deformation has no gradient\n";
+      log.note(std::to_string(transformed.recomputed) + " of " + std::to_string(document.normalCount) +
+               " normals were recomputed from the deformed faces: their vertices lie outside the cage (or on it), "
+               "where the deformation has no gradient");
   }
-  for (const std::string& note : writeMeshDocument(outPath, document, result, normals))
-    std::cerr << kCommand << ": note: " << outPath << ": " << note << "\n";
+  for (const std::string& note : writeMeshDocument(outPath, document, result, normals)) log.note(outPath + ": " + note);
 
   std::ostringstream summary;
-  summary << kCommand << ": " << cage.dim() << "D " << methodName(method);
+  summary << cage.dim() << "D " << methodName(method);
   std::string used;  // the parameters the method reads
   const auto add = [&](DeformParameter p, const std::string& text) {
     if (readsParameter(method, p) && !text.empty()) used += (used.empty() ? "" : ", ") + text;
@@ -156,9 +156,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   if (!used.empty()) summary << " (" << used << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "
-          << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath
-          << "\n";
-  std::cerr << summary.str();
+          << formatSeconds(precomputeSeconds) << ", deform " << formatSeconds(deformSeconds) << "; wrote " << outPath;
+  log.status(summary.str());
   return kExitOk;
 }
 

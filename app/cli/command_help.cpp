@@ -19,7 +19,9 @@ std::string helpUsage() {
     out << "  " << name << command.summary << "\n";
   }
   out << "\nRun 'somicage help COMMAND' or 'somicage COMMAND --help' for the options of a command.\n"
-      << "Exit status: 0 success, 1 the command failed or found problems, 2 bad input (options or files).\n";
+      << "Exit status: 0 success, 1 the command failed or found problems, 2 bad input (options or files),\n"
+      << "3 with --strict: done, but a warning was printed (points outside the cage, a repaired cage, ...),\n"
+      << "130 stopped by Ctrl-C (nothing written).\n";
   return out.str();
 }
 

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <iostream>
 
 #include "errors.h"
 #include "memory_estimate.h"
@@ -47,8 +46,6 @@ PrecomputeOptions precomputeOptions(int threads) {
   options.integration.threads = threads;
   return options;
 }
-
-void printNotice(const Notice& notice) { std::cerr << "somicage: " << describeNotice(notice) << "\n"; }
 
 Method methodOption(const ArgParser& args) {
   try {
@@ -133,7 +130,7 @@ DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   return params;
 }
 
-void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method) {
+void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method) {
   std::string ignored;
   const auto note = [&](const std::string& option, DeformParameter parameter) {
     if (args.has(option) && !readsParameter(method, parameter))
@@ -141,30 +138,30 @@ void noteIgnoredParameters(const std::string& command, const ArgParser& args, Me
   };
   for (const ParameterOption& o : kParameterOptions) note(o.option, o.parameter);
   for (const ChoiceParameter& choice : choiceParameters()) note(std::string("--") + choice.name, choice.parameter);
-  if (!ignored.empty()) std::cerr << command << ": note: " << methodName(method) << " ignores " << ignored << "\n";
+  if (!ignored.empty()) log.note(methodName(method) + " ignores " + ignored);
 }
 
-MemoryCheck commandMemoryCheck(const std::string& command, bool withGradients) {
-  return {
-      memoryHint(false), withGradients, [command](const MemoryEstimate& estimate) {
-        const std::optional<std::size_t> available = availableMemoryBytes();
-        // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
-        const bool big = estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
-        if (big)
-          std::cerr << command << ": estimated memory: " << formatBytes(estimate.coordinates) << " of coordinates, "
-                    << formatBytes(estimate.total()) << " in all ("
-                    << (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) << ")\n";
-      }};
+MemoryCheck commandMemoryCheck(const CommandLog& log, bool withGradients) {
+  return {memoryHint(false), withGradients, [&log](const MemoryEstimate& estimate) {
+            const std::optional<std::size_t> available = availableMemoryBytes();
+            // Small runs keep their one summary line; a big one says what it is about to take before it takes a while.
+            const bool big =
+                estimate.total() >= kBigPrecomputeBytes || (available && estimate.total() * 10 >= *available);
+            if (big)
+              log.status("estimated memory: " + formatBytes(estimate.coordinates) + " of coordinates, " +
+                         formatBytes(estimate.total()) + " in all (" +
+                         (available ? formatBytes(*available) + " free" : std::string("free memory unknown")) + ")");
+          }};
 }
 
-bool gradientsFitForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+bool gradientsFitForNormals(const CommandLog& log, Method method, const Cage& cage, std::size_t points,
                             const PrecomputeOptions& options, const std::string& meshPath) {
   try {
     requirePrecomputeMemory(method, cage, points, options, meshPath, memoryHint(false), true);
     return true;
   } catch (const InputError&) {
-    std::cerr << command << ": note: " << meshPath << ": the normals are recomputed from the deformed faces: "
-              << "carrying them by the deformation's gradient would not fit in the free memory\n";
+    log.note(meshPath + ": the normals are recomputed from the deformed faces: carrying them by the deformation's " +
+             "gradient would not fit in the free memory");
     return false;
   }
 }

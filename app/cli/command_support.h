@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/arg_parser.h"
+#include "cli/command_log.h"
 #include "deformer.h"
 #include "engine.h"
 #include "mesh_formats.h"
@@ -38,8 +39,8 @@ std::string methodsHelp();
 // (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
 
-// Prints a note on stderr when options are given to a method that ignores them (MethodDescriptor::parameters).
-void noteIgnoredParameters(const std::string& command, const ArgParser& args, Method method);
+// Notes (log.note) the options given to a method that ignores them (MethodDescriptor::parameters).
+void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method);
 
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);
@@ -51,20 +52,16 @@ int threadsOption(const ArgParser& args);
 // The options of a precompute on that many threads (0: all cores), its integration's included.
 PrecomputeOptions precomputeOptions(int threads);
 
-// Prints an engine notice (engine.h) on stderr: "somicage: note: PATH: ..." for a repair, "somicage: warning:
-// PATH: ..." for a warning. The commands load through the engine facade with it.
-void printNotice(const Notice& notice);
-
 // The memory check of the commands' precomputes (engine.h: precompute): the refusal's hint offers no float
 // storage (no command has that option), and when the precompute takes 1 GB or more, or 10% of the free memory or
-// more, "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" is printed on stderr before it starts.
-// withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
-MemoryCheck commandMemoryCheck(const std::string& command, bool withGradients = false);
+// more, "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" is a status line (log.status) before it
+// starts. withGradients: the deformation gradient (jacobian.h) will be built as well (estimateGradientBytes).
+MemoryCheck commandMemoryCheck(const CommandLog& log, bool withGradients = false);
 
 // Whether the deformation gradients (normals carried by J, normal_transform.h) fit in the free memory next to the
-// coordinates; when they do not, says on stderr that the normals will be recomputed. The precompute's own check
+// coordinates; when they do not, notes that the normals will be recomputed. The precompute's own check
 // (commandMemoryCheck) still refuses a run whose coordinates do not fit.
-bool gradientsFitForNormals(const std::string& command, Method method, const Cage& cage, std::size_t points,
+bool gradientsFitForNormals(const CommandLog& log, Method method, const Cage& cage, std::size_t points,
                             const PrecomputeOptions& options, const std::string& meshPath);
 
 }  // namespace somicage

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/command_log.h"
 #include "frame_evaluator.h"
 
 namespace somicage {
@@ -12,8 +13,9 @@ namespace somicage {
 struct CliCommand {
   const char* name;
   const char* summary;  // one line for `somicage help`
-  // The arguments after the command name and the frame devices the executable offers; the exit code.
-  int (*run)(const std::vector<std::string>& args, const FrameDevices& devices);
+  // The arguments after the command name, the frame devices the executable offers and the log its notices,
+  // notes, progress and status lines go through; the exit code (before CommandLog::exitCode).
+  int (*run)(const std::vector<std::string>& args, const FrameDevices& devices, CommandLog& log);
   std::string (*usage)();  // the full help text
 };
 
@@ -23,22 +25,24 @@ const CliCommand* findCliCommand(const std::string& name);
 
 // Exit codes.
 constexpr int kExitOk = 0;
-constexpr int kExitFailure = 1;   // the command ran and the answer is "no" (check: the cage has problems)
-constexpr int kExitBadInput = 2;  // the input (files, options) is not usable
+constexpr int kExitFailure = 1;        // the command ran and the answer is "no" (check: the cage has problems)
+constexpr int kExitBadInput = 2;       // the input (files, options) is not usable
+constexpr int kExitWarnings = 3;       // --strict: the command did its work, but printed a warning (command_log.h)
+constexpr int kExitInterrupted = 130;  // Ctrl-C stopped it (128 + SIGINT, as shells report it; interrupt.h)
 
 int runHelpCommand(const std::vector<std::string>& args);
 std::string helpUsage();
-int runDeformCommand(const std::vector<std::string>& args, const FrameDevices& devices);
+int runDeformCommand(const std::vector<std::string>& args, const FrameDevices& devices, CommandLog& log);
 std::string deformUsage();
-int runAnimateCommand(const std::vector<std::string>& args);
+int runAnimateCommand(const std::vector<std::string>& args, CommandLog& log);
 std::string animateUsage();
-int runCheckCommand(const std::vector<std::string>& args);
+int runCheckCommand(const std::vector<std::string>& args, CommandLog& log);
 std::string checkUsage();
-int runCageCommand(const std::vector<std::string>& args);
+int runCageCommand(const std::vector<std::string>& args, CommandLog& log);
 std::string cageUsage();
-int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices);
+int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& devices, CommandLog& log);
 std::string benchUsage();
-int runAnalyzeCommand(const std::vector<std::string>& args);
+int runAnalyzeCommand(const std::vector<std::string>& args, CommandLog& log);
 std::string analyzeUsage();
 
 }  // namespace somicage

@@ -5,10 +5,16 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cli/interrupt.h"
+
 namespace somicage {
 
-ProgressReporter::ProgressReporter(std::string label)
-    : label_(std::move(label)), terminal_(::isatty(STDERR_FILENO) == 1), start_(Clock::now()), lastPrint_(start_) {}
+ProgressReporter::ProgressReporter(std::string label, bool silent)
+    : label_(std::move(label)),
+      terminal_(::isatty(STDERR_FILENO) == 1),
+      silent_(silent),
+      start_(Clock::now()),
+      lastPrint_(start_) {}
 
 ProgressReporter::~ProgressReporter() { finish(); }
 
@@ -17,7 +23,8 @@ ProgressCallback ProgressReporter::callback() {
 }
 
 bool ProgressReporter::report(double fraction) {
-  if (finished_ || !std::isfinite(fraction)) return true;
+  if (interruptRequested()) return false;  // Ctrl-C: the computation throws Cancelled (interrupt.h)
+  if (finished_ || silent_ || !std::isfinite(fraction)) return true;
   const Clock::time_point now = Clock::now();
   const double percent = 100.0 * std::min(1.0, std::max(0.0, fraction));
   if (terminal_) {

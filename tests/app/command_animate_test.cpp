@@ -1,10 +1,12 @@
 // somicage animate and the lossless somicage deform, run as processes. A GLB written by `animate` is read back by
 // this test's own GLB reader: one frame per timeline frame, and at every key the positions equal `somicage deform`
 // of that key's pose (and parameters) to float precision; the OBJ sequence equals it to 1e-12 and keeps the
-// mesh's records. Failures leave nothing behind. With Debian's blender installed, a headless import of the GLB
-// sees the same frame count, and a textured OBJ deformed to GLB imports with its materials' colours, its texture's
-// pixels and the OBJ's UVs on every corner (skipped without blender).
+// mesh's records. Failures leave nothing behind. Morph targets are named by session frame; --out is a .glb or a
+// folder, anything else refused before any work; the folder gets the user's umask. With Debian's blender installed, a
+// headless import of the GLB sees the same frame count, and a textured OBJ deformed to GLB imports with its materials'
+// colours, its texture's pixels and the OBJ's UVs on every corner (skipped without blender).
 #include <stb_image_write.h>
+#include <sys/stat.h>
 
 #include <array>
 #include <cmath>
@@ -192,6 +194,58 @@ TEST_F(Animate, FailuresLeaveNothingBehind) {
   std::sort(left.begin(), left.end());
   EXPECT_EQ(left, (std::vector<std::string>{"broken.json", "occupied", "s.json"}));
   EXPECT_EQ(readFile(occupied + "/keep.txt"), "mine");
+}
+
+// The GLB's morph targets are named by the session frame they hold: with --frames 4:12 the base mesh is frame 4 and
+// the targets frame_5 ... frame_12, and the one named frame_6 (key 1's frame) is that key's `somicage deform`.
+TEST_F(Animate, GlbMorphTargetsAreNamedBySessionFrame) {
+  const std::string glbPath = dir.file("anim.glb");
+  const RunResult r = runSomicage({"animate", "--session", sessionPath, "--out", glbPath, "--frames", "4:12"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const Glb glb(readFile(glbPath));
+  const Json& mesh = glb.json["meshes"].array.at(0);
+  const std::vector<Json>& names = mesh["extras"]["targetNames"].array;
+  ASSERT_EQ(names.size(), 8u);
+  for (size_t t = 0; t < names.size(); ++t) EXPECT_EQ(names[t].string, "frame_" + std::to_string(5 + t));
+  const Json& primitive = mesh["primitives"].array.at(0);
+  const Eigen::MatrixXd base = glb.floats(static_cast<int>(primitive["attributes"]["POSITION"].number));
+  for (size_t t = 0; t < names.size(); ++t) {
+    if (names[t].string != "frame_6") continue;
+    const Eigen::MatrixXd frame6 =
+        base + glb.floats(static_cast<int>(primitive["targets"].array.at(t)["POSITION"].number));
+    EXPECT_LE((frame6 - deformKey(1)).cwiseAbs().maxCoeff(), 1e-6) << "float32 positions";
+  }
+}
+
+// --out is one .glb or a folder (a trailing '/', or no extension); anything else is refused with exit 2 before any
+// work: the session here names a mesh that does not exist, and the message is about --out, not the mesh.
+TEST_F(Animate, OutMustBeAGlbOrAFolder) {
+  std::string session = readFile(sessionPath);
+  session.replace(session.find("pyramid_mesh.obj"), 16, "absent_mesh.obj");
+  std::ofstream(dir.file("absent.json")) << session;
+  for (const std::string out : {"a.obj", "frames.d", "anim.gltf"}) {
+    const RunResult r = runSomicage({"animate", "--session", dir.file("absent.json"), "--out", dir.file(out)});
+    EXPECT_EQ(r.exitCode, 2) << r;
+    EXPECT_NE(r.err.find(dir.file(out) + ": is neither a .glb file nor a folder"), std::string::npos) << r;
+    EXPECT_FALSE(fs::exists(dir.file(out)));
+  }
+  const RunResult folder =
+      runSomicage({"animate", "--session", sessionPath, "--out", dir.file("frames"), "--frames", "0:1"});
+  ASSERT_EQ(folder.exitCode, 0) << folder;
+  EXPECT_TRUE(fs::exists(dir.file("frames/pyramid_mesh_0001.obj")));
+}
+
+// The sequence's folder is made as mkdir makes one, with the user's umask (not mkdtemp's 0700).
+TEST_F(Animate, SequenceFolderFollowsTheUmask) {
+  for (const mode_t mask : {mode_t{022}, mode_t{027}}) {
+    const std::string out = dir.file("seq" + std::to_string(mask));
+    const mode_t previous = ::umask(mask);
+    const RunResult r = runSomicage({"animate", "--session", sessionPath, "--out", out + "/", "--frames", "0:1"});
+    ::umask(previous);
+    ASSERT_EQ(r.exitCode, 0) << r;
+    const fs::perms expected = fs::perms::all & ~static_cast<fs::perms>(mask);
+    EXPECT_EQ(fs::status(out).permissions() & fs::perms::all, expected) << "umask " << std::oct << mask;
+  }
 }
 
 bool haveBlender() { return std::system("command -v blender > /dev/null 2>&1") == 0; }

@@ -36,10 +36,11 @@ if not os.access(CLI, os.X_OK):
 
 sys.path.insert(0, str(REPO / "blender"))
 import somicage_cage_deform as addon  # noqa: E402
+from somicage_cage_deform import binding as addon_binding, engine, geometry, ui  # noqa: E402
 
 bpy.ops.wm.read_factory_settings(use_empty=True)  # an empty scene
 addon.register()
-somicage = addon.somicage_module()
+somicage = engine.somicage_module()
 
 REST, POSED, MESH = (str(MODELS / name) for name in ("fireHydrant_cages_triangulated.obj",
                                                      "fireHydrant_cages_triangulated_deformed.obj", "fireHydrant.obj"))
@@ -65,7 +66,7 @@ def add_object(name, path):
 
 
 def coordinates(obj):
-    return addon.local_coordinates(obj.data)
+    return geometry.local_coordinates(obj.data)
 
 
 def check_close(what, actual, expected, diameter):
@@ -84,14 +85,14 @@ expected = reference()
 binding = hydrant.somicage
 # The method menu is the engine's registry: every method of somicage.method_info(), named and described as there.
 info = somicage.method_info()
-assert addon.method_items(binding, bpy.context) == [(m["name"], m["display_name"], m["description"], k)
+assert engine.method_items(binding, bpy.context) == [(m["name"], m["display_name"], m["description"], k)
                                                     for k, m in enumerate(info)]
 for m in info:  # through Blender's RNA: each is a value of the property, with its name and tooltip
     binding.method = m["name"]
     assert binding.method == m["name"]
     assert bpy.types.UILayout.enum_item_name(binding, "method", m["name"]) == m["display_name"], m
     assert bpy.types.UILayout.enum_item_description(binding, "method", m["name"]) == m["description"], m
-    assert addon.method_parameters(m["name"]) == set(m["parameters"]), m
+    assert engine.method_parameters(m["name"]) == set(m["parameters"]), m
 
 
 class LayoutRecorder:
@@ -120,13 +121,13 @@ class LayoutRecorder:
 SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational", "bulging", "normals"}
 # The choice menus are the engine's table (somicage.choice_info()), names and order.
 for choice in somicage.choice_info():
-    items = getattr(addon, choice["name"].upper())
+    items = getattr(addon_binding, choice["name"].upper())
     assert [item[0] for item in items] == [value[0] for value in choice["values"]], choice["name"]
 bpy.context.view_layer.objects.active = hydrant
 for m in info:
     binding.method = m["name"]
     panel = type("Panel", (), {"layout": LayoutRecorder()})()
-    addon.SOMICAGE_PT_panel.draw(panel, bpy.context)
+    ui.SOMICAGE_PT_panel.draw(panel, bpy.context)
     reads = set(m["parameters"]) | ({"nu_infinite"} if "nu" in m["parameters"] else set())
     assert panel.layout.enabled_properties() & SETTINGS_DRAWN == reads & SETTINGS_DRAWN, m
 binding.method = "somigliana"
@@ -172,7 +173,7 @@ with tempfile.TemporaryDirectory() as folder:
     bpy.ops.wm.open_mainfile(filepath=saved)
 scene, hydrant, cage = bpy.context.scene, bpy.data.objects["hydrant"], bpy.data.objects["cage"]
 binding = hydrant.somicage
-assert binding.bound and not addon._deformers
+assert binding.bound and not addon_binding._deformers
 bpy.context.view_layer.objects.active = hydrant
 scene.frame_set(3)
 check_close("reopened file, frame 3", coordinates(hydrant), expected, diameter)
@@ -196,6 +197,6 @@ check_close("baked frame 1", baked.reshape(-1, 3).astype(float), original, diame
 # Unbind: the original coordinates, exactly, and nothing of the binding left.
 assert bpy.ops.somicage.unbind() == {"FINISHED"}
 assert np.array_equal(coordinates(hydrant), original), "unbind did not restore the original coordinates"
-assert addon.REST_ATTRIBUTE not in hydrant.data.attributes and "somicage_rest_matrix" not in hydrant
+assert addon_binding.REST_ATTRIBUTE not in hydrant.data.attributes and "somicage_rest_matrix" not in hydrant
 assert not binding.bound
 print("blender add-on test: OK")

@@ -12,6 +12,7 @@
 #include <assimp/Importer.hpp>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include "errors.h"
 #include "scratch_folder.h"
@@ -178,12 +179,20 @@ TEST_F(MeshFormats, StlHasOneVertexPerCornerAndWeldJoinsThem) {
 }
 
 TEST_F(MeshFormats, FbxWrittenByAssimpWeldsBackToTheObj) {
-  // The scene assimp reads from our OBJ, written as ASCII FBX by assimp's exporter.
+  // The scene assimp reads from our OBJ, written as ASCII FBX by assimp's exporter, its unit set to metres
+  // (UnitScaleFactor 100 cm; assimp writes 1, centimetres, which would read as 1/100 of the OBJ: tests/app's
+  // mesh_units_test.cpp).
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(folder / "mesh.obj", 0);
   ASSERT_NE(scene, nullptr);
   Assimp::Exporter exporter;
   ASSERT_EQ(exporter.Export(scene, "fbxa", folder / "mesh.fbx"), AI_SUCCESS) << exporter.GetErrorString();
+  std::ifstream in(folder / "mesh.fbx", std::ios::binary);
+  std::string fbx((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string unit = "\"UnitScaleFactor\", \"double\", \"Number\", \"\", 1\n";
+  ASSERT_NE(fbx.find(unit), std::string::npos);
+  fbx.replace(fbx.find(unit), unit.size(), "\"UnitScaleFactor\", \"double\", \"Number\", \"\", 100\n");
+  write(folder / "mesh.fbx", fbx);
   expectWeldedObj(loadAnyMesh(folder / "mesh.fbx", ReadOptions{true}), obj, kFaces);
 }
 
