@@ -117,9 +117,16 @@ void measureGeometry(const Cage& cage, CageReport& report) {
   const double cell = tolerance > 0.0 ? tolerance : 1.0;  // diameter 0: every vertex is in one cell
   using Key = std::array<long long, 3>;
   std::map<Key, std::vector<int>> grid;
+  // Cells counted from the lowest corner: at most diameter / cell = 1 / kDuplicateTolerance of them per axis, so
+  // the cast is in range however far from the origin the cage is (NaN only when the extent overflows: one cell).
+  const Eigen::RowVectorXd lowest =
+      V.rows() > 0 ? Eigen::RowVectorXd(V.colwise().minCoeff()) : Eigen::RowVectorXd::Zero(V.cols());
   const auto keyOf = [&](int i) {
     Key key{0, 0, 0};
-    for (int k = 0; k < cage.dim(); ++k) key[k] = static_cast<long long>(std::floor(V(i, k) / cell));
+    for (int k = 0; k < cage.dim(); ++k) {
+      const double index = std::floor((V(i, k) - lowest(k)) / cell);
+      key[k] = index < 1e15 ? static_cast<long long>(index) : 0;
+    }
     return key;
   };
   for (int i = 0; i < cage.numVertices(); ++i) {
@@ -198,6 +205,7 @@ void visitOverlappingFaces(const Cage& cage, const std::vector<char>& skip, Visi
   for (int j = 0; j < cage.numFaces(); ++j) {
     for (int k = 0; k < Dim; ++k) boxes[j].extend(V.row(cage.faces(j, k)).transpose());
   }
+  if (cage.numFaces() == 0) return;  // also no vertices maybe: no extent to sort along
   int axis = 0;
   (V.colwise().maxCoeff() - V.colwise().minCoeff()).maxCoeff(&axis);
   std::vector<int> order;

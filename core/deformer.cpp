@@ -1,9 +1,11 @@
 #include "deformer.h"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "errors.h"
+#include "medit_io.h"
 
 namespace somicage {
 
@@ -12,15 +14,29 @@ bool operator==(const DeformParams& a, const DeformParams& b) {
          a.corotational == b.corotational && a.bulging == b.bulging && a.normals == b.normals && a.kind == b.kind;
 }
 
+namespace {
+// A parameter value as the user would type it: 0.7, 1e+06, inf.
+std::string text(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+}  // namespace
+
+std::string rangeText(const ParameterRange& range, bool open) {
+  return (open ? "(" : "[") + text(range.min) + ", " + text(range.max) + (open ? ")" : "]");
+}
+
 void validateDeformParams(const DeformParams& params) {
-  if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= -1 || params.nu >= 0.5)))
-    throw InputError("nu", -1, "Poisson ratio " + std::to_string(params.nu) + " is out of range",
-                     "use a value in (-1, 0.5), or inf / -inf for the limit");
-  if (!(params.gamma >= 0) || std::isinf(params.gamma))
-    throw InputError("gamma", -1, "bulging scale " + std::to_string(params.gamma) + " is invalid",
-                     "use a finite value >= 0");
-  if (!(params.blend >= 0 && params.blend <= 1))
-    throw InputError("blend", -1, "blend " + std::to_string(params.blend) + " is outside [0, 1]",
+  if (std::isnan(params.nu) || (!std::isinf(params.nu) && (params.nu <= kNuRange.min || params.nu >= kNuRange.max)))
+    throw InputError("nu", -1, "Poisson ratio " + text(params.nu) + " is out of range",
+                     "use a value in " + rangeText(kNuRange, true) + ", or inf / -inf for the limit");
+  if (!(params.gamma >= kGammaRange.min && params.gamma <= kGammaRange.max))
+    throw InputError("gamma", -1, "bulging scale " + text(params.gamma) + " is out of range",
+                     "use a value in " + rangeText(kGammaRange) +
+                         ": beyond it a face's normal stretch, up to exp(gamma), loses all meaning");
+  if (!(params.blend >= kBlendRange.min && params.blend <= kBlendRange.max))
+    throw InputError("blend", -1, "blend " + text(params.blend) + " is outside " + rangeText(kBlendRange),
                      "use 0 for the global variant, 1 for the local variant, or a value in between");
   if (params.kind != VariantKind::Blend && params.kind != VariantKind::Affine && params.kind != VariantKind::Stable)
     throw InputError("variant", -1, "variant kind " + std::to_string(static_cast<int>(params.kind)) + " is unknown",
@@ -36,6 +52,35 @@ void validateDeformParams(const DeformParams& params) {
 void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params,
                           Eigen::MatrixXd& out) const {
   evaluateFrame(coordinates_, frameWeights(posedVertices, params), dim(), threads_, out);
+}
+
+std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
+                                                int* reoriented) {
+  if (options.volumeMesh) return options.volumeMesh;
+  int flipped = 0;
+  std::shared_ptr<VolumeMesh> mesh;
+  if (const auto file = options.methodOptions.find("tets"); file != options.methodOptions.end()) {
+    MeditMesh read = readMedit(file->second);
+    flipped = checkVolumeMesh(read.mesh, restCage, read.source);
+    mesh = std::make_shared<VolumeMesh>(std::move(read.mesh));
+  } else if (std::unique_ptr<VolumeMesh> star =
+                 options.methodOptions.count("tet-level") == 0 ? starVolumeMesh(restCage) : nullptr) {
+    mesh = std::move(star);  // the coarsest mesh there is, the same in every front end
+  } else if (options.volumeMesher) {
+    mesh = std::make_shared<VolumeMesh>(options.volumeMesher(restCage, options.methodOptions));
+    try {
+      flipped = checkVolumeMesh(*mesh, restCage, {"the generated tetrahedral mesh", {}, {}});
+    } catch (const InputError& e) {  // e.g. a sliver CGAL left flat: the user can only change the level
+      throw InputError("--tet-level", -1, "the generated tetrahedral mesh is unusable: " + e.problem(),
+                       "try another --tet-level, or give a tetrahedral mesh with --tets");
+    }
+  } else {
+    throw InputError("--tets", -1, "the cage needs a tetrahedral mesh, and it is not star-shaped from its centroid",
+                     "give one with --tets FILE.mesh (Python: tets=), or use a front end that tetrahedralizes cages "
+                     "(the somicage command, the editor)");
+  }
+  if (reoriented) *reoriented = flipped;
+  return mesh;
 }
 
 std::unique_ptr<CageDeformer> makeDeformer(Method method, const Cage& restCage, const Eigen::MatrixXd& points,

@@ -15,6 +15,7 @@
 #include "integration_options.h"
 #include "method.h"
 #include "progress.h"
+#include "volume_mesh.h"
 
 namespace somicage {
 
@@ -40,9 +41,30 @@ struct DeformParams {
 // Every field equal (numbers exactly).
 bool operator==(const DeformParams& a, const DeformParams& b);
 inline bool operator!=(const DeformParams& a, const DeformParams& b) { return !(a == b); }
+// The ranges validateDeformParams accepts: the one list every front end shows or checks (the CLI's help, the
+// editor's options and sliders, Python's somicage.parameter_ranges(), the Blender add-on through it).
+struct ParameterRange {
+  double min, max;
+};
+// nu: the open interval (min, max), or +-infinity (the limits of section 5).
+constexpr ParameterRange kNuRange{-1.0, 0.5};
+// gamma: [min, max]. The normal stretch is eta_j = lambda_j exp(gamma beta_j / (2^(d-1) pi)) (section 4.4) with
+// |beta_j| < 2^d pi (3D: a difference of two solid angles in (-2 pi, 2 pi]; 2D: wrapped to (-pi, pi]), so
+// exp(-gamma) < eta_j / lambda_j < exp(gamma). At 10 (five times the paper's largest gamma, twice the editor's
+// slider) that bound is 2.2e4 and every result stays finite; beyond it one face's stretch can reach 1e248
+// (gamma 1e4) and overflow (1e6) without any pose being wrong.
+constexpr ParameterRange kGammaRange{0.0, 10.0};
+// blend: [min, max], 0 = global variant, 1 = local variant.
+constexpr ParameterRange kBlendRange{0.0, 1.0};
+
+// A range as help texts and messages show it: "[0, 10]", or "(-1, 0.5)" when open.
+std::string rangeText(const ParameterRange& range, bool open = false);
 
 // Throws InputError naming the parameter when a value is out of range or NaN.
 void validateDeformParams(const DeformParams& params);
+
+// The thread counts every front end takes (--threads, Python's threads=): 0 (all cores) to kMaxThreads.
+constexpr int kMaxThreads = 4096;
 
 struct PrecomputeOptions {
   IntegrationOptions integration;  // Somigliana only
@@ -51,7 +73,21 @@ struct PrecomputeOptions {
   // Integrates the rows of the methods that integrate row by row (Somigliana): empty = the CPU's; a device's
   // (cuda_backend.h: cudaRowIntegrator) may be injected. The rows are written into C by the method either way.
   RowIntegrator rowIntegrator;
+  // The method's own options (MethodDescriptor::options), by key: e.g. Phong's "tets" and "tet-level".
+  MethodOptions methodOptions;
+  // For a method that needs a volume mesh of the rest cage (MethodDescriptor::needsVolumeMesh): the mesh when a
+  // front end has made it already (engine.h: prepareVolumeMesh), else the method makes it (volumeMeshFor: the
+  // "tets" file, else volumeMesher, else the star of the cage's faces).
+  std::shared_ptr<const VolumeMesh> volumeMesh;
+  VolumeMesher volumeMesher;
 };
+
+// A volume method's mesh: options.volumeMesh; else the MEDIT file methodOptions["tets"] (checkVolumeMesh: *reoriented
+// counts the reoriented simplices); else, with no "tet-level" asked for, the cage's star (starVolumeMesh) when it is
+// star-shaped from its centroid; else options.volumeMesher's (checked too). Throws InputError naming --tets when
+// there is none (a cage not star-shaped from its centroid, and no mesher).
+std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
+                                                int* reoriented = nullptr);
 
 // Per-point facts established by the precompute (#P each; empty where a method does not provide them).
 struct PrecomputeDiagnostics {

@@ -4,7 +4,14 @@
 #include <pybind11/eigen.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <variant>
+
+#include "errors.h"
 #include "numpy_arrays.h"
 #include "obj_io.h"
 #include "python_cage.h"
@@ -12,10 +19,36 @@
 #include "python_errors.h"
 
 namespace py = pybind11;
+namespace fs = std::filesystem;
 
 namespace somicage {
 
 namespace {
+
+// Paths come as str or any os.PathLike (pathlib.Path); messages name them as given.
+std::string pathText(const fs::path& path) { return path.string(); }
+
+// save_obj writes OBJ text whatever the name says: a name that promises another format is refused before writing.
+void requireObjExtension(const std::string& path) {
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".obj")
+    throw InputError(path, -1,
+                     extension.empty() ? "has no extension, and save_obj writes OBJ text"
+                                       : "has the extension " + extension + ", but save_obj writes OBJ text",
+                     "name the file .obj");
+}
+
+// The engine's parameter ranges (core/deformer.h) by Deformer.deform keyword: the editor's and the CLI's too.
+py::dict parameterRanges() {
+  py::dict ranges;
+  ranges["nu"] = py::make_tuple(kNuRange.min, kNuRange.max);
+  ranges["gamma"] = py::make_tuple(kGammaRange.min, kGammaRange.max);
+  ranges["blend"] = py::make_tuple(kBlendRange.min, kBlendRange.max);
+  ranges["threads"] = py::make_tuple(0, kMaxThreads);
+  return ranges;
+}
 
 // Deformer.deform's keyword arguments that set each DeformParameter (method.h), for method_info().
 struct ParameterKeyword {
@@ -65,14 +98,17 @@ py::list choiceInfo() {
 void defineCage(py::module_& module) {
   py::class_<PythonCage>(module, "Cage",
                          "A cage as `somicage deform` uses it: face orientation repaired, validated, warned about.")
-      .def(py::init([](const py::handle& vertices, const py::handle& faces) {
+      .def(py::init([](const ArrayArgument& vertices, const std::optional<ArrayArgument>& faces) {
              return makeUsableCage(cageFromArrays(vertices, faces), "Cage(vertices, faces)");
            }),
            py::arg("vertices"), py::arg("faces") = py::none(),
            "vertices (V, 3) with triangles faces (F, 3), counter-clockwise seen from outside; or a 2D polygon: "
-           "vertices (V, 2) with edges (F, 2), or faces=None for a counter-clockwise vertex loop.")
+           "vertices (V, 2) with edges (F, 2), or faces=None for a counter-clockwise vertex loop. Any real dtype "
+           "(float16 ... float64, integers) for vertices, any integer dtype for faces, any memory order; empty, "
+           "non-finite or out-of-range input raises somicage.InputError naming the argument.")
       .def_static(
-          "from_obj", [](const std::string& path) { return makeUsableCage(loadCage(path), path); }, py::arg("path"),
+          "from_obj", [](const fs::path& path) { return makeUsableCage(loadCage(pathText(path)), pathText(path)); },
+          py::arg("path"),
           "A cage from an OBJ file: a closed triangle (or polygon) mesh, or a 2D polygon when every z is 0.")
       .def_property_readonly(
           "vertices", [](const PythonCage& cage) -> const Eigen::MatrixXd& { return cage.cage.vertices; },
@@ -93,50 +129,63 @@ void defineCage(py::module_& module) {
       });
 }
 
+// Deformer.deform's docstring, with the engine's ranges (kept for the module's lifetime: pybind11 keeps the pointer).
+const std::string& deformDoc() {
+  static const std::string doc =
+      "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed (V, d). "
+      "nu: Poisson ratio in " +
+      rangeText(kNuRange, true) + " or +-inf; gamma in " + rangeText(kGammaRange) +
+      ": bulging; variant: global, local, affine or stable; blend in " + rangeText(kBlendRange) +
+      " overrides variant (somicage.parameter_ranges() has them all); traction_fix: Eq. 15; corotational: bem "
+      "only, removes the best-fit rotation before the linear-elastic solve; bulging: solid-angle (the paper's text), "
+      "reference (the authors' code: gamma squared) or swept-volume; normals: area or angle. Green and mvc ignore "
+      "all but posed; bem reads nu and corotational.";
+  return doc;
+}
+
 void defineDeformer(py::module_& module) {
   py::class_<PythonDeformer>(module, "Deformer",
                              "Precomputed coordinates of points in a rest cage (GIL released, progress, cancel).")
-      .def(py::init<const PythonCage&, const py::handle&, const std::string&, int, bool, const py::object&>(),
+      .def(py::init<const PythonCage&, const ArrayArgument&, const std::string&, int, bool, const ProgressArgument&,
+                    const std::string&>(),
            py::arg("cage"), py::arg("points"), py::arg("method") = "somigliana", py::kw_only(), py::arg("threads") = 0,
-           py::arg("float_storage") = false, py::arg("progress") = py::none(),
+           py::arg("float_storage") = false, py::arg("progress") = py::none(), py::arg("tets") = "",
            "points (P, d) (a 2D cage also takes (P, 3) and uses x, y); method: one of somicage.methods(); "
            "threads: 0 = all cores, for the precompute and every deform; float_storage: store the coordinates in "
            "float (half the memory, ~1e-7 relative error); progress(fraction) -> False cancels (somicage.Cancelled); "
-           "Ctrl-C raises KeyboardInterrupt.")
+           "Ctrl-C raises KeyboardInterrupt; tets: a MEDIT .mesh tetrahedral mesh of the cage for method='phong' "
+           "(default: the cage coned from its centroid, when it is star-shaped from it).")
       .def(
           "deform",
-          [](const PythonDeformer& deformer, const py::handle& posed, double nu, double gamma,
+          [](const PythonDeformer& deformer, const ArrayArgument& posed, double nu, double gamma,
              const std::string& variant, std::optional<double> blend, bool tractionFix, bool corotational,
              const std::string& bulging, const std::string& normals) {
             return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}});
           },
           py::arg("posed"), py::kw_only(), py::arg("nu") = 0.0, py::arg("gamma") = 0.0, py::arg("variant") = "global",
           py::arg("blend") = py::none(), py::arg("traction_fix") = true, py::arg("corotational") = false,
-          py::arg("bulging") = "solid-angle", py::arg("normals") = "area",
-          "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed "
-          "(V, d). nu: Poisson ratio in (-1, 0.5) or +-inf; gamma >= 0: bulging; variant: global, local, affine or stable; blend in "
-          "[0, 1] overrides variant; traction_fix: Eq. 15; corotational: bem only, removes the best-fit rotation "
-          "before the linear-elastic solve; bulging: solid-angle (the paper's text), reference (the authors' code: "
-          "gamma squared, the paper's figures) or swept-volume; normals: area or angle (vertex normals and rotations "
-          "weighted by corner angle). Green and mvc ignore all but posed; bem reads nu and corotational.")
+          py::arg("bulging") = "solid-angle", py::arg("normals") = "area", deformDoc().c_str())
       .def(
           "analyze",
-          [](const PythonDeformer& deformer, const py::handle& posed, const std::vector<std::vector<int>>& faces,
+          [](const PythonDeformer& deformer, const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
              double nu, double gamma, const std::string& variant, std::optional<double> blend, bool tractionFix,
              bool corotational, const std::optional<std::tuple<double, double, int>>& nuSweep,
-             const std::string& bulging, const std::string& normals) {
+             const ProgressArgument& progress, const std::string& bulging, const std::string& normals) {
             return deformer.analyze(posed, faces,
-                                    {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}}, nuSweep);
+                                    {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}}, nuSweep,
+                                    progress);
           },
           py::arg("posed"), py::arg("faces") = std::vector<std::vector<int>>{}, py::kw_only(), py::arg("nu") = 0.0,
           py::arg("gamma") = 0.0, py::arg("variant") = "global", py::arg("blend") = py::none(),
           py::arg("traction_fix") = true, py::arg("corotational") = false, py::arg("nu_sweep") = py::none(),
+          py::arg("progress") = py::none(),
           py::arg("bulging") = "solid-angle", py::arg("normals") = "area",
           "The numbers of `somicage analyze --json` for the cage's vertices moved to posed, as a dict with its keys: "
           "volume change of the mesh faces (0-based index lists over the points; None when open, "
           "volume_change_capped then), det J, conformal distortion and area ratio quantiles, fold-overs; "
           "nu_sweep=(from, to, count) adds the sweep. The exact J is integrated on the first call (GIL released) "
-          "and kept.")
+          "and kept; progress(fraction) as for Deformer (0 to 1 for that integration, then for the sweep): False "
+          "cancels (somicage.Cancelled), Ctrl-C raises KeyboardInterrupt.")
       .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })
       .def_property_readonly("dim", &PythonDeformer::dim)
       .def_property_readonly("num_points", [](const PythonDeformer& d) { return d.engine().numPoints(); })
@@ -187,33 +236,40 @@ PYBIND11_MODULE(_somicage, module) {
              "One dict per keyword of Deformer.deform that takes a name (bulging, normals): name, description and "
              "values, a list of (name, description) with the default first.");
   module.def(
+      "parameter_ranges", [] { return parameterRanges(); },
+      "{keyword: (min, max)} of Deformer.deform's numbers and Deformer's threads, from the engine's one list "
+      "(core/deformer.h) that the command line and the editor check too: nu in the open interval (or +-inf), "
+      "gamma, blend and threads in the closed one.");
+  module.def(
       "load_mesh",
-      [](const std::string& path) {
-        PolygonMesh mesh = loadMesh(path);
+      [](const fs::path& path) {
+        PolygonMesh mesh = loadMesh(pathText(path));
         return py::make_tuple(std::move(mesh.vertices), std::move(mesh.faces));
       },
       py::arg("path"), "(vertices (V, 3) float64, faces: list of 0-based index lists) of any OBJ file.");
   module.def(
       "save_obj",
-      [](const std::string& path, const py::handle& vertices, const std::vector<std::vector<int>>& faces) {
+      [](const fs::path& path, const ArrayArgument& vertices, const std::vector<std::vector<int>>& faces) {
+        requireObjExtension(pathText(path));
         PolygonMesh topology;
         topology.faces = faces;
-        saveObj(path, matrixFromArray(vertices, "vertices", 0), topology);
+        saveObj(pathText(path), matrixFromArray(vertices.object, "vertices", 0), topology);
       },
       py::arg("path"), py::arg("vertices"), py::arg("faces") = std::vector<std::vector<int>>{},
       "Writes vertices (V, 3) or (V, 2) and faces (0-based index lists) with 17 significant digits, atomically, "
-      "as `somicage deform` writes its output.");
+      "as `somicage deform` writes its output. The path must end in .obj.");
   module.def(
-      "load_posed", [](const std::string& path, const PythonCage& cage) { return loadPosedVertices(path, cage.cage); },
+      "load_posed",
+      [](const fs::path& path, const PythonCage& cage) { return loadPosedVertices(pathText(path), cage.cage); },
       py::arg("path"), py::arg("cage"), "The vertices (V, d) of a posed cage file, checked against the rest cage.");
   module.def(
       "check",
-      [](const py::handle& cage, const py::handle& faces) {
-        if (py::isinstance<py::str>(cage))
-          return checkCage(loadCage(cage.cast<std::string>()), cage.cast<std::string>());
-        return checkCage(cageFromArrays(cage, faces), "Cage(vertices, faces)");
+      [](const std::variant<fs::path, ArrayArgument>& cage, const std::optional<ArrayArgument>& faces) {
+        if (const fs::path* path = std::get_if<fs::path>(&cage))
+          return checkReport(loadCage(pathText(*path)), pathText(*path));
+        return checkReport(cageFromArrays(std::get<ArrayArgument>(cage), faces), "Cage(vertices, faces)");
       },
       py::arg("cage"), py::arg("faces") = py::none(),
       "Validity of a cage as given (an OBJ path, or vertices and faces), the repairs deform would apply and its "
-      "warnings: the cage keys of `somicage check --json`.");
+      "warnings: the cage keys of `somicage check --json`, with the same values.");
 }

@@ -4,10 +4,12 @@
 
 #include <pybind11/pybind11.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cage.h"
+#include "numpy_arrays.h"
 
 namespace somicage {
 
@@ -19,15 +21,15 @@ struct PythonCage {
 };
 
 // The cage as written in the arrays: vertices (V, 3) with triangles (F, 3), or (V, 2) with edges (F, 2) or, when
-// faces is None, the vertices as a counter-clockwise loop. Shapes are checked; nothing else.
-Cage cageFromArrays(const pybind11::handle& vertices, const pybind11::handle& faces);
+// faces is None, the vertices as a counter-clockwise loop. Dtypes, shapes, finiteness and index ranges are checked
+// (numpy_arrays.h); the rest is the cage validation's.
+Cage cageFromArrays(const ArrayArgument& vertices, const std::optional<ArrayArgument>& faces);
 
 // The engine's prepareCage (engine.h: repair, validate, notices, refusal naming source), with each notice emitted
 // as a somicage.SomiCageWarning in the command line's words.
 PythonCage makeUsableCage(Cage cage, std::string source);
 
-// validateCage on the cage as given, the repairs deform would apply, and whether it is usable then; the keys and
-// values of `somicage check --json` for the cage.
-pybind11::dict checkCage(const Cage& cage, const std::string& source);
+// The cage keys and values of `somicage check --json` (core/cage_check.h, the one place both are made) as a dict.
+pybind11::dict checkReport(const Cage& cage, const std::string& source);
 
 }  // namespace somicage

@@ -53,20 +53,28 @@ Eigen::MatrixXd inCageDimension(Eigen::MatrixXd matrix, int dim, const std::stri
 
 }  // namespace
 
-PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points, const std::string& method, int threads,
-                               bool floatStorage, const py::object& progress)
+PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method,
+                               int threads, bool floatStorage, const ProgressArgument& progress, const std::string& tets)
     : restCage_(cage.cage) {
   const Method chosen = methodArgument(method);
   const int dim = restCage_.dim();
-  const Eigen::MatrixXd restPoints = inCageDimension(matrixFromArray(points, "points", 0), dim, "points");
-  if (threads < 0) throw InputError("threads", -1, "is " + std::to_string(threads), "use 0 (all cores) or more");
+  const Eigen::MatrixXd restPoints = inCageDimension(matrixFromArray(points.object, "points", 0), dim, "points");
+  if (threads < 0 || threads > kMaxThreads)
+    throw InputError("threads", -1, "is " + std::to_string(threads),
+                     "use 0 (all cores) to " + std::to_string(kMaxThreads));
   PrecomputeOptions options;
   options.threads = threads;
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
+  if (!tets.empty()) options.methodOptions["tets"] = tets;
   points_ =
       meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
+  try {
+    prepareVolumeMesh(chosen, restCage_, options, [](const Notice& n) { warn(describeNotice(n)); });
+  } catch (const InputError& e) {  // the keyword, not the command line's option
+    throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+  }
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;
@@ -78,20 +86,21 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const py::handle& points,
   if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer_, "points")) warn(describeNotice(*outside));
 }
 
-Eigen::MatrixXd PythonDeformer::posedVertices(const py::handle& posed) const {
-  return inCageDimension(matrixFromArray(posed, "posed", 0), restCage_.dim(), "posed");
+Eigen::MatrixXd PythonDeformer::posedVertices(const ArrayArgument& posed) const {
+  return inCageDimension(matrixFromArray(posed.object, "posed", 0), restCage_.dim(), "posed");
 }
 
-Eigen::MatrixXd PythonDeformer::deform(const py::handle& posed, const PythonDeformOptions& options) const {
+Eigen::MatrixXd PythonDeformer::deform(const ArrayArgument& posed, const PythonDeformOptions& options) const {
   const Eigen::MatrixXd pose = posedVertices(posed);
   const DeformParams params = deformParams(options);
   py::gil_scoped_release release;  // the checks of deformPoints throw InputError, which needs no GIL
   return deformPoints(*deformer_, restCage_, pose, params, "posed", "points");
 }
 
-py::dict PythonDeformer::analyze(const py::handle& posed, const std::vector<std::vector<int>>& faces,
+py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
                                  const PythonDeformOptions& options,
-                                 const std::optional<std::tuple<double, double, int>>& nuSweep) const {
+                                 const std::optional<std::tuple<double, double, int>>& nuSweep,
+                                 const ProgressArgument& progress) const {
   const Eigen::MatrixXd pose = posedVertices(posed);
   const DeformParams params = deformParams(options);
   std::vector<double> nus;
@@ -103,11 +112,16 @@ py::dict PythonDeformer::analyze(const py::handle& posed, const std::vector<std:
     }
   }
   PoseAnalysis a;
-  {
+  PythonProgress bridge(progress);
+  try {
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(gradientsMutex_);
-    if (!gradients_) gradients_ = std::make_unique<DeformationGradients>(*deformer_, points_);
-    a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces");
+    if (!gradients_) gradients_ = std::make_unique<DeformationGradients>(*deformer_, points_, bridge.callback());
+    a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces",
+                    bridge.callback());
+  } catch (const Cancelled&) {
+    bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it
+    throw;
   }
   const EnclosedMeasure& volume = a.fields.volume;
   py::dict result;  // the keys and order of `somicage analyze --json` (app/cli/command_analyze.cpp)

@@ -16,7 +16,9 @@
 
 #include "deformer.h"
 #include "jacobian.h"
+#include "numpy_arrays.h"
 #include "python_cage.h"
+#include "python_progress.h"
 
 namespace somicage {
 
@@ -33,24 +35,28 @@ struct PythonDeformOptions {
 class PythonDeformer {
  public:
   // points: (#P, d), or (#P, 3) for a 2D cage (x, y are used, as by `somicage deform`).
-  PythonDeformer(const PythonCage& cage, const pybind11::handle& points, const std::string& method, int threads,
-                 bool floatStorage, const pybind11::object& progress);
+  // tets: a MEDIT volume mesh of the cage for a method that needs one (Phong's option "tets"); empty: the
+  // cage's star when it is star-shaped from its centroid (the module does not link CGAL's tetrahedralization).
+  PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method, int threads,
+                 bool floatStorage, const ProgressArgument& progress, const std::string& tets = "");
 
   // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
-  Eigen::MatrixXd deform(const pybind11::handle& posed, const PythonDeformOptions& options) const;
+  Eigen::MatrixXd deform(const ArrayArgument& posed, const PythonDeformOptions& options) const;
 
   // The numbers of `somicage analyze --json` for that pose, as a dict with its keys; faces: lists of 0-based indices
   // of the points (none: no volume or area ratios); nuSweep: (from, to, count) as --nu-sweep FROM:TO:N. The
-  // deformation gradients are integrated on the first call and kept.
-  pybind11::dict analyze(const pybind11::handle& posed, const std::vector<std::vector<int>>& faces,
+  // deformation gradients are integrated on the first call and kept; progress covers that integration and the sweep
+  // (and stops them, as in the constructor).
+  pybind11::dict analyze(const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
                          const PythonDeformOptions& options,
-                         const std::optional<std::tuple<double, double, int>>& nuSweep) const;
+                         const std::optional<std::tuple<double, double, int>>& nuSweep,
+                         const ProgressArgument& progress) const;
 
   const CageDeformer& engine() const { return *deformer_; }
   int dim() const { return deformer_->dim(); }
 
  private:
-  Eigen::MatrixXd posedVertices(const pybind11::handle& posed) const;
+  Eigen::MatrixXd posedVertices(const ArrayArgument& posed) const;
 
   std::unique_ptr<CageDeformer> deformer_;
   Cage restCage_;           // for the pose's vertex count and order checks

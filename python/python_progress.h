@@ -13,11 +13,16 @@
 
 namespace somicage {
 
+// A progress= argument: None or a callable, shown with its real type in help() and signatures.
+struct ProgressArgument {
+  pybind11::object callback = pybind11::none();
+};
+
 class PythonProgress {
  public:
   static constexpr double kInterval = 0.1;  // seconds between calls into Python
 
-  explicit PythonProgress(pybind11::object callback) : callback_(std::move(callback)) {}
+  explicit PythonProgress(const ProgressArgument& argument) : callback_(argument.callback) {}
 
   // For the engine; call it with the GIL released. Valid while this object lives.
   ProgressCallback callback();
@@ -34,3 +39,18 @@ class PythonProgress {
 };
 
 }  // namespace somicage
+
+namespace pybind11::detail {
+template <>
+struct type_caster<somicage::ProgressArgument> {
+  PYBIND11_TYPE_CASTER(somicage::ProgressArgument, const_name("Optional[Callable[[float], Optional[bool]]]"));
+  bool load(handle source, bool) {
+    if (!source.is_none() && !PyCallable_Check(source.ptr())) return false;  // TypeError naming the signature
+    value.callback = reinterpret_borrow<object>(source);
+    return true;
+  }
+  static handle cast(const somicage::ProgressArgument& argument, return_value_policy, handle) {
+    return argument.callback.inc_ref();
+  }
+};
+}  // namespace pybind11::detail

@@ -13,8 +13,8 @@ packages=(
   xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
   xdotool imagemagick  # the GUI input tests: real X key and mouse events, screenshots of the screen
   clang libclang-rt-dev libomp-dev  # the libFuzzer targets: clang, its fuzzer/sanitizer runtimes, OpenMP for clang
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-setuptools  # the Python module and its tests
-  python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (README, "Python")
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-setuptools  # the Python module and its tests
+  python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (docs/python.md)
   python3-matplotlib  # tools/figures.sh: the gallery's plots (it brings python3-pil, which stitches the images)
   blender  # headless tests: the add-on (~55 MB download with blender-data; Debian's 3.4 runs /usr/bin/python3) and the GLB import
 )

@@ -194,23 +194,66 @@ def analyze(scene, view):
 
 
 def shot(scene, views, out, extra=(), size=None, ui=False):
-    """One editor screenshot of the scene with 1-3 panes; returns its command line."""
+    """One editor screenshot of the scene with 1-3 panes; returns its command line. Without the panel (ui=False) a
+    shared 3D model is drawn without its cage, at twice the size, and each pane zoomed onto its mesh (zoom_panes)."""
     width, height = size or (PANE_SIZE[0] * len(views), PANE_SIZE[1])
+    zoom = 1 if ui or "/scenes/" in scene[0] else 2
     args = [EXE] + list(scene)
     if len(views) == 1:
         args += view_options(views[0], editor=True)
     else:
         for v in views:
             args += ["--view", v]
-    args += list(extra) + ["--size", "%dx%d" % (width, height), "--screenshot", out]
+    args += list(extra) + ["--size", "%dx%d" % (zoom * width, zoom * height), "--screenshot", out]
     if not ui:
         args.append("--hide-ui")
-        if "/scenes/" not in scene[0]:  # a shared 3D model: its cage's many handles would hide the mesh
+        if zoom > 1:  # a shared 3D model: its cage's many handles would hide the mesh
             args.append("--hide-cage")
     run(args)
+    if zoom > 1:
+        zoom_panes(out, len(views), zoom)
     if not ui:  # --hide-ui hides the panes' titles: write each view's name over its pane
         label_panes(out, views)
     return shown(args)
+
+
+def zoom_panes(path, count, zoom):
+    """The editor frames the mesh and the whole posed cage, so a 3D mesh fills little of its pane. Each pane of the
+    zoom-times larger shot is cropped to a square around its mesh (at most zoom times closer: pixels stay sharp),
+    scaled to the pane's size, and the editor's numbers (top left) and legend (bottom right) are put back on it."""
+    big = np.asarray(Image.open(path).convert("RGB"))
+    colours, counts = np.unique(big.reshape(-1, 3), axis=0, return_counts=True)
+    background = colours[counts.argmax()]
+    H, W = big.shape[0], big.shape[1] // count
+    h, w = H // zoom, W // zoom
+    result = Image.new("RGB", (w * count, h))
+    top, legend = 75, (95, 420)  # the bands where the editor draws the numbers (top) and the legend (bottom right)
+    for k in range(count):
+        pane = big[:, k * W:(k + 1) * W]
+        drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
+        overlay = np.zeros_like(drawn)
+        overlay[:top] = drawn[:top]
+        overlay[H - legend[0]:, W - legend[1]:] = drawn[H - legend[0]:, W - legend[1]:]
+        ys, xs = np.nonzero(drawn & ~overlay)
+        if len(ys) == 0:
+            ys, xs = np.array([0, H - 1]), np.array([0, W - 1])
+        # The mesh fills the lower 78 % of the square (the numbers stay above it), with a small margin.
+        side = int(np.clip(max(ys.max() - ys.min(), (xs.max() - xs.min()) * h / w) * 1.05 / 0.78, H // zoom, H))
+        y0 = int(np.clip(ys.min() - 0.19 * side, 0, H - side))
+        sw = side * w // h
+        x0 = int(np.clip((xs.max() + xs.min()) // 2 - sw // 2, 0, W - sw))
+        clean = pane.copy()
+        clean[overlay] = background  # the boxes must not come along, scaled down, in the crop
+        crop = Image.fromarray(clean[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
+        # The editor's boxes go back at their own size, in the same corners.
+        for y, x, bh, bw in ((0, 0, top, w), (H - legend[0], W - legend[1], legend[0], legend[1])):
+            mask = overlay[y:y + bh, x:x + bw]
+            if mask.any():
+                where = (0 if x == 0 else w - bw, 0 if y == 0 else h - bh)
+                box, alpha = pane[y:y + bh, x:x + bw], (mask * 255).astype(np.uint8)
+                crop.paste(Image.fromarray(box), where, Image.fromarray(alpha))
+        result.paste(crop, (k * w, 0))
+    result.save(path)
 
 
 def label_panes(path, views):
@@ -521,10 +564,40 @@ def guide_makecage(out):
            extra=["--make-cage", "200"], ui=True, size=(1000, 560), analyzed=False)
 
 
+def guide_timeline(out):  # a session with two poses keyed at frames 1 and 48: the pose library and the timeline
+    mesh, cage, posed = model("cactus")
+    rest, moved = read_vertices(cage), read_vertices(posed)
+    points = np.vstack([read_vertices(mesh), rest, moved])
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    radius = 0.5 * np.linalg.norm(hi - lo)
+    half_fov = math.radians(35) / 2  # the editor's framing (app/editor/camera.cpp, OrbitCamera::frame)
+    session = {
+        "format": "somicage-session", "version": 3, "mesh": mesh, "cage": cage, "demoDim": 3,
+        "pose": moved.tolist(), "method": "somigliana",
+        "params": {"blend": 0, "nu": 0.3, "gamma": 0, "tractionCorrection": True, "corotational": False},
+        "compare": False, "compareMethods": [],
+        "camera": {"target": ((lo + hi) / 2).tolist(), "distance": 1.1 * radius / math.sin(half_fov),
+                   "yaw": 0.6, "pitch": 0.35},
+        "poses": [{"name": "rest", "vertices": rest.tolist()}, {"name": "bent", "vertices": moved.tolist()}],
+        "timeline": {"fps": 24, "first": 1, "last": 48, "loop": True, "interpolation": "catmull-rom",
+                     "keys": [{"frame": 1, "pose": "rest"}, {"frame": 48, "pose": "bent"}]},
+    }
+    path = os.path.join(out.work, "guide_timeline.json")
+    with open(path, "w") as f:
+        json.dump(session, f)
+    image = os.path.join(out.work, "guide_timeline_0.png")
+    args = [EXE, "--session", path, "--size", "1000x560", "--screenshot", image]
+    run(args)
+    save_png([image], os.path.join(out.dir, "guide_timeline.png"))
+    title = "Guide: poses and keys (CACTUS, rest at frame 1, the paper's pose at 48)"
+    write_numbers(os.path.join(out.dir, "guide_timeline.md"), title,
+                  [shown(args) + "   (the session: poses rest and bent, keyed at frames 1 and 48)"], [])
+
+
 FIGURES = {"hero": hero, "fig02": fig02, "fig03": fig03, "fig04": fig04, "fig05": fig05, "fig06": fig06,
            "fig07": fig07, "fig08": fig08, "fig09": fig09, "fig10": fig10, "fig11": fig11,
            "guide_editor": guide_editor, "guide_pose": guide_pose, "guide_analysis": guide_analysis,
-           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage}
+           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline}
 
 
 class Output:

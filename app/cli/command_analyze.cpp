@@ -110,7 +110,8 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), log.sink());
   noteIgnoredParameters(log, args, method);
 
-  const PrecomputeOptions options = precomputeOptions(threads);
+  PrecomputeOptions options = precomputeOptions(threads);
+  applyMethodOptions(args, method, cage, options, log.sink());
   std::unique_ptr<CageDeformer> deformer;
   std::unique_ptr<DeformationGradients> gradients;
   {

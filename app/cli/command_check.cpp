@@ -4,10 +4,12 @@
 #include <algorithm>
 #include <iostream>
 #include <sstream>
+#include <type_traits>
+#include <variant>
 
+#include "cage_check.h"
 #include "cage_enclosure.h"
-#include "cage_repair.h"
-#include "cage_validation.h"
+#include "cage_tetrahedralization.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
@@ -15,6 +17,7 @@
 #include "cli/progress_reporter.h"
 #include "cli/tightness_report.h"
 #include "deformer.h"
+#include "errors.h"
 #include "obj_io.h"
 #include "somigliana_coordinates.h"
 
@@ -87,10 +90,18 @@ std::vector<std::pair<std::string, double>> checkReproduction(const Cage& cage, 
                                                               const CommandLog& log) {
   std::vector<std::pair<std::string, double>> errors;
   const double diameter = cageDiameter(cage.vertices);
-  const PrecomputeOptions options = precomputeOptions(threads);
+  PrecomputeOptions options = precomputeOptions(threads);
+  options.volumeMesher = tetrahedralizeCageWithOptions;  // Phong's default volume mesh
   for (Method method : allMethods()) {
     ProgressReporter progress = log.progress("reproduction with " + methodName(method));
-    const auto deformer = makeDeformer(method, cage, points, options, progress.callback());
+    std::unique_ptr<CageDeformer> deformer;
+    try {
+      deformer = makeDeformer(method, cage, points, options, progress.callback());
+    } catch (const InputError& e) {  // no volume mesh for this cage: the other methods' checks stand
+      progress.finish();
+      log.note("no " + methodName(method) + " reproduction: " + e.what());
+      continue;
+    }
     progress.finish();
     const Eigen::VectorXd moved = (deformer->deform(cage.vertices, {}) - points).rowwise().norm();
     double worst = 0;
@@ -107,16 +118,9 @@ struct Fit {
   CageTightness tightness;
 };
 
-// What the other commands make of the cage: the repairs they apply, whether it is usable then, and the warnings.
-struct RepairOutcome {
-  std::vector<std::string> fixes, warnings;
-  bool usable = false;
-  int intersectingFaces = 0;  // 3D: pairs of faces that meet
-};
-
-void writeJson(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-               const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
-               const std::vector<std::pair<std::string, double>>& reproduction, const Fit& fit) {
+void writeJson(const std::string& cagePath, const std::string& meshPath, const CageCheck& check,
+               const UnityCheck& unity, const std::vector<std::pair<std::string, double>>& reproduction,
+               const Fit& fit) {
   JsonObjectWriter json(std::cout);
   json.field("cage", cagePath);
   if (meshPath.empty()) {
@@ -124,35 +128,16 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
   } else {
     json.field("mesh", meshPath);
   }
-  json.field("dim", report.dim);
-  json.field("cage_vertices", report.numVertices);
-  json.field("cage_faces", report.numFaces);
-  json.field("valid", report.valid());
-  json.field("closed", report.closed());
-  json.field("manifold", report.manifold());
-  json.field("consistently_oriented", report.consistentlyOriented());
-  json.field("outward", report.outward());
-  if (report.dim == 2) {
-    json.field("simple", report.simple());
-  } else {
-    json.null("simple");  // self-intersection is checked in 2D only
-  }
-  json.field(report.dim == 3 ? "signed_volume" : "signed_area", report.signedVolume);
-  json.field("components", report.components);
-  json.field("boundary_edges", static_cast<int>(report.boundaryRidges.size()));
-  json.field("non_manifold_edges", static_cast<int>(report.nonManifoldRidges.size()));
-  json.field("misoriented_edges", static_cast<int>(report.misorientedRidges.size()));
-  json.field("degenerate_faces", static_cast<int>(report.degenerateFaces.size()));
-  json.field("duplicate_vertices", static_cast<int>(report.duplicateVertices.size()));
-  json.field("unreferenced_vertices", static_cast<int>(report.unreferencedVertices.size()));
-  json.field("problems", problems);
-  json.field("repairs", repair.fixes);
-  json.field("usable", repair.usable);
-  json.field("warnings", repair.warnings);
-  if (report.dim == 3) {
-    json.field("intersecting_face_pairs", repair.intersectingFaces);
-  } else {
-    json.null("intersecting_face_pairs");  // 2D: a self-intersecting polygon is a problem, listed above
+  for (const auto& [key, value] : cageCheckFields(check)) {  // the keys Python's somicage.check() returns too
+    std::visit(
+        [&json, &name = key](const auto& v) {
+          if constexpr (std::is_same_v<std::decay_t<decltype(v)>, std::nullptr_t>) {
+            json.null(name);
+          } else {
+            json.field(name, v);
+          }
+        },
+        value);
   }
   json.field("mesh_vertices", unity.points);
   json.field("pou_computed", unity.computed);
@@ -183,9 +168,11 @@ void writeJson(const std::string& cagePath, const std::string& meshPath, const C
   json.close();
 }
 
-void writeReport(const std::string& cagePath, const std::string& meshPath, const CageReport& report,
-                 const std::vector<std::string>& problems, const RepairOutcome& repair, const UnityCheck& unity,
-                 const std::vector<std::pair<std::string, double>>& reproduction, const Fit& fit) {
+void writeReport(const std::string& cagePath, const std::string& meshPath, const CageCheck& check,
+                 const UnityCheck& unity, const std::vector<std::pair<std::string, double>>& reproduction,
+                 const Fit& fit) {
+  const CageReport& report = check.report;
+  const std::vector<std::string>& problems = check.problems;
   const auto yesNo = [](bool value) { return value ? "yes" : "NO"; };
   std::ostringstream out;
   out << "cage   " << cagePath << ": " << report.dim << "D, " << report.numVertices << " vertices, " << report.numFaces
@@ -221,19 +208,19 @@ void writeReport(const std::string& cagePath, const std::string& meshPath, const
     out << "problems (indices are 0-based):\n";
     for (const std::string& problem : problems) out << "  - " << problem << "\n";
   }
-  if (!repair.fixes.empty()) {
+  if (!check.repair.fixes.empty()) {
     out << "repairs that deform, bench and the editor apply (the file is not changed):\n";
-    for (const std::string& fix : repair.fixes) out << "  - " << fix << "\n";
+    for (const std::string& fix : check.repair.fixes) out << "  - " << fix << "\n";
   }
-  if (!repair.warnings.empty()) {
+  if (!check.warnings.empty()) {
     out << "warnings:\n";
-    for (const std::string& warning : repair.warnings) out << "  - " << warning << "\n";
+    for (const std::string& warning : check.warnings) out << "  - " << warning << "\n";
   }
   if (problems.empty()) {
     out << "result: the cage is valid\n";
   } else {
     out << "result: the cage has " << problems.size() << (problems.size() == 1 ? " problem" : " problems")
-        << (repair.usable ? "; repaired as above, it is usable" : "") << "\n";
+        << (check.usable() ? "; repaired as above, it is usable" : "") << "\n";
   }
   std::cout << out.str();
 }
@@ -268,16 +255,8 @@ int runCheckCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   const Cage cage = loadCage(cagePath);
   PolygonMesh mesh;
   if (!meshPath.empty()) mesh = loadMesh(meshPath);
-  const CageReport report = validateCage(cage);
-  const std::vector<std::string> problems = describeCageProblems(report);
-  // The numbers below are those of the cage that deform uses: the repaired one.
-  const CageRepair repaired = repairCage(cage);
-  const CageReport repairedReport = repaired.fixes.empty() ? report : validateCage(repaired.cage);
-  RepairOutcome repair;
-  repair.fixes = repaired.fixes;
-  repair.usable = repairedReport.valid();
-  repair.warnings = describeCageWarnings(repairedReport);
-  repair.intersectingFaces = static_cast<int>(repairedReport.intersectingFaces.size());
+  const CageCheck check = checkCage(cage);  // the numbers below are of the cage deform uses: the repaired one
+  const CageReport& report = check.report;
 
   UnityCheck unity;
   unity.points = mesh.numVertices();
@@ -286,22 +265,22 @@ int runCheckCommand(const std::vector<std::string>& rawArgs, CommandLog& log) {
   if (!meshPath.empty() && report.indicesValid() && report.numFaces > 0 && report.degenerateFaces.empty()) {
     const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, cagePath, log.sink());
     Eigen::VectorXd winding;
-    unity = checkPartitionOfUnity(repaired.cage, points, threads, winding, log);
-    reproduction = checkReproduction(repaired.cage, points, winding, threads, log);
+    unity = checkPartitionOfUnity(check.repair.cage, points, threads, winding, log);
+    reproduction = checkReproduction(check.repair.cage, points, winding, threads, log);
   }
   Fit fit;
   if (unity.computed && cage.dim() == 3 && !mesh.faces.empty()) {
-    fit.tightness = measureTightness(repaired.cage, mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces));
+    fit.tightness = measureTightness(check.repair.cage, mesh.vertices, triangulatePolygons(mesh.vertices, mesh.faces));
     fit.computed = true;
   }
   if (args.has("--json")) {
-    writeJson(cagePath, meshPath, report, problems, repair, unity, reproduction, fit);
+    writeJson(cagePath, meshPath, check, unity, reproduction, fit);
   } else {
-    writeReport(cagePath, meshPath, report, problems, repair, unity, reproduction, fit);
+    writeReport(cagePath, meshPath, check, unity, reproduction, fit);
   }
   // The report lists them; --strict counts them as the other commands' warnings: the repairs they would make, the
   // self-intersections, and the points outside the cage (or on it).
-  log.listed(static_cast<int>(repair.fixes.size() + repair.warnings.size()) +
+  log.listed(static_cast<int>(check.repair.fixes.size() + check.warnings.size()) +
              (unity.outside + unity.singular > 0 ? 1 : 0));
   return report.valid() ? kExitOk : kExitFailure;
 }

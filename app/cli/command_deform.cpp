@@ -105,6 +105,7 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   // Precompute once, deform once.
   PrecomputeOptions options = precomputeOptions(threads);
   options.rowIntegrator = device.rowIntegrator;
+  applyMethodOptions(args, method, cage, options, log.sink());
   // The mesh's own normals are carried by the deformation's gradient (normal_transform.h) unless asked otherwise.
   const bool normalsByGradient =
       document.normalCount > 0 && !args.has("--recompute-normals") &&

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "cage_tetrahedralization.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
@@ -35,7 +36,7 @@ void setThreadCount(int threads) {
 OptionSpec threadsOptionSpec() { return {"--threads", "N", "OpenMP threads (default: all cores)"}; }
 
 int threadsOption(const ArgParser& args) {
-  const int threads = args.integer("--threads", 0, 0, 4096);
+  const int threads = args.integer("--threads", 0, 0, kMaxThreads);
   setThreadCount(threads);
   return threads;
 }
@@ -75,26 +76,47 @@ constexpr ParameterOption kParameterOptions[] = {
 
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
   const auto forMethods = [](DeformParameter p) { return "; " + methodsReading(p); };
-  before.insert(before.end(),
-                {
-                    {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
-                    {"--variant", "NAME",
-                     "global (default, blend 0), local (blend 1), affine (exact on affine poses) or stable (local "
-                     "without its fold-overs at high nu)" +
-                         forMethods(kParamBlend)},
-                    {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-                    {"--nu", "V", "Poisson ratio in (-1, 0.5), or inf / -inf (default 0)" + forMethods(kParamNu)},
-                    {"--gamma", "G", "bulging scale >= 0 (default 0)" + forMethods(kParamGamma)},
-                    {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
-                    {"--corotational", "",
-                     "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
-                });
+  before.insert(
+      before.end(),
+      {
+          {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
+          {"--variant", "NAME",
+            "global (default, blend 0), local (blend 1), affine (exact on affine poses) or stable (local without its "
+            "fold-overs at high nu)" +
+                forMethods(kParamBlend)},
+          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
+          {"--nu", "V",
+           "Poisson ratio in " + rangeText(kNuRange, true) + ", or inf / -inf (default 0)" + forMethods(kParamNu)},
+          {"--gamma", "G", "bulging scale in " + rangeText(kGammaRange) + " (default 0)" + forMethods(kParamGamma)},
+          {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
+          {"--corotational", "",
+           "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
+      });
+  const std::vector<OptionSpec> own = methodOptionSpecs();
+  before.insert(before.end(), own.begin(), own.end());
   for (const ChoiceParameter& choice : choiceParameters())
     before.push_back({std::string("--") + choice.name, "NAME",
                       std::string(choice.description) + ": " + choiceNameList(choice) + " (default " +
                           choice.values.front().name + ")" + forMethods(choice.parameter)});
   before.insert(before.end(), after.begin(), after.end());
   return before;
+}
+
+std::vector<OptionSpec> methodOptionSpecs() {
+  std::vector<OptionSpec> specs;
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      specs.push_back({std::string("--") + o.key, o.value, std::string(o.help) + "; " + m->name + " only"});
+  return specs;
+}
+
+void applyMethodOptions(const ArgParser& args, Method method, const Cage& cage, PrecomputeOptions& options,
+                        const NoticeSink& notices) {
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      if (args.has(std::string("--") + o.key)) options.methodOptions[o.key] = args.text(std::string("--") + o.key);
+  options.volumeMesher = tetrahedralizeCageWithOptions;
+  prepareVolumeMesh(method, cage, options, notices);
 }
 
 std::string methodsHelp() {
@@ -138,6 +160,10 @@ void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method 
   };
   for (const ParameterOption& o : kParameterOptions) note(o.option, o.parameter);
   for (const ChoiceParameter& choice : choiceParameters()) note(std::string("--") + choice.name, choice.parameter);
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      if (m != method && args.has(std::string("--") + o.key))
+        ignored += (ignored.empty() ? "" : ", ") + std::string("--") + o.key + " (" + m->name + " only)";
   if (!ignored.empty()) log.note(methodName(method) + " ignores " + ignored);
 }
 

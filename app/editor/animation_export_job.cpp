@@ -94,7 +94,7 @@ void showNextExportFrame(AppState& state) {
     finish(state, "animation export cancelled; nothing was written");
     return;
   }
-  scrubTo(state, job.next);
+  showTimelineFrame(state, job.next);
 }
 
 void captureExportFrame(AppState& state, int framebufferWidth, int framebufferHeight) {

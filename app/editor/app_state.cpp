@@ -9,7 +9,9 @@
 #include <filesystem>
 #include <system_error>
 
+#include "cage_tetrahedralization.h"
 #include "drop.h"
+#include "engine.h"
 #include "errors.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
@@ -89,6 +91,7 @@ PrecomputeRequest deformerRequest(const AppState& state, std::vector<Method> met
   request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   if (const FrameDevice* device = findFrameDevice(state.devices.offered, state.devices.active()))
     request.options.rowIntegrator = device->rowIntegrator;
+  request.options.volumeMesher = tetrahedralizeCageWithOptions;  // Phong's tetrahedra (CGAL, default level)
   return request;
 }
 
@@ -138,6 +141,22 @@ void ensureDeformers(AppState& state) {
   state.worker.start(std::move(request));
 }
 
+namespace {
+
+// "mesh warning: 640 of 642 points lie outside the cage ..." when some do (the deformers that tell: Somigliana's and
+// Green's regions), as the command line warns.
+std::optional<std::string> exteriorNotice(const Scene& scene, const DeformerSet& deformers) {
+  const CageDeformer* most = nullptr;
+  for (const auto& [method, deformer] : deformers)
+    if (!most || deformer->diagnostics().exteriorCount() > most->diagnostics().exteriorCount()) most = deformer.get();
+  if (!most) return std::nullopt;
+  const std::optional<Notice> notice = exteriorPointsNotice(*most, scene.isDemo() ? scene.name : scene.meshPath);
+  if (!notice) return std::nullopt;
+  return "mesh warning: " + notice->text;
+}
+
+}  // namespace
+
 void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   const bool newScene = outcome.scene && outcome.scene != state.scene;
   if (newScene) state.loadingScene = false;
@@ -155,12 +174,15 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   }
   if (!outcome.scene) return;
   state.stats.precomputeSeconds = outcome.seconds;
+  std::vector<std::string> notices;  // for the status bar and the log
   if (newScene) {
+    const std::shared_ptr<const Scene> previous = state.scene;
     state.scene = outcome.scene;
     ++state.sceneGeneration;
     state.deformers.clear();
     state.deformed.clear();
     state.cpuStale.clear();
+    state.quantities.clearSweep();
     state.pose = state.scene->restCage.vertices;
     state.selection.resize(state.scene->restCage.numVertices());
     state.interaction = Interaction{};
@@ -179,6 +201,12 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
       }
       state.pendingPose.reset();
     }
+    // The pose library and the keys belong to the cage they were made on: a session brings its own (they must fit its
+    // cage), anything else keeps them only on a cage of the same topology. Part of the opened state, not a step.
+    const bool sessionPoses = state.pendingDocumentPath.has_value() || state.pendingRestored;
+    const std::string dropped = keepPosesThatFit(state.animation, state.scene->restCage,
+                                                 sessionPoses || !previous ? nullptr : &previous->restCage);
+    if (!dropped.empty()) notices.push_back(dropped);
     bool posedLoaded = false;
     if (!state.pendingPosedPath.empty()) {
       try {
@@ -205,8 +233,14 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     state.pendingDocumentPath.reset();
     state.pendingRestored = false;
     ++state.poseGeneration;
+    notices.insert(notices.begin(), state.scene->notices.begin(), state.scene->notices.end());
+    if (const std::optional<std::string> outside = exteriorNotice(*state.scene, outcome.deformers))
+      notices.push_back(*outside);
     state.statusMessage = "loaded " + state.scene->name;
-    for (const std::string& notice : state.scene->notices) state.statusMessage += "; " + notice;
+    for (const std::string& notice : notices) {
+      state.statusMessage += "; " + notice;
+      std::fprintf(stderr, "somicage: %s: %s\n", state.scene->name.c_str(), notice.c_str());
+    }
     if (state.pendingRecent && state.pendingRecent->mesh == state.scene->meshPath &&
         state.pendingRecent->cage == state.scene->cagePath) {
       if (!posedLoaded) state.pendingRecent->posed.clear();
@@ -216,6 +250,13 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   }
   for (auto& [m, d] : outcome.deformers) state.deformers[m] = d;
   state.deformDirty = true;
+}
+
+void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
+  state.worker.setOnFinished(wake);
+  state.quantities.worker.setOnFinished(wake);
+  state.cageMaker.setOnFinished(wake);
+  state.exporter.setOnFinished(wake);
 }
 
 bool pollWorker(AppState& state) {
@@ -312,6 +353,7 @@ void replaceRestCage(AppState& state, const Cage& cage, const std::string& cageP
   state.deformers.clear();
   state.deformed.clear();
   state.cpuStale.clear();
+  state.quantities.clearSweep();
   state.selection.resize(cage.numVertices());
   state.interaction = Interaction{};
   setPose(state, cage.vertices);
@@ -333,11 +375,14 @@ void applyDocument(AppState& state, const Document& document) {
 bool commitEdit(AppState& state, const std::string& name) {
   if (!state.scene) return false;
   const bool added = state.history.commit(name, currentDocument(state));
-  if (added && state.logActions) {
-    std::printf("step %s\n", name.c_str());
-    std::fflush(stdout);
-  }
+  if (added) logLine(state, "step " + name);
   return added;
+}
+
+void logLine(const AppState& state, const std::string& line) {
+  if (!state.logActions) return;
+  std::printf("%s\n", line.c_str());
+  std::fflush(stdout);
 }
 
 void setPose(AppState& state, const Eigen::MatrixXd& pose) {
@@ -404,6 +449,7 @@ void setMethod(AppState& state, Method method) {
 
 void setCompare(AppState& state, bool on) {
   if (on && !state.compare) state.frameRequested = true;  // narrower views: frame everything again
+  if (on != state.compare) state.quantities.clearSweep();
   state.compare = on;
   state.deformDirty = true;
   ensureDeformers(state);
@@ -547,6 +593,7 @@ bool saveSessionFile(AppState& state, const std::string& path) {
     state.documentPath = path;
     state.history.markSaved();
     state.statusMessage = "saved session " + path;
+    noteRecent(state, RecentEntry::sessionFile(path));  // File > Open Recent lists it at once
     return true;
   } catch (const std::exception& e) {
     state.errors.push_back(e.what());

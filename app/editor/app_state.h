@@ -6,6 +6,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -155,6 +156,11 @@ void requestDemo(AppState& state, int dim);
 // scene is loading).
 void ensureDeformers(AppState& state);
 
+// Makes every background worker of the state (precompute, measurement and nu sweep, cage generation, export) call
+// `wake` from its thread once it has finished: the frame loop's wake-up (editor.cpp: a flag and glfwPostEmptyEvent),
+// without which a finished job would wait for the next mouse move to be drawn. Call it before starting any work.
+void wakeOnFinish(AppState& state, const std::function<void()>& wake);
+
 // Takes a finished worker outcome, if any, and installs it. Errors go to state.errors. Returns true when
 // something was installed.
 bool pollWorker(AppState& state);
@@ -186,6 +192,8 @@ void applyDocument(AppState& state, const Document& document);  // restores exac
 // (no history; Make cage commits).
 void replaceRestCage(AppState& state, const Cage& cage, const std::string& cagePath = "");
 bool commitEdit(AppState& state, const std::string& name);
+// --log-actions: prints the line to stdout (the GUI tests wait for such lines: "step Grab", "job precompute").
+void logLine(const AppState& state, const std::string& line);
 void setPose(AppState& state, const Eigen::MatrixXd& pose);   // no history; marks dirty
 void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
 void setMethod(AppState& state, Method method);               // no history

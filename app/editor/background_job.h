@@ -1,6 +1,8 @@
 // One job at a time on a worker thread, with progress, a stage text and cancellation, so that the UI keeps drawing
 // while it runs (the pattern of precompute_worker.h, for any outcome type). The job receives a JobContext: its
-// progress() is a core ProgressCallback (false once cancelled, so core throws Cancelled). No GL.
+// progress() is a core ProgressCallback (false once cancelled, so core throws Cancelled). When a job ends, its
+// outcome is stored first and then the finish callback runs (on the worker thread): the editor's wakes the frame
+// loop, which would otherwise sleep until the next input with the outcome untaken (docs/editor.md, "Idle"). No GL.
 #pragma once
 
 #include <atomic>
@@ -54,6 +56,10 @@ class BackgroundJob {
   BackgroundJob(const BackgroundJob&) = delete;
   BackgroundJob& operator=(const BackgroundJob&) = delete;
 
+  // Called on the worker thread after each job's outcome is ready (ready() is true by then). Set it before the first
+  // start(); it must be safe to call from any thread (glfwPostEmptyEvent is).
+  void setOnFinished(std::function<void()> onFinished) { onFinished_ = std::move(onFinished); }
+
   // Cancels (and joins) a running job, drops its outcome, then runs `work` on a new thread.
   void start(Work work) {
     context_.cancel_ = true;
@@ -68,9 +74,12 @@ class BackgroundJob {
     busy_ = true;
     thread_ = std::thread([this, work = std::move(work)] {
       Outcome out = work(context_);
-      std::lock_guard<std::mutex> lock(context_.mutex_);
-      outcome_ = std::move(out);
-      busy_ = false;
+      {
+        std::lock_guard<std::mutex> lock(context_.mutex_);
+        outcome_ = std::move(out);
+        busy_ = false;
+      }
+      if (onFinished_) onFinished_();
     });
   }
   void cancel() { context_.cancel_ = true; }  // the job sees it at its next progress report
@@ -104,6 +113,7 @@ class BackgroundJob {
 
  private:
   JobContext context_;
+  std::function<void()> onFinished_;
   std::thread thread_;
   std::atomic<bool> busy_{false};
   std::optional<Outcome> outcome_;

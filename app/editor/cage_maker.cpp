@@ -20,6 +20,11 @@ CageMaker::~CageMaker() {
   if (thread_.joinable()) thread_.join();
 }
 
+void CageMaker::setOnFinished(std::function<void()> onFinished) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  onFinished_ = std::move(onFinished);
+}
+
 void CageMaker::setGenerator(CageGenerator generator) {
   std::lock_guard<std::mutex> lock(mutex_);
   generator_ = std::move(generator);
@@ -126,6 +131,11 @@ void CageMaker::run() {
     lock.lock();
     result_ = std::move(result);
     wake_.notify_all();
+    if (onFinished_) {  // unlocked: the callback may take its own locks
+      lock.unlock();
+      onFinished_();
+      lock.lock();
+    }
   }
 }
 

@@ -47,6 +47,8 @@ class CageMaker {
   CageMaker& operator=(const CageMaker&) = delete;
 
   void setGenerator(CageGenerator generator);  // tests; only while closed and idle
+  // Called on the worker thread after each generation's result is stored (background_job.h); set it before open().
+  void setOnFinished(std::function<void()> onFinished);
 
   // Opens the dialog for a mesh (#V by 3, #T by 3; source names it in errors) and generates with `options`.
   void open(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles, const std::string& source,
@@ -101,6 +103,7 @@ class CageMaker {
   std::thread thread_;  // started by the first request
   std::mutex mutex_;
   std::condition_variable wake_;  // a job arrived, a result arrived, or stopping
+  std::function<void()> onFinished_;
   std::optional<Job> pending_;
   std::optional<Result> result_;
   std::atomic<std::uint64_t> wanted_{0};  // the latest request's id; 0: none (cancelled or closed)

@@ -7,10 +7,12 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <string>
 #include <thread>
@@ -178,7 +180,7 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 // polled (or waited for) by the caller.
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
   feedInput(window, queue);
-  pollWorker(state);
+  if (pollWorker(state)) logLine(state, "job precompute");  // --log-actions: the GUI tests wait for it
   const std::uint64_t candidateShown = state.cageMaker.candidateGeneration();
   state.cageMaker.poll();
   if (state.logActions && state.cageMaker.candidateGeneration() != candidateShown && state.cageMaker.candidate()) {
@@ -356,6 +358,13 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     // AppState first, Renderer second: the Renderer (GL objects) is destroyed first, while the context lives.
     AppState state;
     Renderer renderer;
+    // A worker that finishes wakes the loop (glfwPostEmptyEvent may be called from any thread) and counts as input:
+    // the next frames install its outcome and let ImGui settle the windows it resizes (docs/editor.md, "Idle").
+    auto jobFinished = std::make_shared<std::atomic<bool>>(false);
+    wakeOnFinish(state, [jobFinished] {
+      jobFinished->store(true);
+      glfwPostEmptyEvent();
+    });
     state.glRenderer = glRenderer;
     applyOptions(state, options);
     chooseDevices(state, options, devices);
@@ -457,7 +466,7 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
           requestQuit(state);
           windowLink.activity = true;
         }
-        demand.input = windowLink.activity;
+        demand.input = windowLink.activity || jobFinished->exchange(false);
         demand.queued = !windowLink.queue.empty();
         windowLink.activity = false;
         if (pacer.shouldDraw(demand)) {

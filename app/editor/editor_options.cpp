@@ -161,13 +161,15 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   if (!positional.empty()) o.meshPath = positional[0];
   if (positional.size() >= 2) o.cagePath = positional[1];
   if (positional.size() == 3) o.posedPath = positional[2];
-  if (o.nu) {
+  {  // the engine's ranges (deformer.h), named as options
     DeformParams p;
-    p.nu = *o.nu;
+    p.nu = o.nu.value_or(p.nu);
+    p.gamma = o.gamma.value_or(p.gamma);
+    p.blend = o.blend.value_or(p.blend);
     try {
       validateDeformParams(p);
     } catch (const InputError& e) {
-      throw InputError("--nu", -1, e.problem(), e.hint());
+      throw InputError("--" + e.source(), -1, e.problem(), e.hint());
     }
   }
   for (const ViewShow& view : o.show.views) {  // the typed range must suit every shown quantity's scale
@@ -181,10 +183,6 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
     throw InputError("--view", -1, "one view given: the compare view shows 2 or 3",
                      "give --view twice, e.g. --view somigliana:nu=0 --view somigliana:nu=0.45 (one view: --method, "
                      "--nu)");
-  if (o.gamma && (!(*o.gamma >= 0) || std::isinf(*o.gamma)))
-    throw InputError("--gamma", -1, "must be finite and >= 0", "e.g. --gamma 1");
-  if (o.blend && !(*o.blend >= 0 && *o.blend <= 1))
-    throw InputError("--blend", -1, "must be in [0, 1]", "0 = global variant, 1 = local variant");
   return o;
 }
 
@@ -202,8 +200,9 @@ std::string editorUsage() {
          "  --method NAME             " +
          methodNameList() + " (default " + methodName(Method()) +
          ")\n"
-         "  --nu X                    Poisson ratio in (-1, 0.5), or inf / -inf\n"
-         "  --gamma X                 bulging scale >= 0\n"
+         "  --nu X                    Poisson ratio in " +
+         rangeText(kNuRange, true) + ", or inf / -inf\n" + "  --gamma X                 bulging scale in " +
+         rangeText(kGammaRange) + "\n" +
          "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
          "  --variant NAME            " + variantNameList() + " (affine, stable: docs/engine.md)\n"
          "  --traction-fix on|off     traction correction (Eq. 15)\n" +

@@ -34,6 +34,8 @@ class ExportWorker {
   bool start(std::string target, std::string doneMessage, Job job);
   void cancel() { job_.cancel(); }  // the running job stops at its next progress report, with cancelled = true
   bool busy() const { return job_.busy(); }
+  // Called on the worker thread when a request has finished (background_job.h).
+  void setOnFinished(std::function<void()> onFinished) { job_.setOnFinished(std::move(onFinished)); }
   double progress() const { return job_.progress(); }
   const std::string& target() const { return target_; }  // of the last export started
 

@@ -89,6 +89,7 @@ void close(AppState& state, bool saved) {
 bool submitScene(AppState& state) {
   FileDialogState& d = state.dialog;
   for (auto [kind, path] : {std::pair{FileKind::Mesh, d.mesh}, std::pair{FileKind::Cage, d.cage}}) {
+    if (kind == FileKind::Cage && path.empty() && d.posed.empty()) continue;  // a mesh alone: a cage is made for it
     const PathCheck check = checkOpenPath(kind, path);
     if (check.verdict != PathCheck::Verdict::Ok) {
       d.message = std::string(fileKindInfo(kind).title) + ": " + check.message;
@@ -191,14 +192,7 @@ bool drawRecentFiles(AppState& state) {
   bool opened = false;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const RecentEntry& e = entries[i];
-    std::string missing;
-    for (const std::string& path : e.paths()) {
-      std::error_code ec;
-      if (!std::filesystem::exists(path, ec)) {
-        missing = path;
-        break;
-      }
-    }
+    const std::string missing = missingRecentPath(e);
     ImGui::PushID(static_cast<int>(i));
     if (!missing.empty()) ImGui::BeginDisabled();
     const bool clicked = ImGui::Selectable(e.label().c_str(), false, ImGuiSelectableFlags_DontClosePopups);

@@ -83,11 +83,25 @@ void updateTransform(AppState& state, const std::vector<ViewRect>& views) {
   if (pose != state.pose) setPose(state, pose);
 }
 
+}  // namespace
+
+std::string transformHeader(const AppState& state, const std::vector<ViewRect>& views) {
+  const Interaction& it = state.interaction;
+  const bool modal = it.mode == Interaction::Mode::Modal;
+  if (!it.transform || views.empty() || (!modal && it.mode != Interaction::Mode::HandleDrag)) return "";
+  const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(it.view, static_cast<int>(views.size()) - 1))];
+  if (!modal && (mousePos() - it.pressMouse).norm() < kDragThreshold) return "";  // a click, not a drag yet
+  const std::string text = describeTransform(*it.transform, state.camera, mousePos() - r.origin());
+  return modal ? text : text.substr(0, text.find("   ["));  // a drag: no keys to list, the release confirms
+}
+
+namespace {
+
 void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& views) {
-  if (!state.interaction.transform || state.interaction.mode != Interaction::Mode::Modal) return;
+  const std::string text = transformHeader(state, views);
+  if (text.empty()) return;
   const ViewRect& r =
       views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
-  const std::string text = describeTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   const ImVec2 pos(static_cast<float>(r.x + 0.5 * (r.width - size.x)), static_cast<float>(r.y + 34));
@@ -345,6 +359,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
           cancelTransform(state);
         } else if (it.transform && (mouse - it.pressMouse).norm() >= kDragThreshold) {
           updateTransform(state, views);
+          drawTransformHeader(state, views);  // the numbers G / R / S show, for the gizmo and handle drags too
         }
       } else {
         confirmTransform(state);

@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -75,6 +76,8 @@ class MeasureWorker {
   void start(MeasureRequest request);
   void cancel() { job_.cancel(); }
   bool busy() const { return job_.busy(); }
+  // Called on the worker thread when a request has finished (background_job.h).
+  void setOnFinished(std::function<void()> onFinished) { job_.setOnFinished(std::move(onFinished)); }
   bool ready() const { return job_.ready(); }  // an outcome waits for poll()
   double progress() const { return job_.progress(); }
   std::string stage() const { return job_.stage(); }

@@ -83,6 +83,29 @@ double panelWidth(double windowWidth) { return std::clamp(0.42 * windowWidth, 22
 double menuBarHeight() { return ImGui::GetFrameHeight(); }
 double statusBarHeight() { return ImGui::GetFrameHeight() + 6.0; }
 
+namespace {
+
+// File > Open Recent: the recent scenes and sessions (the Open panel's list), most recent first; an entry whose file
+// is gone is greyed out and its tooltip names the file.
+void drawOpenRecentMenu(AppState& state) {
+  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
+  if (!ImGui::BeginMenu("Open Recent", !entries.empty())) return;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const RecentEntry& e = entries[i];
+    const std::string missing = missingRecentPath(e);
+    ImGui::PushID(static_cast<int>(i));
+    const bool clicked = ImGui::MenuItem(e.label().c_str(), nullptr, false, missing.empty());
+    std::string tip;
+    for (const std::string& path : e.paths()) tip += path + "\n";
+    tooltip((missing.empty() ? tip : tip + "missing: " + missing).c_str());
+    ImGui::PopID();
+    if (clicked) openRecent(state, e);
+  }
+  ImGui::EndMenu();
+}
+
+}  // namespace
+
 // A menu item for a command of the shortcut table (shortcuts.h): its key label comes from there.
 void commandItem(AppState& state, const char* label, const char* id, bool enabled = true) {
   if (ImGui::MenuItem(label, shortcutLabel(id), false, enabled)) runCommand(state, id);
@@ -93,6 +116,7 @@ void drawMainMenu(AppState& state) {
   if (ImGui::BeginMenu("File")) {
     commandItem(state, "New (3D demo)", "new");
     commandItem(state, "Open mesh + cage...", "open");
+    drawOpenRecentMenu(state);
     if (ImGui::MenuItem("2D demo")) openDemo(state, 2);
     ImGui::Separator();
     if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
@@ -341,7 +365,7 @@ void drawControlPanel(AppState& state) {
     ImGui::TextUnformatted(stage.empty() ? "starting..." : stage.c_str());
     ImGui::ProgressBar(static_cast<float>(state.worker.progress()), ImVec2(-1.0f, 0.0f));
     if (ImGui::Button("Cancel")) state.worker.cancel();
-    tooltip("Stop the precomputation; the previous scene stays");
+    tooltip("Stop the precomputation; the previous scene stays (Esc)");
   } else {
     ImGui::Text("ready (%.2f s)", state.stats.precomputeSeconds);
   }
@@ -355,6 +379,33 @@ void drawControlPanel(AppState& state) {
   ImGui::End();
 }
 
+std::string statusBarText(const AppState& state) {
+  if (!state.scene) return "loading...   " + state.statusMessage;
+  char fps[32] = "- FPS";
+  if (state.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.stats.fps);
+  char device[96];
+  const std::string active = state.devices.active();
+  if (state.devices.inPlace()) {
+    std::snprintf(device, sizeof device, "%s (compute shader, %.2f ms on the CPU)", active.c_str(),
+                  state.stats.lastDeformCpuMs);
+  } else if (active == kCpuDevice) {
+    std::snprintf(device, sizeof device, "%s (OpenMP, %d thread%s)", active.c_str(), state.stats.deformThreads,
+                  state.stats.deformThreads == 1 ? "" : "s");
+  } else {
+    std::snprintf(device, sizeof device, "%s", active.c_str());
+  }
+  char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
+  if (std::isfinite(state.stats.lastDeformMs))
+    std::snprintf(deform, sizeof deform, "deform %.2f ms", state.stats.lastDeformMs);
+  char stats[320];
+  std::snprintf(stats, sizeof stats, "%s   mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s",
+                hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.scene->meshVertices.rows()),
+                static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
+                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, device);
+  // The last action first: in a narrow window the statistics are what gets cut off.
+  return state.statusMessage + (state.statusMessage.empty() ? "" : "   |") + stats;
+}
+
 void drawStatusBar(AppState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float h = static_cast<float>(statusBarHeight());
@@ -365,30 +416,15 @@ void drawStatusBar(AppState& state) {
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(8.0f, 3.0f));
   ImGui::Begin("##status", nullptr, flags);
-  if (state.scene) {
-    char fps[32] = "- FPS";
-    if (state.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.stats.fps);
-    char device[96];
-    const std::string active = state.devices.active();
-    if (state.devices.inPlace()) {
-      std::snprintf(device, sizeof device, "%s (compute shader, %.2f ms on the CPU)", active.c_str(),
-                    state.stats.lastDeformCpuMs);
-    } else if (active == kCpuDevice) {
-      std::snprintf(device, sizeof device, "%s (OpenMP, %d threads)", active.c_str(), state.stats.deformThreads);
-    } else {
-      std::snprintf(device, sizeof device, "%s", active.c_str());
-    }
-    char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
-    if (std::isfinite(state.stats.lastDeformMs))
-      std::snprintf(deform, sizeof deform, "deform %.2f ms", state.stats.lastDeformMs);
-    // The last action first: in a narrow window the statistics are what gets cut off.
-    ImGui::Text("%s%s%s   mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s",
-                state.statusMessage.c_str(), state.statusMessage.empty() ? "" : "   |",
-                hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.scene->meshVertices.rows()),
-                static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
-                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, device);
-  } else {
-    ImGui::Text("loading...   %s", state.statusMessage.c_str());
+  const std::string text = statusBarText(state);
+  ImGui::TextUnformatted(text.c_str());
+  // A long message (a notice naming both files) runs off the bar: the whole of it on hover, wrapped.
+  if (!state.statusMessage.empty() && ImGui::IsWindowHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(std::min(vp->Size.x * 0.8f, 900.0f));
+    ImGui::TextUnformatted(state.statusMessage.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
   }
   ImGui::End();
   ImGui::PopStyleVar();

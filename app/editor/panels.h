@@ -2,6 +2,7 @@
 // loop (editor.cpp) acts on the requests they leave in it (screenshots, quitting).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "app_state.h"
@@ -22,6 +23,9 @@ double statusBarHeight();
 
 void drawMainMenu(AppState& state);
 void drawControlPanel(AppState& state);
+// The status bar's line: the last message, then the statistics (mesh, cage, timings, the device); hovering the bar
+// shows the whole message.
+std::string statusBarText(const AppState& state);
 void drawStatusBar(AppState& state);
 void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views);
 // Edit > Undo History: every step, the current one highlighted; a click jumps there.

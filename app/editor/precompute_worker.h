@@ -50,8 +50,10 @@ class PrecomputeWorker {
   std::uint64_t start(PrecomputeRequest request);
   void cancel() { job_.cancel(); }  // asks the running request to stop; it finishes with cancelled = true
   bool busy() const { return job_.busy(); }
+  // Called on the worker thread when a request has finished (background_job.h).
+  void setOnFinished(std::function<void()> onFinished) { job_.setOnFinished(std::move(onFinished)); }
   double progress() const { return job_.progress(); }  // 0..1 over all methods of the request
-  std::string stage() const { return job_.stage(); }    // e.g. "Loading files", "Somigliana 2/3"
+  std::string stage() const { return job_.stage(); }   // e.g. "Loading files", "Somigliana 2/3"
   // The outcome of the last finished request, once; empty while running or when already taken.
   std::optional<PrecomputeOutcome> poll() { return job_.poll(); }
   // Blocks until the running request finishes and returns its outcome (empty when nothing ran).

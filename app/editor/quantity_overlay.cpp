@@ -8,6 +8,7 @@
 #include <string>
 
 #include "mesh_renderer.h"
+#include "panels.h"  // tooltip
 #include "selection.h"
 
 namespace somicage::editor {
@@ -95,7 +96,12 @@ void measureViews(AppState& state) {
       state.statusMessage = "measuring cancelled";
     } else if (outcome->key.sweep) {
       q.nuSweep = std::move(outcome->sweep);
-      q.nuSweepGeneration = outcome->key.poseGeneration;
+      const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
+      const bool current = outcome->key.poseGeneration == state.deformGeneration && deformer;
+      q.nuSweepPose = current ? state.pose : Eigen::MatrixXd();
+      q.nuSweepDeformer = current ? *deformer : nullptr;
+      q.nuSweepParams = state.params;
+      logLine(state, "job nu sweep");
     } else if (outcome->key == key) {
       for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
         q.measured[v] = std::move(outcome->views[v]);
@@ -157,8 +163,31 @@ int colorMapRow(const QuantityDescriptor& d) {
   return d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
 }
 
+// Fold-overs have two classes, not a scale: every unfolded vertex at the map's neutral centre, the folded ones
+// magenta. A colour bar from 0.999 to 1.001 said nothing (issue 24, row 8); two swatches say what the colours mean.
+void drawCategoryLegend(const QuantityDescriptor& d, const ViewRect& view) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const char* labels[2] = {"det J > 0", "fold-over (det J <= 0)"};
+  const ImU32 colors[2] = {toImColor(render::colorMapColor(render::kDivergingMap, 0.5f)),
+                           toImColor(render::kFoldoverColor)};
+  const float boxW = std::max(ImGui::CalcTextSize(d.name).x, 18 + ImGui::CalcTextSize(labels[1]).x);
+  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
+  const float y0 = static_cast<float>(view.y + view.height) - 58;
+  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + 50), IM_COL32(20, 20, 24, 190), 3.0f);
+  draw->AddText(ImVec2(x0, y0 - 20), kText, d.name);
+  for (int k = 0; k < 2; ++k) {
+    const float y = y0 + 4 + 20 * static_cast<float>(k);
+    draw->AddRectFilled(ImVec2(x0, y), ImVec2(x0 + 12, y + 12), colors[k]);
+    draw->AddText(ImVec2(x0 + 18, y - 1), kText, labels[k]);
+  }
+}
+
 void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
+  if (std::string(d.id) == "foldover") {
+    drawCategoryLegend(d, view);
+    return;
+  }
   const ColorRange range = shownRange(state, quantity);
   const auto fixed = state.quantities.show.ranges.find(quantity);
   const bool isFixed = fixed != state.quantities.show.ranges.end() && fixed->second.fixed;
@@ -360,7 +389,7 @@ void drawRangeSetting(AppState& state, int quantity) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
   auto it = state.quantities.show.ranges.find(quantity);
   RangeSetting setting = it != state.quantities.show.ranges.end() ? it->second : RangeSetting{};
-  if (it == state.quantities.show.ranges.end()) setting.range = shownRange(state, quantity);
+  setting.range = rangeFieldsValue(state.quantities.show, quantity, shownRange(state, quantity));
   ImGui::PushID(quantity);
   bool changed = ImGui::Checkbox("fixed range", &setting.fixed);
   ImGui::SameLine();
@@ -428,15 +457,26 @@ void drawShowChoice(AppState& state) {
 
 void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
 
+bool nuSweepCurrent(const AppState& state) {
+  const ViewQuantities& q = state.quantities;
+  const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
+  const DeformParams &a = q.nuSweepParams, &b = state.params;
+  return !q.nuSweep.empty() && deformer && q.nuSweepDeformer.lock() == *deformer &&
+         q.nuSweepPose.rows() == state.pose.rows() && q.nuSweepPose.cols() == state.pose.cols() &&
+         q.nuSweepPose == state.pose && a.gamma == b.gamma && a.blend == b.blend &&
+         a.tractionCorrection == b.tractionCorrection && a.corotational == b.corotational;
+}
+
 void drawNuPlot(AppState& state) {
   if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
+  tooltip(
+      "Deform the current pose at 25 values of nu in (-0.95, 0.49) and plot the volume change and the fold-over\n"
+      "count against nu (on the measuring worker); a click on the plot sets nu.");
   const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
-  const bool stale = state.quantities.nuSweepGeneration != state.deformGeneration;
   ImGui::SameLine();
-  ImGui::TextDisabled(sweep.empty() ? "volume change vs nu"
-                      : stale       ? "(pose changed: sweep again)"
-                                    : "volume change vs nu");
+  ImGui::TextDisabled(sweep.empty() || nuSweepCurrent(state) ? "volume change vs nu"
+                                                             : "(the pose changed: sweep again)");
   if (sweep.empty()) return;
   std::vector<float> change;
   int folds = 0;
@@ -465,6 +505,17 @@ void drawNuPlot(AppState& state) {
   if (std::isfinite(state.params.nu)) {  // the current nu
     const float x = xOf(state.params.nu);
     draw->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
+  }
+  {  // the nu axis: its ends under the plot's corners, its name in the middle
+    char lo[24], hi[24];
+    std::snprintf(lo, sizeof lo, "%.2f", nu0);
+    std::snprintf(hi, sizeof hi, "%.2f", nu1);
+    const ImU32 axis = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+    const float y = b.y + 1;
+    draw->AddText(ImVec2(a.x, y), axis, lo);
+    draw->AddText(ImVec2(b.x - ImGui::CalcTextSize(hi).x, y), axis, hi);
+    draw->AddText(ImVec2(0.5f * (a.x + b.x) - 0.5f * ImGui::CalcTextSize("nu").x, y), axis, "nu");
+    ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight()));
   }
   ImGui::TextColored(ImGui::GetStyleColorVec4(ImGuiCol_PlotLines), "- volume change %% (left scale)");
   ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(foldColor), "- fold-overs (0 .. %d)", folds);

@@ -38,6 +38,8 @@ void logHoverReadout(AppState& state, const HoverReadout& hover);
 void drawShowChoice(AppState& state);
 // Asks the worker for the nu sweep over (-0.95, 0.49) in 25 steps for the current pose of the Somigliana view.
 void sweepNuNow(AppState& state);
+// Whether the plotted sweep is of the current pose, method and parameters (nu aside: the sweep covers it).
+bool nuSweepCurrent(const AppState& state);
 // Somigliana: a "Sweep nu" button and the plot of volume change (and fold-over count) against nu for the current
 // pose, the current nu marked; a click on the plot sets nu (one undo step), hovering shows the values there.
 void drawNuPlot(AppState& state);

@@ -121,6 +121,14 @@ std::string recentFilesPath(const char* xdgConfigHome, const char* home) {
   return "";
 }
 
+std::string missingRecentPath(const RecentEntry& entry) {
+  for (const std::string& path : entry.paths()) {
+    std::error_code ec;
+    if (!std::filesystem::exists(path, ec)) return path;
+  }
+  return "";
+}
+
 RecentFiles loadRecentFiles(const std::string& path) {
   if (path.empty()) return {};
   std::ifstream in(path, std::ios::binary);

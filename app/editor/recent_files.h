@@ -52,6 +52,10 @@ class RecentFiles {
 // neither is set. Arguments may be null (getenv results); empty counts as unset.
 std::string recentFilesPath(const char* xdgConfigHome, const char* home);
 
+// The first of the entry's files that does not exist ("" when all do): File > Open Recent and the Open panel grey
+// such an entry out and name the file.
+std::string missingRecentPath(const RecentEntry& entry);
+
 // An empty list when `path` is empty, missing, unreadable or malformed: never an error.
 RecentFiles loadRecentFiles(const std::string& path);
 // Creates the folder when needed and writes atomically (file_util.h). Throws InputError on failure.

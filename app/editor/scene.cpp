@@ -136,6 +136,10 @@ Scene meshScene(const std::string& meshPath, const std::string& cageSource,
   const NoticeSink notice = [&](const Notice& n) { s.notices.push_back(sceneNotice(n)); };
   s.restCage = makeCage(mesh, s, notice);
   s.meshTriangles = mesh.faces.empty() ? Eigen::MatrixXi(0, 3) : triangulatePolygons(mesh.vertices, mesh.faces);
+  if (mesh.faces.empty())  // a point set, or a file cut short inside its vertices: no surface to draw either way
+    s.notices.push_back("mesh warning: " + meshPath + " has " + std::to_string(mesh.vertices.rows()) +
+                        " vertices but no faces: a point set, deformed as points with no surface drawn; if it "
+                        "should have faces, the file is probably cut short (compare it with the original)");
   s.meshVertices = meshPointsFor(s.restCage, mesh.vertices, meshPath, cageSource, notice);
   s.document = std::move(document);
   s.meshPath = meshPath;

@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "app_state.h"
+#include "pose_keys.h"
 #include "screenshot.h"
 
 namespace somicage::editor {
@@ -16,6 +17,12 @@ void saveDocument(AppState& state) {
   } else {
     saveSessionFile(state, state.documentPath);
   }
+}
+
+void cancelPrecompute(AppState& state) {
+  if (!state.worker.busy()) return;
+  state.worker.cancel();  // the worker stops at its next progress report; the outcome says "cancelled"
+  state.statusMessage = "cancelling the precomputation...";
 }
 
 void newDocument(AppState& state) {
@@ -45,6 +52,9 @@ const std::vector<Shortcut>& shortcuts() {
       {"screenshot", GLFW_KEY_F12, kNoMods, "F12", "Screenshot into the current folder",
        [](AppState& s) { s.screenshotRequest = defaultScreenshotName(); }},
       {"frame", GLFW_KEY_F, kNoMods, "F", "Frame everything (posed cage included)", frameAll},
+      {"cancel", GLFW_KEY_ESCAPE, kNoMods, "Esc",
+       "Cancel the running precomputation (a scene or a method loading); the current scene stays", cancelPrecompute},
+      {"play", GLFW_KEY_SPACE, kNoMods, "Space", "Play the timeline from the cursor, or stop", togglePlayback},
       {"reset_pose", GLFW_KEY_R, kAlt | kShift, "Alt+Shift+R", "Reset pose: every handle back to rest", resetPose},
       {"grab", GLFW_KEY_G, kNoMods, "G", "Grab the selection; then X/Y/Z, a typed value, Enter", nullptr},
       {"rotate", GLFW_KEY_R, kNoMods, "R", "Rotate the selection; then X/Y/Z, degrees, Enter", nullptr},

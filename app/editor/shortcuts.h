@@ -31,7 +31,8 @@ const char* shortcutLabel(const char* id);
 void runCommand(AppState& state, const char* id);
 
 // Commands shared by keys and menus.
-void saveDocument(AppState& state);  // Ctrl+S: to the session file, or Save as the first time
-void newDocument(AppState& state);   // Ctrl+N: the 3D demo (asks about unsaved changes)
+void saveDocument(AppState& state);      // Ctrl+S: to the session file, or Save as the first time
+void newDocument(AppState& state);       // Ctrl+N: the 3D demo (asks about unsaved changes)
+void cancelPrecompute(AppState& state);  // Esc: stops the precompute worker (no-op when idle)
 
 }  // namespace somicage::editor

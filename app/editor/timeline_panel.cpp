@@ -1,12 +1,14 @@
 #include "timeline_panel.h"
 
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <system_error>
 
+#include "panels.h"  // tooltip
 #include "pose_keys.h"
 
 namespace somicage::editor {
@@ -56,14 +58,9 @@ void drawTimelinePanel(AppState& state, double left, double bottom) {
   ImGui::Begin("Timeline", nullptr, flags);
   const bool hasKeys = !timeline.keys.empty();
   if (!hasKeys) ImGui::BeginDisabled();
-  if (ImGui::Button(a.playing ? "Stop" : "Play", ImVec2(60, 0))) {
-    if (a.playing) {
-      stopPlayback(state);
-    } else {
-      startPlayback(state, glfwGetTime());
-    }
-  }
+  if (ImGui::Button(a.playing ? "Stop" : "Play", ImVec2(60, 0))) togglePlayback(state);
   if (!hasKeys) ImGui::EndDisabled();
+  tooltip(hasKeys ? "Play from the cursor, or stop (Space)" : "Key a pose first (Key pose), then play (Space)");
   ImGui::SameLine();
   if (ImGui::Checkbox("Loop", &timeline.loop)) commitEdit(state, "Loop");
   ImGui::SameLine();
@@ -107,11 +104,11 @@ void drawTimelinePanel(AppState& state, double left, double bottom) {
 }
 
 void drawPoseLibraryPanel(AppState& state, double top) {
-  static std::string newName;  // the text fields of this one panel
-  static std::string renaming, renameTo;
+  AnimationState& a = state.animation;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float width = 300;
-  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x - width - 8, vp->Pos.y + static_cast<float>(top) + 8),
+  // At the right, below the last view's label and the numbers under it, which it would cover at the top.
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x - width - 8, vp->Pos.y + static_cast<float>(top) + 96),
                           ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(width, 260), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
@@ -119,46 +116,50 @@ void drawPoseLibraryPanel(AppState& state, double top) {
     ImGui::End();
     return;
   }
-  if (newName.empty()) newName = state.animation.poses.freshName();
+  if (a.newPoseName.empty()) a.newPoseName = a.poses.freshName();
   ImGui::SetNextItemWidth(130);
-  ImGui::InputText("##name", &newName);
+  ImGui::InputText("##name", &a.newPoseName);
   ImGui::SameLine();
   if (ImGui::Button("Store current")) {
-    storeCurrentPose(state, newName);
-    newName.clear();
+    storeCurrentPose(state, a.newPoseName);
+    a.newPoseName.clear();
   }
   ImGui::Separator();
-  const std::vector<NamedPose> poses = state.animation.poses.poses();  // a copy: the buttons edit the library
+  const std::vector<NamedPose> poses = a.poses.poses();  // a copy: the buttons edit the library
   for (const NamedPose& pose : poses) {
     ImGui::PushID(pose.name.c_str());
-    if (renaming == pose.name) {
+    if (a.renaming == pose.name) {
       ImGui::SetNextItemWidth(120);
       const bool done =
-          ImGui::InputText("##rename", &renameTo) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
+          ImGui::InputText("##rename", &a.renameTo) && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter));
       ImGui::SameLine();
       if (done || ImGui::Button("OK")) {
-        renameNamedPose(state, pose.name, renameTo);
-        renaming.clear();
+        renameNamedPose(state, pose.name, a.renameTo);
+        a.renaming.clear();
       }
     } else {
       ImGui::TextUnformatted(pose.name.c_str());
       ImGui::SameLine(120);
       if (ImGui::SmallButton("Apply")) applyNamedPose(state, pose.name);
       ImGui::SameLine();
-      if (ImGui::SmallButton("Rename")) renaming = renameTo = pose.name;
+      if (ImGui::SmallButton("Rename")) a.renaming = a.renameTo = pose.name;
       ImGui::SameLine();
       if (ImGui::SmallButton("Delete")) deleteNamedPose(state, pose.name);
     }
     ImGui::PopID();
   }
-  if (poses.empty()) ImGui::TextDisabled("no poses yet: pose the cage, then Store current");
+  if (poses.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("no poses yet: pose the cage, then Store current (or Key pose on the timeline)");
+    ImGui::PopStyleColor();
+  }
   ImGui::End();
 }
 
 void drawAnimationExportDialogs(AppState& state) {
-  static std::string path = "animation.glb";
-  static int kind = 0;
   AnimationState& a = state.animation;
+  int& kind = a.exportKind;
+  std::string& path = a.exportPath;
   if (a.exportDialogRequested) {
     ImGui::OpenPopup("Export animation");
     a.exportDialogRequested = false;
@@ -171,6 +172,9 @@ void drawAnimationExportDialogs(AppState& state) {
     ImGui::SameLine();
     ImGui::RadioButton("PNG images of the views", &kind, 2);
     ImGui::InputText(kind == 0 ? "file (.glb)" : "new folder", &path);
+    std::error_code ec;  // where a bare name goes: the editor's working folder
+    const std::filesystem::path where = std::filesystem::absolute(path, ec);
+    ImGui::TextDisabled("writes %s", ec ? path.c_str() : where.lexically_normal().c_str());
     ImGui::TextDisabled("frames %d..%d at %.1f fps (Timeline panel)", a.timeline.firstFrame, a.timeline.lastFrame,
                         a.timeline.fps);
     if (ImGui::Button("Export")) {

@@ -1,6 +1,7 @@
 #include "transform.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -188,8 +189,11 @@ std::string describeTransform(const TransformSession& s, const OrbitCamera& came
   const char* sep = axis == Axis::None ? "" : " ";
   switch (s.kind) {
     case TransformKind::Grab: {
-      const Eigen::Vector3d t =
+      Eigen::Vector3d t =
           typedValue(s) ? grabTranslation(s, camera, mouse) : snappedFree(s, grabTranslation(s, camera, mouse));
+      // -0 (a typed -0.3 times an axis' zero) and rounding noise read as 0: "(0, 0, -0.3)", not "(-0, -0, -0.3)".
+      const double noise = 1e-12 * std::max(1.0, t.cwiseAbs().maxCoeff());
+      for (int k = 0; k < 3; ++k) t[k] = std::abs(t[k]) <= noise ? 0.0 : t[k];
       std::snprintf(buf, sizeof buf, "Grab%s%s: (%.4g, %.4g, %.4g)", sep, axisName(axis), t.x(), t.y(), t.z());
       break;
     }

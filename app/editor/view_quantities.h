@@ -2,7 +2,9 @@
 // (measure_worker.h) and the measurements installed from it, one per view. No GL, no ImGui.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -20,8 +22,19 @@ struct ViewQuantities {
   int droppedStale = 0;                                  // outcomes dropped because their key was no longer current
 
   std::vector<NuSweepEntry> nuSweep;
-  std::uint64_t nuSweepGeneration = ~0ull;  // the pose the sweep was made for
+  // What the sweep was made of, nu aside (nu is what it sweeps): the pose, the method's deformer and its other
+  // parameters. An empty pose: it was made of a pose already gone when it arrived.
+  Eigen::MatrixXd nuSweepPose;
+  std::weak_ptr<const CageDeformer> nuSweepDeformer;
+  DeformParams nuSweepParams;
   bool sweepRequested = false;
+
+  // Drops the plot (another scene or cage, compare turned on or off).
+  void clearSweep() {
+    nuSweep.clear();
+    nuSweepPose.resize(0, 0);
+    nuSweepDeformer.reset();
+  }
 
   const ViewMeasurement* measurement(std::size_t view) const {
     return view < measured.size() && measured[view] ? &*measured[view] : nullptr;

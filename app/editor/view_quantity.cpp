@@ -176,4 +176,9 @@ ColorRange quantityRange(const ShowSettings& show, int quantity, const std::vect
   return sharedRange(views, d);
 }
 
+ColorRange rangeFieldsValue(const ShowSettings& show, int quantity, const ColorRange& drawn) {
+  const auto it = show.ranges.find(quantity);
+  return it != show.ranges.end() && it->second.fixed ? it->second.range : drawn;
+}
+
 }  // namespace somicage::editor

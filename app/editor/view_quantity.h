@@ -110,5 +110,8 @@ ShowSettings parseShow(const std::string& value, const std::string& option, int&
 // The range quantity `quantity` is drawn with: the fixed one when set and usable, else sharedRange over the
 // measurements of the views that show it (`measured[v]` may be null).
 ColorRange quantityRange(const ShowSettings& show, int quantity, const std::vector<const ViewMeasurement*>& measured);
+// What the fixed-range fields show: the typed range while "fixed" is ticked, else the range drawn, so that they never
+// show a stale typed range and ticking "fixed" starts from what the legend says.
+ColorRange rangeFieldsValue(const ShowSettings& show, int quantity, const ColorRange& drawn);
 
 }  // namespace somicage::editor

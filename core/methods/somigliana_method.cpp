@@ -304,6 +304,8 @@ const MethodDescriptor& somigliana() {
       0,
       kParamBlend | kParamNu | kParamGamma | kParamTractionFix | kParamBulging | kParamNormals,
       false,
+      false,
+      {},
       validateDeformParams,
       somiglianaLayout,
       somiglianaWorkingBytes,

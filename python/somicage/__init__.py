@@ -5,7 +5,7 @@
     moved = deformer.deform(somicage.load_posed("posed.obj", cage), nu=0.3, variant="local")
 """
 from ._somicage import (Cage, Cancelled, Deformer, InputError, SomiCageWarning, __version__, check, choice_info,
-                        load_mesh, load_posed, method_info, methods, save_obj)
+                        load_mesh, load_posed, method_info, methods, parameter_ranges, save_obj)
 
 __all__ = ["Cage", "Cancelled", "Deformer", "InputError", "SomiCageWarning", "__version__", "check", "choice_info",
-           "load_mesh", "load_posed", "method_info", "methods", "save_obj"]
+           "load_mesh", "load_posed", "method_info", "methods", "parameter_ranges", "save_obj"]

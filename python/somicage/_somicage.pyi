@@ -1,4 +1,5 @@
 """Type stubs for the compiled module (python/module.cpp)."""
+import os
 from typing import Callable, Optional, Sequence, Union
 
 import numpy as np
@@ -8,6 +9,7 @@ __version__: str
 
 ArrayLike = npt.ArrayLike
 Progress = Callable[[float], Optional[bool]]
+Path = Union[str, os.PathLike[str]]
 
 class InputError(ValueError):
     """Bad input; the message is the command line's. line is None when not applicable."""
@@ -24,9 +26,10 @@ class SomiCageWarning(UserWarning):
 
 class Cage:
     def __init__(self, vertices: ArrayLike, faces: Optional[ArrayLike] = None) -> None:
-        """vertices (V, 3) + triangles (F, 3), or a 2D polygon: (V, 2) + edges (F, 2) or faces=None (a loop)."""
+        """vertices (V, 3) + triangles (F, 3), or a 2D polygon: (V, 2) + edges (F, 2) or faces=None (a loop).
+        Any real dtype for vertices, any integer dtype for faces, any memory order; bad input: InputError."""
     @staticmethod
-    def from_obj(path: str) -> "Cage": ...
+    def from_obj(path: Path) -> "Cage": ...
     @property
     def vertices(self) -> npt.NDArray[np.float64]:
         """(V, d), read-only view."""
@@ -48,8 +51,9 @@ class Cage:
 
 class Deformer:
     def __init__(self, cage: Cage, points: ArrayLike, method: str = "somigliana", *, threads: int = 0,
-                 float_storage: bool = False, progress: Optional[Progress] = None) -> None:
-        """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released."""
+                 float_storage: bool = False, progress: Optional[Progress] = None, tets: str = "") -> None:
+        """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released; tets: a MEDIT
+        tetrahedral mesh of the cage for method="phong"."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
                blend: Optional[float] = None, traction_fix: bool = True,
                corotational: bool = False, bulging: str = "solid-angle",
@@ -57,11 +61,12 @@ class Deformer:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
     def analyze(self, posed: ArrayLike, faces: Sequence[Sequence[int]] = ..., *, nu: float = 0.0, gamma: float = 0.0,
                 variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
-                corotational: bool = False,
-                nu_sweep: Optional[tuple[float, float, int]] = None, bulging: str = "solid-angle",
+                corotational: bool = False, nu_sweep: Optional[tuple[float, float, int]] = None,
+                progress: Optional[Progress] = None, bulging: str = "solid-angle",
                 normals: str = "area") -> dict[str, object]:
         """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
-        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked."""
+        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked.
+        progress: as for Deformer (False cancels, Ctrl-C raises KeyboardInterrupt)."""
     @property
     def method(self) -> str: ...
     @property
@@ -82,7 +87,11 @@ def choice_info() -> list[dict[str, Union[str, list[tuple[str, str]]]]]:
     """Deformer.deform's keywords that take a name (bulging, normals): name, description, values (default first)."""
 def method_info() -> list[dict[str, Union[str, list[str]]]]:
     """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
-def load_mesh(path: str) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
-def save_obj(path: str, vertices: ArrayLike, faces: Sequence[Sequence[int]] = ...) -> None: ...
-def load_posed(path: str, cage: Cage) -> npt.NDArray[np.float64]: ...
-def check(cage: Union[str, ArrayLike], faces: Optional[ArrayLike] = None) -> dict[str, object]: ...
+def parameter_ranges() -> dict[str, tuple[float, float]]:
+    """{keyword: (min, max)} for nu (open interval, or +-inf), gamma, blend, threads: the engine's one list."""
+def load_mesh(path: Path) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
+def save_obj(path: Path, vertices: ArrayLike, faces: Sequence[Sequence[int]] = ...) -> None:
+    """The path must end in .obj (InputError otherwise, nothing written)."""
+def load_posed(path: Path, cage: Cage) -> npt.NDArray[np.float64]: ...
+def check(cage: Union[Path, ArrayLike], faces: Optional[ArrayLike] = None) -> dict[str, object]:
+    """The cage keys of `somicage check --json`, with the same values."""

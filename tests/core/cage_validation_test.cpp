@@ -145,6 +145,36 @@ TEST(CageValidation, DuplicatesWithinTheToleranceOnly) {
   EXPECT_EQ(report.duplicateVertices, (std::vector<std::array<int, 2>>{{0, 8}, {0, 10}, {8, 10}}));
 }
 
+TEST(CageValidation, DuplicatesFarFromTheOrigin) {
+  // 1e12 from the origin, in cells of 3.5e-10: counted from the origin the cell index would be 3e21, past long
+  // long's range (undefined behaviour that UBSan reports); counted from the cage's lowest corner it is below 1e10.
+  Cage c = cube();
+  c.vertices.conservativeResize(9, 3);
+  c.vertices.row(8) = c.vertices.row(0);
+  c.vertices.rowwise() += Eigen::RowVector3d(1e12, -1e12, 1e12);  // exact: the cube's +-1 keep every bit
+  const CageReport report = validateCage(c);
+  EXPECT_EQ(report.duplicateVertices, (std::vector<std::array<int, 2>>{{0, 8}}));
+}
+
+TEST(CageValidation, EmptyCagesAreProblemsNotCrashes) {
+  // No vertices and no faces: validation used to take the extent of zero rows (a read through a null pointer).
+  for (const int dim : {3, 2}) {
+    Cage empty;
+    empty.vertices.resize(0, dim);
+    empty.faces.resize(0, dim);
+    const CageReport report = validateCage(empty);
+    EXPECT_EQ(report.numVertices, 0);
+    EXPECT_FALSE(report.valid());
+    EXPECT_TRUE(mentions(describeCageProblems(report), dim == 3 ? "has no faces" : "has no edges"))
+        << joined(describeCageProblems(report));
+  }
+  Cage verticesOnly = cube();
+  verticesOnly.faces.resize(0, 3);
+  const CageReport report = validateCage(verticesOnly);
+  EXPECT_FALSE(report.valid());
+  EXPECT_EQ(report.unreferencedVertices.size(), 8u);
+}
+
 TEST(CageValidation, TwoSeparateCubesAreValid) {
   const Cage one = cube();
   Cage two;

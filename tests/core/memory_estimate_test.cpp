@@ -47,8 +47,9 @@ void forEachDeformer(double lo, double hi, Check check) {
         options.floatStorage = floatStorage;
         options.threads = 1;
         const std::unique_ptr<CageDeformer> deformer = makeDeformer(method, cage, points, options);
-        const std::size_t estimate = estimateCoordinateBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(),
-                                                             points.rows(), floatStorage);
+        const int vertices = method->needsVolumeMesh ? volumeMeshFor(cage, options)->numVertices() : cage.numVertices();
+        const std::size_t estimate =
+            estimateCoordinateBytes(method, cage.dim(), vertices, cage.numFaces(), points.rows(), floatStorage);
         check(*deformer, estimate,
               methodName(method) + " " + std::to_string(cage.dim()) + "D " + (floatStorage ? "float" : "double"));
       }

@@ -15,6 +15,7 @@
 #include "engine.h"
 #include "errors.h"
 #include "frame_device_evaluators.h"
+#include "panels.h"
 #include "methods/method_descriptors.h"
 #include "precompute_worker.h"
 #include "somigliana_coordinates.h"
@@ -295,4 +296,18 @@ TEST(EditorDevices, CommandLineOption) {
     EXPECT_NE(what.find("'gpu'"), std::string::npos) << what;
     EXPECT_NE(what.find("cpu, opengl, cuda"), std::string::npos) << what;
   }
+}
+
+// Issue 24, row 15: the status bar said "cpu (OpenMP, 1 threads)".
+TEST(EditorDevices, TheStatusBarCountsThreadsInGoodEnglish) {
+  AppState state;
+  state.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  state.statusMessage = "loaded demo";
+  state.stats.deformThreads = 1;
+  const std::string one = statusBarText(state);
+  EXPECT_NE(one.find("cpu (OpenMP, 1 thread)"), std::string::npos) << one;
+  EXPECT_EQ(one.rfind("loaded demo   |", 0), 0u) << one;
+  state.stats.deformThreads = 2;
+  const std::string two = statusBarText(state);
+  EXPECT_NE(two.find("cpu (OpenMP, 2 threads)"), std::string::npos) << two;
 }

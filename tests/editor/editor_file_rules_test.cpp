@@ -199,3 +199,24 @@ TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   EXPECT_TRUE(fs::exists(autosave.paths().session));
   autosave.finish();
 }
+
+// Issue 24, row 6: Open with a mesh and no cage said "cage: choose a cage file", where the command line makes a cage
+// for a mesh opened alone. Now it loads, with the generated cage's notice; a posed cage still needs its cage.
+TEST_F(Folder, OpenTakesAMeshAlone) {
+  AppState state;
+  write("tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  openFileDialog(state, FileDialogPurpose::OpenScene);
+  state.dialog.mesh = path("tetra.obj");
+  state.dialog.cage.clear();
+  state.dialog.posed = path("tetra.obj");
+  EXPECT_FALSE(submitFileDialog(state)) << "a posed cage without its cage";
+  state.dialog.posed.clear();
+  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
+  EXPECT_TRUE(state.loadingScene);
+  installNextOutcome(state);
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_TRUE(state.scene);
+  EXPECT_EQ(state.scene->meshPath, path("tetra.obj"));
+  EXPECT_GT(state.scene->restCage.numFaces(), 0);
+  EXPECT_NE(state.statusMessage.find("cage generated"), std::string::npos) << state.statusMessage;
+}

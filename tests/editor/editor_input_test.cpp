@@ -1,14 +1,20 @@
 // The real input handler (input.cpp) driven through ImGui without a window or GL, as in ImGui's
 // examples/example_null (1.86: build the font atlas and set DisplaySize by hand): clicks, Shift+click,
-// box selection, handle drags, G/R/S with Enter/Esc, A / Alt+A, undo/redo shortcuts.
+// box selection, handle drags, G/R/S with Enter/Esc, A / Alt+A, undo/redo shortcuts, Esc cancelling a precompute,
+// Space playing the timeline.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <atomic>
+#include <cstdio>
+#include <thread>
+
 #include "app_state.h"
 #include "input.h"
 #include "layout.h"
+#include "pose_keys.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -172,4 +178,77 @@ TEST_F(InputHarness, WheelZoomsAndMiddleDragOrbits) {
   EXPECT_NE(state.camera.state().yaw, before.yaw);
   key(GLFW_KEY_F);  // frame all restores a sensible distance
   EXPECT_GT(state.camera.state().distance, 0.0);
+}
+
+// Esc cancels a running precompute (before, only the panel's Cancel button did): a load held until the key has been
+// handled ends cancelled, and the scene on screen stays.
+TEST_F(InputHarness, EscapeCancelsARunningPrecompute) {
+  const std::shared_ptr<const Scene> shown = state.scene;
+  std::atomic<bool> loading{false}, release{false};
+  PrecomputeRequest request;
+  request.loadScene = [&] {
+    loading = true;
+    while (!release) std::this_thread::yield();
+    return makeDemoScene(2);
+  };
+  request.methods = {state.method};
+  state.loadingScene = true;
+  state.worker.start(std::move(request));
+  while (!loading) std::this_thread::yield();
+  moveTo(Eigen::Vector2d(500, 350));
+  key(GLFW_KEY_ESCAPE);
+  release = true;
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->cancelled) << "Esc did not cancel the precompute";
+  installOutcome(state, std::move(*out));
+  EXPECT_EQ(state.scene, shown);
+  EXPECT_FALSE(state.loadingScene);
+}
+
+// Space plays the timeline from the cursor and stops it (before, only the panel's Play button did); without keys
+// it says why nothing plays.
+TEST_F(InputHarness, SpacePlaysAndStopsTheTimeline) {
+  key(GLFW_KEY_SPACE);
+  EXPECT_FALSE(state.animation.playing);
+  EXPECT_NE(state.statusMessage.find("nothing to play"), std::string::npos) << state.statusMessage;
+
+  state.animation.timeline.interpolation = Interpolation::Linear;
+  state.animation.timeline.fps = 24;
+  keyCurrentPose(state);  // frame 0: rest
+  Eigen::MatrixXd moved = state.pose;
+  moved.col(1).array() += 0.5;
+  setPose(state, moved);
+  state.animation.frame = 48;
+  keyCurrentPose(state);
+  state.animation.frame = 0;
+  key(GLFW_KEY_SPACE);
+  ASSERT_TRUE(state.animation.playing);
+  tickPlayback(state, 100.0);  // the clock starts at the first tick after the key
+  EXPECT_EQ(state.animation.frame, 0.0);
+  tickPlayback(state, 101.0);  // one second at 24 fps: frame 24, half-way between the keys
+  EXPECT_EQ(state.animation.frame, 24.0);
+  EXPECT_LE((state.pose.col(1) - (moved.col(1).array() - 0.25).matrix()).cwiseAbs().maxCoeff(), 1e-12);
+  key(GLFW_KEY_SPACE);
+  EXPECT_FALSE(state.animation.playing);
+}
+
+// Issue 24, row 12: dragging a handle (or the gizmo) showed no numbers, where G / R / S do. The header reads the
+// displacement the drag made (to its 4 printed digits), and goes with the release.
+TEST_F(InputHarness, DraggingAHandleShowsItsDisplacement) {
+  const Eigen::MatrixXd before = state.pose;
+  const int v = someVertex();
+  moveTo(handle(v));
+  button(0, true);
+  EXPECT_EQ(transformHeader(state, views), "") << "a press is no drag yet";
+  moveTo(handle(v) + Eigen::Vector2d(60, -30));
+  const std::string header = transformHeader(state, views);
+  double x = 0, y = 0, z = 0;
+  ASSERT_EQ(std::sscanf(header.c_str(), "Grab: (%lf, %lf, %lf)", &x, &y, &z), 3) << header;
+  const Eigen::Vector3d moved = (state.pose.row(v) - before.row(v)).transpose();
+  EXPECT_GT(moved.norm(), 0.05);
+  EXPECT_LE((Eigen::Vector3d(x, y, z) - moved).cwiseAbs().maxCoeff(), 1e-3 * moved.norm()) << header;
+  EXPECT_EQ(header.find('['), std::string::npos) << "a drag takes no keys: " << header;
+  button(0, false);
+  EXPECT_EQ(transformHeader(state, views), "");
 }

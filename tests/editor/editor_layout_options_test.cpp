@@ -78,6 +78,8 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--nu", "0.7"}), "--nu");
   EXPECT_EQ(sourceOf({"--nu", "abc"}), "--nu");
   EXPECT_EQ(sourceOf({"--gamma", "-1"}), "--gamma");
+  EXPECT_EQ(sourceOf({"--gamma", "1e4"}), "--gamma");  // beyond the engine's range (deformer.h: kGammaRange)
+  EXPECT_EQ(sourceOf({"--blend", "2"}), "--blend");
   EXPECT_EQ(sourceOf({"--compare", "green"}), "--compare");
   EXPECT_EQ(sourceOf({"--compare", "green,foo"}), "--compare");
   EXPECT_EQ(sourceOf({"--size", "12"}), "--size");

@@ -93,11 +93,15 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   AppState state;
   loadDemo(state);
   storeCurrentPose(state, "a");
+  Eigen::MatrixXd moved = state.pose;
+  moved.row(2) += Eigen::RowVector3d(0, 0.25, 0);
+  setPose(state, moved);
   keyCurrentPose(state);
   const Session saved = makeSession(state);
   const Session read = sessionFromJson(sessionToJson(saved), "s.json");
   ASSERT_EQ(read.poses.poses().size(), 2u);
-  EXPECT_EQ(read.poses.poses()[0].vertices, state.pose);
+  EXPECT_EQ(read.poses.poses()[0].vertices, makeDemoScene(3).restCage.vertices);
+  EXPECT_EQ(read.poses.poses()[1].vertices, state.pose);
   ASSERT_EQ(read.timeline.keys.size(), 1u);
   EXPECT_EQ(read.timeline.keys[0].pose, state.animation.timeline.keys[0].pose);
 
@@ -108,6 +112,127 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   const Session old = sessionFromJson(v1, "old.json");
   EXPECT_TRUE(old.poses.poses().empty());
   EXPECT_TRUE(old.timeline.keys.empty());
+}
+
+// Issue 24, row 11: Reset pose, then another frame. The timeline's cage replaces the unkeyed reset pose, as in
+// Blender, but as an undo step that says so: Ctrl+Z gives the reset pose back (before, the frame change recorded
+// nothing and undo removed the Reset pose itself). Scrubbing over the timeline's own cages records nothing.
+TEST(EditorPoseKeys, ChangingTheFrameAfterResetPoseIsAStepThatUndoes) {
+  AppState state;
+  loadDemo(state);
+  const Eigen::MatrixXd rest = state.pose;
+  state.animation.timeline.interpolation = Interpolation::Linear;
+  Eigen::MatrixXd a = rest, b = rest;
+  a.col(0).array() += 0.3;
+  b.col(1).array() += 0.6;
+  setPose(state, a);
+  keyCurrentPose(state);  // frame 0
+  setPose(state, b);
+  state.animation.frame = 10;
+  keyCurrentPose(state);
+  const std::size_t keyed = state.history.size();
+  scrubTo(state, 4);  // the timeline's cage at frame 10 was shown: nothing unkeyed
+  scrubTo(state, 10);
+  EXPECT_EQ(state.history.size(), keyed);
+  EXPECT_EQ(state.pose, b);
+
+  resetPose(state);
+  ASSERT_EQ(state.pose, rest);
+  scrubTo(state, 5);
+  EXPECT_LE((state.pose - 0.5 * (a + b)).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_EQ(state.history.step(state.history.cursor()).name, "Frame 5");
+  EXPECT_NE(state.statusMessage.find("unkeyed pose was replaced"), std::string::npos) << state.statusMessage;
+  undo(state);
+  EXPECT_EQ(state.pose, rest) << "undo did not give the reset pose back";
+  EXPECT_EQ(state.history.step(state.history.cursor()).name, "Reset pose");
+}
+
+// Issue 24, row 11: Key pose at several frames with one cage stores that cage once; a new cage a new pose.
+TEST(EditorPoseKeys, KeyingOneCageAtSeveralFramesStoresItOnce) {
+  AppState state;
+  loadDemo(state);
+  storeCurrentPose(state, "rest");
+  for (double frame : {0.0, 12.0, 24.0}) {
+    state.animation.frame = frame;
+    keyCurrentPose(state);
+  }
+  ASSERT_EQ(state.animation.poses.poses().size(), 1u);
+  ASSERT_EQ(state.animation.timeline.keys.size(), 3u);
+  for (const Keyframe& key : state.animation.timeline.keys) EXPECT_EQ(key.pose, "rest");
+  Eigen::MatrixXd moved = state.pose;
+  moved.row(0) += Eigen::RowVector3d(0.1, 0, 0);
+  setPose(state, moved);
+  state.animation.frame = 36;
+  keyCurrentPose(state);
+  ASSERT_EQ(state.animation.poses.poses().size(), 2u);
+  EXPECT_EQ(state.animation.poses.find(state.animation.timeline.keys.back().pose)->vertices, moved);
+}
+
+// The 3D demo's outcome, with its cage or with another numbering of it (vertices 0 and 1 swapped: the same shape
+// and size, but a pose of the first would move the wrong corners).
+PrecomputeOutcome demoOutcome(const std::string& name, bool renumbered) {
+  Scene scene = makeDemoScene(3);
+  scene.name = name;
+  if (renumbered) {
+    Cage& cage = scene.restCage;
+    cage.vertices.row(0).swap(cage.vertices.row(1));
+    for (Eigen::Index k = 0; k < cage.faces.size(); ++k) {
+      int& v = cage.faces.data()[k];
+      v = v == 0 ? 1 : v == 1 ? 0 : v;
+    }
+  }
+  PrecomputeOutcome outcome;
+  outcome.scene = std::make_shared<const Scene>(scene);
+  return outcome;
+}
+
+// Issue 24, row 2: the bunny's poses and keys leaked into the cactus. Opening another scene keeps the poses only on
+// a cage of the same topology; the dropped ones (and their keys) are named in the status bar, and the opened state
+// (history step 0, what Save session writes) has none of them.
+TEST(EditorPoseKeys, OpeningAnotherSceneDropsThePosesThatDoNotFitItsCage) {
+  AppState state;
+  installOutcome(state, demoOutcome("first", false));
+  storeCurrentPose(state, "rest");
+  Eigen::MatrixXd moved = state.pose;
+  moved.col(2).array() += 0.2;
+  setPose(state, moved);
+  state.animation.frame = 24;
+  keyCurrentPose(state);
+  ASSERT_EQ(state.animation.poses.poses().size(), 2u);
+
+  installOutcome(state, demoOutcome("same cage, another mesh", false));  // same topology: kept
+  EXPECT_EQ(state.animation.poses.poses().size(), 2u);
+  EXPECT_EQ(state.animation.timeline.keys.size(), 1u);
+
+  PrecomputeOutcome demo2d;
+  demo2d.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  installOutcome(state, demo2d);  // 10 vertices in 2D: no pose fits
+  EXPECT_TRUE(state.animation.poses.poses().empty());
+  EXPECT_TRUE(state.animation.timeline.keys.empty());
+  EXPECT_NE(state.statusMessage.find("dropped 2 poses and 1 key"), std::string::npos) << state.statusMessage;
+  EXPECT_FALSE(state.history.canUndo()) << "the open is the history's first step, with the library as filtered";
+  EXPECT_TRUE(makeSession(state).poses.poses().empty());
+  EXPECT_FALSE(hasUnsavedChanges(state));
+
+  installOutcome(state, demoOutcome("first", false));
+  storeCurrentPose(state, "rest");
+  installOutcome(state, demoOutcome("20 vertices, other faces", true));  // same size, another cage: dropped
+  EXPECT_TRUE(state.animation.poses.poses().empty());
+  EXPECT_NE(state.statusMessage.find("another topology"), std::string::npos) << state.statusMessage;
+}
+
+// A session brings its own library: its poses are kept when they have its cage's shape, a pose of another size is
+// dropped with the notice (a hand-edited or mismatched session).
+TEST(EditorPoseKeys, ASessionsPosesAreKeptWhenTheyFitItsCage) {
+  AppState state;
+  installOutcome(state, demoOutcome("before", false));
+  state.animation.poses.store("fits", makeDemoScene(3).restCage.vertices);
+  state.animation.poses.store("too small", Eigen::MatrixXd::Zero(10, 3));
+  state.pendingDocumentPath = "session.json";  // what loadSessionFile sets while the session's scene loads
+  installOutcome(state, demoOutcome("session scene", true));
+  ASSERT_EQ(state.animation.poses.poses().size(), 1u);
+  EXPECT_EQ(state.animation.poses.poses()[0].name, "fits");
+  EXPECT_NE(state.statusMessage.find("dropped 1 pose and 0 keys"), std::string::npos) << state.statusMessage;
 }
 
 }  // namespace

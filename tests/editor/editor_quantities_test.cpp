@@ -88,6 +88,14 @@ TEST(EditorQuantities, ViewsShowingAQuantityShareItsRangeAndATypedRangeReplacesI
   EXPECT_DOUBLE_EQ(r.hi, 3.0);  // the automatic range again
   EXPECT_FALSE(rangeProblem(ColorRange{3, 1}, ColorScale::Viridis).empty());
   EXPECT_TRUE(rangeProblem(ColorRange{0, 0.1}, ColorScale::Viridis).empty());
+
+  // Issue 24, row 8: the fields showed a typed range after "fixed" was unticked; they show the range drawn then.
+  const ColorRange drawn = quantityRange(show, quantity("detj"), views);
+  show.ranges[quantity("detj")] = RangeSetting{true, ColorRange{0.5, 4.0}};
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).hi, 4.0);
+  show.ranges[quantity("detj")].fixed = false;
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).lo, 1.0 / 3.0);
+  EXPECT_EQ(rangeFieldsValue(show, quantity("detj"), drawn).hi, 3.0);
 }
 
 TEST(EditorQuantities, ShowParsesOnePerViewAndTheFieldVertex) {
@@ -310,4 +318,58 @@ TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
   job.start([](JobContext&) { return std::string("second"); });
   EXPECT_EQ(job.wait().value_or(""), "second");  // the first one's outcome never shows
   EXPECT_FALSE(job.poll().has_value());
+}
+
+namespace {
+
+// Runs the requested nu sweep on the worker and installs it, as the frame loop does.
+void sweep(AppState& state) {
+  sweepNuNow(state);
+  measureViews(state);
+  state.quantities.worker.join();
+  measureViews(state);
+  ASSERT_EQ(state.quantities.nuSweep.size(), 25u);
+}
+
+}  // namespace
+
+// Issue 24, row 9: the plot said "(pose changed: sweep again)" after a click on it set nu (nothing it depends on had
+// changed), and it stayed after another model was opened or compare was turned off. Now it is stale only when the
+// pose or a parameter other than nu changed, and it goes with the scene and the compare toggle.
+TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) {
+  AppState state;
+  loadDemo(state, 3, false);
+  updateDeformation(state);
+  sweep(state);
+  EXPECT_TRUE(nuSweepCurrent(state));
+  DeformParams p = state.params;
+  p.nu = 0.3;  // what a click on the plot does
+  setParams(state, p);
+  updateDeformation(state);
+  EXPECT_TRUE(nuSweepCurrent(state)) << "a new nu does not make the sweep stale";
+  p.gamma = 1.5;
+  setParams(state, p);
+  EXPECT_FALSE(nuSweepCurrent(state)) << "gamma changes every point of the sweep";
+  p.gamma = state.quantities.nuSweepParams.gamma;
+  setParams(state, p);
+  EXPECT_TRUE(nuSweepCurrent(state));
+  Eigen::MatrixXd moved = state.pose;
+  moved.row(0).array() += 0.2;
+  setPose(state, moved);
+  EXPECT_FALSE(nuSweepCurrent(state)) << "another pose";
+
+  sweep(state);
+  EXPECT_TRUE(nuSweepCurrent(state));
+  setCompare(state, false);  // off already: the plot stays
+  EXPECT_FALSE(state.quantities.nuSweep.empty());
+  setCompare(state, true);
+  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "compare turned on";
+  sweep(state);  // of the panel's method, whose deformer the compare view keeps
+  setCompare(state, false);
+  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "compare turned off";
+
+  sweep(state);
+  requestDemo(state, 2);
+  installNextOutcome(state);
+  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "another scene";
 }

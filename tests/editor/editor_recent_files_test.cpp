@@ -173,3 +173,22 @@ TEST(EditorRecentFiles, AppStateRecordsLoadedScenesAndSessions) {
   state.worker.cancel();
   std::filesystem::remove_all(dir);
 }
+
+// Issue 24, row 10: a session just saved is in the recent list (File > Open Recent) before it was ever opened; an
+// entry whose file is gone is named so that the menu greys it out.
+TEST(EditorRecentFiles, ASavedSessionIsRecentAtOnce) {
+  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "somicage_recent_saved";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  AppState state;
+  state.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  state.pose = state.scene->restCage.vertices;
+  const std::string saved = (dir / "saved.json").string();
+  ASSERT_TRUE(saveSessionFile(state, saved));
+  ASSERT_EQ(state.recent.entries().size(), 1u);
+  EXPECT_EQ(state.recent.entries().front(), RecentEntry::sessionFile(saved));
+  EXPECT_EQ(missingRecentPath(state.recent.entries().front()), "");
+  std::filesystem::remove(saved);
+  EXPECT_EQ(missingRecentPath(state.recent.entries().front()), saved);
+  std::filesystem::remove_all(dir);
+}

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "app_state.h"
 #include "cage_generation.h"
@@ -31,7 +33,9 @@ struct CubeFiles {
     cube.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1,
         7, 5;
     mesh = (dir / "points.obj").string();
-    saveObj(mesh, Eigen::MatrixXd::Random(20, 3) * 0.5, PolygonMesh{});
+    PolygonMesh soup;  // triangles through the points: a mesh with faces (a point set would get its own notice)
+    for (int k = 0; k + 2 < 20; k += 3) soup.faces.push_back({k, k + 1, k + 2});
+    saveObj(mesh, Eigen::MatrixXd::Random(20, 3) * 0.5, soup);
   }
   ~CubeFiles() { std::filesystem::remove_all(dir); }
 
@@ -83,7 +87,8 @@ TEST(EditorSceneRepair, AMeshInOtherUnitsGetsANotice) {
   const CubeFiles files("somicage_scene_units");
   const std::string cage = files.cage("cube.obj", files.cube);
   const std::string millimetres = (files.dir / "millimetres.obj").string();
-  saveObj(millimetres, loadMesh(files.mesh).vertices * 1000, PolygonMesh{});
+  const PolygonMesh mesh = loadMesh(files.mesh);
+  saveObj(millimetres, mesh.vertices * 1000, mesh);
   const Scene scene = loadScene(millimetres, cage);
   ASSERT_EQ(scene.notices.size(), 1u);
   const std::string expected = "mesh warning: the mesh " + millimetres + " and the cage " + cage + " do not fit";
@@ -107,3 +112,49 @@ TEST(EditorSceneRepair, MeshWithoutACageGetsAGeneratedOne) {
 }
 
 }  // namespace
+
+// Issue 24, rows 3 and 4: a cage that does not enclose the mesh, and a mesh without faces (an OBJ cut short inside
+// its `v` lines), loaded with only "loaded NAME" before. Both now say so in the status bar and on stderr (the log).
+TEST(EditorSceneRepair, PointsOutsideTheCageAndAMeshWithoutFacesAreReported) {
+  const CubeFiles files("somicage_scene_outside");
+  Cage small = files.cube;
+  small.vertices *= 0.25;  // the cube [-0.25, 0.25]^3 around points spread over [-0.5, 0.5]^3
+  const std::string cage = files.cage("small.obj", small);
+  const Eigen::MatrixXd points = loadMesh(files.mesh).vertices;
+  const std::string pointSet = (files.dir / "point_set.obj").string();  // the points without the triangles
+  saveObj(pointSet, points, PolygonMesh{});
+  int outside = 0;  // counted here from the box, independently of the deformer's winding numbers
+  for (Eigen::Index p = 0; p < points.rows(); ++p) outside += points.row(p).cwiseAbs().maxCoeff() > 0.25;
+  ASSERT_GT(outside, 0);
+
+  AppState state;
+  requestSceneFiles(state, pointSet, cage);
+  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  ASSERT_TRUE(out.has_value());
+  ::testing::internal::CaptureStderr();
+  installOutcome(state, std::move(*out));
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  const std::string counted = std::to_string(outside) + " of 20 points lie outside the cage";
+  EXPECT_NE(state.statusMessage.find(counted), std::string::npos) << state.statusMessage;
+  EXPECT_NE(log.find(counted), std::string::npos) << log;
+  const std::string noFaces = "has 20 vertices but no faces";
+  EXPECT_NE(state.statusMessage.find(noFaces), std::string::npos) << state.statusMessage;
+  EXPECT_NE(log.find(noFaces), std::string::npos) << log;
+}
+
+TEST(EditorSceneRepair, AnObjCutShortInsideItsVertexLinesSaysSo) {
+  const CubeFiles files("somicage_scene_truncated");
+  const std::string whole = files.cage("whole.obj", files.cube);  // the cube as a mesh: 8 v lines, 12 f lines
+  std::ifstream in(whole);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t cut = text.find("\nv ", text.find("\nv ") + 1);  // after the second vertex line
+  const std::string truncated = (files.dir / "truncated.obj").string();
+  std::ofstream(truncated) << text.substr(0, cut + 1);
+  const Scene scene = loadScene(truncated, files.cage("cube.obj", files.cube));
+  EXPECT_EQ(scene.meshTriangles.rows(), 0);
+  ASSERT_FALSE(scene.notices.empty());
+  EXPECT_NE(scene.notices.back().find(truncated + " has 2 vertices but no faces"), std::string::npos)
+      << scene.notices.back();
+  EXPECT_NE(scene.notices.back().find("cut short"), std::string::npos);
+}

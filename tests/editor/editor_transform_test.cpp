@@ -143,6 +143,17 @@ TEST(EditorTransform, DescriptionNamesKindAndAxis) {
   EXPECT_EQ(describeTransform(t, c, Eigen::Vector2d(500, 300)).rfind("Rotate Z:", 0), 0u);
 }
 
+// Issue 24, row 15: "G Z -0.3" was described as "(-0, -0, -0.3)".
+TEST(EditorTransform, DescriptionOfATypedGrabHasNoNegativeZeros) {
+  Eigen::MatrixXd pts(2, 3);
+  pts << 1, 0, 0, 0, 1, 0;
+  TransformSession s = beginTransform(TransformKind::Grab, {0, 1}, pts, Eigen::Vector2d(400, 300), kViewport);
+  s.axis = Axis::Z;
+  for (char c : std::string("0.3-")) ASSERT_TRUE(typeIntoTransform(s, c));
+  const std::string text = describeTransform(s, frontCamera(), Eigen::Vector2d(10, 590));
+  EXPECT_EQ(text.rfind("Grab Z: (0, 0, -0.3)", 0), 0u) << text;
+}
+
 TEST(EditorTransform, TypedValuesActAsInBlender) {
   Eigen::MatrixXd pts(2, 3);
   pts << 1, 0, 0, 0, 1, 0;

@@ -202,6 +202,28 @@ TEST(GuiScreenshot, DetJAtRestIsTheNeutralCentreOfTheMap) {
   EXPECT_NEAR(lo * hi, 1.0, 1e-9);
 }
 
+// Issue 24, row 8: the fold-over legend was the det J colour bar from 0.999 to 1.001 (blue to red). It is two
+// swatches now, the neutral grey and magenta: no blue and no red in the legend's corner (the mesh at rest is
+// neutral, the cage hidden, the background grey).
+TEST(GuiScreenshot, FoldOverLegendIsTwoSwatchesNotAColourBar) {
+  REQUIRE_DISPLAY();
+  const TestFiles f = writeTestFiles();
+  const Image img = screenshot(
+      quote(f.mesh) + " " + quote(f.cage) + " --show foldover --hide-ui --hide-cage --size 640x480", "foldover_legend");
+  ASSERT_EQ(img.width, 640);
+  int coloured = 0, magenta = 0;
+  for (int y = 480 - 90; y < 480; ++y) {
+    for (int x = 640 - 300; x < 640; ++x) {
+      const unsigned char* p = &img.rgba[(static_cast<std::size_t>(y) * 640 + x) * 4];
+      const int r = p[0], g = p[1], b = p[2];
+      magenta += r > 150 && b > 150 && g < 60;
+      coloured += (b > r + 60 && b > g + 40) || (r > b + 60 && r > g + 60);  // the map's blue or red end
+    }
+  }
+  EXPECT_EQ(coloured, 0) << "a colour bar in the fold-over legend";
+  EXPECT_GT(magenta, 50) << "no fold-over swatch";
+}
+
 TEST(GuiScreenshot, DetJOfAUniformScaleIsTheCubeOfTheScale) {
   REQUIRE_DISPLAY();
   const TestFiles f = writeTestFiles();

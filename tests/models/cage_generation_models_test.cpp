@@ -1,6 +1,6 @@
 // core/cage_generation.h on every mesh of ../shared/models (skipped visibly when absent), at the face count of the
 // model's hand-made cage, checked by generated_cage_checks.h. How tight the cages are is measured, not asserted
-// here (the README's table compares them with the hand-made ones). Labelled "slow" (about two minutes in all on two
+// here (docs/cli.md's table compares them with the hand-made ones). Labelled "slow" (about two minutes in all on two
 // busy cores): run_all.sh runs it, the sanitizer build does not.
 #include <gtest/gtest.h>
 

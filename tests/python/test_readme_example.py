@@ -1,4 +1,4 @@
-"""The README's Python example runs as written (with the models folder this build was configured with)."""
+"""docs/python.md's Python example runs as written (with the models folder this build was configured with)."""
 import pathlib
 import re
 
@@ -6,7 +6,7 @@ import numpy as np
 
 from conftest import MODELS_DIR, require_firehydrant
 
-README = pathlib.Path(__file__).parents[2] / "README.md"
+README = pathlib.Path(__file__).parents[2] / "docs" / "python.md"
 
 
 def test_readme_example_runs(capsys):

@@ -1,0 +1,60 @@
+// The precomputes' parallel loop (core/point_blocks.h): every point once, and an exception thrown on an OpenMP
+// thread (a point that fails, a scratch buffer that cannot be allocated) reaches the caller as that exception,
+// instead of ending the process (std::terminate, which an exception leaving a parallel region calls).
+#include "point_blocks.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <new>
+#include <vector>
+
+#include "errors.h"
+
+namespace somicage {
+namespace {
+
+const ProgressCallback kNoProgress = [](double) { return true; };
+
+TEST(PointBlocks, VisitsEveryPointOnce) {
+  const int n = 20000;
+  std::vector<std::atomic<int>> visits(n);
+  forEachPointInBlocks(
+      n, 100, 2, kNoProgress, [] { return 0; }, [&](int&, int p) { ++visits[static_cast<std::size_t>(p)]; });
+  for (int p = 0; p < n; ++p) ASSERT_EQ(visits[static_cast<std::size_t>(p)].load(), 1) << "point " << p;
+}
+
+TEST(PointBlocks, AnExceptionOfOnePointReachesTheCaller) {
+  // Point 1500 lies in the third block of 655 points (2^16 / 100 faces): the blocks before it complete, and the
+  // exception thrown on whichever thread computes it is the one the caller catches.
+  std::atomic<int> visited{0};
+  try {
+    forEachPointInBlocks(
+        5000, 100, 2, kNoProgress, [] { return 0; },
+        [&](int&, int p) {
+          ++visited;
+          if (p == 1500) throw InputError("point 1500", -1, "cannot be computed", "none");
+        });
+    FAIL() << "no exception";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "point 1500");
+  }
+  EXPECT_GE(visited.load(), 1311);  // the two blocks before it, and the point itself
+  EXPECT_LE(visited.load(), 1965);  // no block after its own started
+}
+
+TEST(PointBlocks, AScratchBufferThatCannotBeMadeIsBadAlloc) {
+  std::atomic<int> made{0};
+  // 1000 faces per point: blocks of 65 points, so the second scratch buffer is made whatever the thread count.
+  EXPECT_THROW(forEachPointInBlocks(
+                   1000, 1000, 2, kNoProgress,
+                   [&] {
+                     if (++made == 2) throw std::bad_alloc();
+                     return 0;
+                   },
+                   [](int&, int) {}),
+               std::bad_alloc);
+}
+
+}  // namespace
+}  // namespace somicage

@@ -1,0 +1,75 @@
+// A background worker that finishes wakes the frame loop (wakeOnFinish, app_state.h): the loop sleeps in
+// glfwWaitEventsTimeout while nothing happens, so a precompute, a measurement, a nu sweep, a generated cage or an
+// export that ends without a wake-up stayed undrawn until the mouse moved (issue 24, row 1). Each worker here calls
+// the wake-up once per finished request, after its outcome is ready to be taken; the GUI test
+// GuiInput.FinishedWorkIsDrawnWithoutMovingTheMouse shows the pictures.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "app_state.h"
+#include "background_job.h"
+#include "core/test_shapes.h"
+#include "editor_test_support.h"
+#include "quantity_overlay.h"
+
+using namespace somicage;
+using namespace somicage::editor;
+
+namespace {
+
+TEST(EditorWakeup, AJobsOutcomeIsReadyWhenItsWakeUpRuns) {
+  BackgroundJob<int> job;
+  std::atomic<int> wakes{0};
+  std::atomic<bool> readyAtWake{false};
+  job.setOnFinished([&] {
+    readyAtWake = job.ready();  // the frame loop, woken, must find the outcome
+    ++wakes;
+  });
+  job.start([](JobContext&) { return 42; });
+  job.join();
+  EXPECT_EQ(wakes.load(), 1);
+  EXPECT_TRUE(readyAtWake.load());
+  EXPECT_EQ(job.poll(), std::optional<int>(42));
+}
+
+TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
+  AppState state;
+  std::atomic<int> wakes{0};
+  wakeOnFinish(state, [&] { ++wakes; });
+
+  openDemoScene(state);  // the precompute worker: load and precompute
+  EXPECT_EQ(wakes.load(), 1) << "precompute";
+
+  sweepNuNow(state);  // the measure worker: the nu sweep (the panel's button)
+  measureViews(state);
+  ASSERT_TRUE(state.quantities.worker.busy());
+  state.quantities.worker.join();
+  EXPECT_EQ(wakes.load(), 2) << "nu sweep";
+  measureViews(state);
+  EXPECT_EQ(state.quantities.nuSweep.size(), 25u);
+
+  // File > Make cage...: a generator that returns at once (the real one is tested in editor_cage_maker_test.cpp).
+  state.cageMaker.setGenerator([](const Eigen::MatrixXd&, const Eigen::MatrixXi&, const CageGenerationOptions&,
+                                  const std::string&, const ProgressCallback&) {
+    GeneratedCage generated;
+    generated.cage = test::makeIcosphere(1);
+    generated.cage.vertices *= 10.0;
+    return generated;
+  });
+  openCageMaker(state, 80);
+  state.cageMaker.wait();
+  // The worker thread calls the wake-up right after storing the result, which wait() may see first.
+  for (int i = 0; i < 5000 && wakes.load() < 3; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(wakes.load(), 3) << "cage generation";
+  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Ready);
+
+  ASSERT_TRUE(
+      state.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
+  ASSERT_TRUE(state.exporter.wait().has_value());
+  EXPECT_EQ(wakes.load(), 4) << "export";
+}
+
+}  // namespace
