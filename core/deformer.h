@@ -9,13 +9,22 @@
 #include <vector>
 
 #include "cage.h"
+#include "deform_choices.h"
 #include "exterior_points.h"
 #include "frame_evaluation.h"
 #include "integration_options.h"
 #include "method.h"
 #include "progress.h"
+#include "volume_mesh.h"
 
 namespace somicage {
+
+// Which boundary conditions the Somigliana deformer builds (docs/engine.md, "Variants beyond the paper").
+enum class VariantKind {
+  Blend,   // the paper's: rotations blended from the global (blend 0) to the local (blend 1) variant (Fig. 4)
+  Affine,  // the global variant with the best-fit affine map A = R S: tractions R sigma(S) n_j (blend ignored)
+  Stable,  // the local variant without its fold-overs at high nu (blend ignored)
+};
 
 // Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
 struct DeformParams {
@@ -24,8 +33,14 @@ struct DeformParams {
   double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
   bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_method.cpp)
+  Bulging bulging = Bulging::SolidAngle;        // how eta grows with gamma (deform_choices.h)
+  NormalWeights normals = NormalWeights::Area;  // vertex normals' and vertex rotations' face weights
+  VariantKind kind = VariantKind::Blend;        // set with blend by the variant's name (variants.h)
 };
 
+// Every field equal (numbers exactly).
+bool operator==(const DeformParams& a, const DeformParams& b);
+inline bool operator!=(const DeformParams& a, const DeformParams& b) { return !(a == b); }
 // The ranges validateDeformParams accepts: the one list every front end shows or checks (the CLI's help, the
 // editor's options and sliders, Python's somicage.parameter_ranges(), the Blender add-on through it).
 struct ParameterRange {
@@ -58,7 +73,21 @@ struct PrecomputeOptions {
   // Integrates the rows of the methods that integrate row by row (Somigliana): empty = the CPU's; a device's
   // (cuda_backend.h: cudaRowIntegrator) may be injected. The rows are written into C by the method either way.
   RowIntegrator rowIntegrator;
+  // The method's own options (MethodDescriptor::options), by key: e.g. Phong's "tets" and "tet-level".
+  MethodOptions methodOptions;
+  // For a method that needs a volume mesh of the rest cage (MethodDescriptor::needsVolumeMesh): the mesh when a
+  // front end has made it already (engine.h: prepareVolumeMesh), else the method makes it (volumeMeshFor: the
+  // "tets" file, else volumeMesher, else the star of the cage's faces).
+  std::shared_ptr<const VolumeMesh> volumeMesh;
+  VolumeMesher volumeMesher;
 };
+
+// A volume method's mesh: options.volumeMesh; else the MEDIT file methodOptions["tets"] (checkVolumeMesh: *reoriented
+// counts the reoriented simplices); else, with no "tet-level" asked for, the cage's star (starVolumeMesh) when it is
+// star-shaped from its centroid; else options.volumeMesher's (checked too). Throws InputError naming --tets when
+// there is none (a cage not star-shaped from its centroid, and no mesher).
+std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
+                                                int* reoriented = nullptr);
 
 // Per-point facts established by the precompute (#P each; empty where a method does not provide them).
 struct PrecomputeDiagnostics {

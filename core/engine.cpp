@@ -62,14 +62,30 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
   return points;
 }
 
+void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices) {
+  if (!method->needsVolumeMesh || options.volumeMesh) return;
+  int reoriented = 0;
+  options.volumeMesh = volumeMeshFor(restCage, options, &reoriented);
+  if (reoriented > 0) {
+    const auto file = options.methodOptions.find("tets");
+    notices({Notice::Kind::Repair, file != options.methodOptions.end() ? file->second : "",
+             "reoriented " + std::to_string(reoriented) + " of " + std::to_string(options.volumeMesh->numSimplices()) +
+                 " elements whose vertices were in negative order"});
+  }
+}
+
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& source,
                                        const std::string& hint, bool withGradients) {
-  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), cage.numVertices(), cage.numFaces(), points,
+  // A volume method's columns are per vertex of its volume mesh (the cage's star until the mesh is known).
+  const int vertices = !method->needsVolumeMesh ? cage.numVertices()
+                       : options.volumeMesh     ? options.volumeMesh->numVertices()
+                                                : cage.numVertices() + 1;
+  MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), vertices, cage.numFaces(), points,
                                                      options.floatStorage, options.threads);
   if (withGradients)
     estimate.gradients =
-        estimateGradientBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(), points, options.floatStorage);
+        estimateGradientBytes(method, cage.dim(), vertices, cage.numFaces(), points, options.floatStorage);
   requireMemory(estimate, availableMemoryBytes(), source, hint);
   return estimate;
 }
@@ -77,11 +93,13 @@ MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::siz
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,
                                          const ProgressCallback& progress, const MemoryCheck& memory) {
+  PrecomputeOptions prepared = options;
+  prepareVolumeMesh(method, restCage, prepared, ignoreNotices);
   const MemoryEstimate estimate = requirePrecomputeMemory(
-      method, restCage, static_cast<std::size_t>(points.rows()), options, source,
+      method, restCage, static_cast<std::size_t>(points.rows()), prepared, source,
       memory.hint.empty() ? memoryHint(!options.floatStorage) : memory.hint, memory.withGradients);
   if (memory.fits) memory.fits(estimate);
-  return makeDeformer(method, restCage, points, options, progress);
+  return makeDeformer(method, restCage, points, prepared, progress);
 }
 
 std::optional<Notice> exteriorPointsNotice(const CageDeformer& deformer, const std::string& meshSource) {

@@ -56,6 +56,11 @@ Cage loadUsableCage(const std::string& path, const NoticeSink& notices, const Re
 Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVertices, const std::string& meshSource,
                               const std::string& cageSource, const NoticeSink& notices);
 
+// For a method that needs a volume mesh of the cage (MethodDescriptor::needsVolumeMesh) and has none yet: makes it
+// (deformer.h: volumeMeshFor, from the method options "tets" / "tet-level" and the mesher) and stores it in
+// options.volumeMesh, with a Repair notice naming the file when simplices were reoriented. Nothing otherwise.
+void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices);
+
 // The memory a precompute of `points` points will take (memory_estimate.h), with the deformation gradient's
 // (jacobian.h) when withGradients; throws InputError naming `source`, with `hint`, when it would not fit in the
 // free memory.
@@ -70,7 +75,8 @@ struct MemoryCheck {
   std::function<void(const MemoryEstimate&)> fits;  // told the estimate when it fits, before the work; may be empty
 };
 
-// requirePrecomputeMemory (as `memory` says), then the method's precompute of points (#P by d) in the rest cage.
+// prepareVolumeMesh (notices dropped: call it first to show them), requirePrecomputeMemory (as `memory` says),
+// then the method's precompute of points (#P by d) in the rest cage.
 // Throws Cancelled when progress returns false.
 std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, const Eigen::MatrixXd& points,
                                          const PrecomputeOptions& options, const std::string& source,

@@ -47,6 +47,7 @@ struct PreparedWeights {
   int mainColumns, tailColumns, outputs;
   std::vector<Scalar> mainRows;  // (outputs) rows of mainColumns, zero for outputs before mainOffset
   Eigen::MatrixXd tail;          // tailColumns by outputs, in double: the tail is a handful of columns
+  std::vector<int> tailRows;     // the tail columns whose W row is not zero (the affine terms only in that variant)
   std::vector<Group> groups;
   int steps = 0;                 // SIMD steps of all the groups' passes over one block
   double origin[3] = {0, 0, 0};  // FrameWeights::origin
@@ -54,6 +55,8 @@ struct PreparedWeights {
   PreparedWeights(const FrameWeights& W, int mainColumns_)
       : mainColumns(mainColumns_), tailColumns(static_cast<int>(W.tail.rows())), outputs(W.outputs), tail(W.tail) {
     for (int a = 0; a < 3 && a < W.origin.size(); ++a) origin[a] = W.origin(a);
+    for (int k = 0; k < tailColumns; ++k)
+      if (!W.tail.row(k).isZero(0)) tailRows.push_back(k);
     mainRows.assign(static_cast<size_t>(outputs) * mainColumns, Scalar(0));
     for (int o = W.mainOffset; o < outputs; ++o)
       for (int k = 0; k < mainColumns; ++k)
@@ -161,7 +164,7 @@ void outputsOfRows(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scal
       for (int j = 0; j < g.count; ++j) y[r][o + j] += sums[r][j];
   }
   for (int r = 0; r < Rows; ++r) {
-    for (int k = 0; k < W.tailColumns; ++k) {
+    for (int k : W.tailRows) {
       const double ck = static_cast<double>(rows[r][W.mainColumns + k]);
       if (ck != 0)
         for (int o = 0; o < W.outputs; ++o) y[r][o] += ck * W.tail(k, o);

@@ -28,6 +28,16 @@ enum DeformParameter : unsigned {
   kParamGamma = 1u << 2,         // gamma
   kParamTractionFix = 1u << 3,   // tractionCorrection
   kParamCorotational = 1u << 4,  // corotational
+  kParamBulging = 1u << 5,       // bulging (deform_choices.h)
+  kParamNormals = 1u << 6,       // normals (deform_choices.h)
+};
+
+// A precompute option of a method's own (MethodDescriptor::options): text in PrecomputeOptions::methodOptions
+// under `key`, which the front ends fill from their own spelling of it (the CLI's --KEY, Python's KEY= with - as _).
+struct MethodOptionSpec {
+  const char* key;    // "tets"
+  const char* value;  // what it holds, for help texts: "FILE"
+  const char* help;   // one line: "a MEDIT .mesh volume mesh of the cage (default: tetrahedralize it)"
 };
 
 struct MethodDescriptor {
@@ -37,11 +47,16 @@ struct MethodDescriptor {
   int listOrder;            // position in lists (help text, menus): ascending
   unsigned parameters;      // the DeformParameter bits it reads
   bool reproducesOutside;   // reproduces a still cage outside it too (no exterior rule needed)
+  // Needs a volume mesh of the rest cage (volume_mesh.h: PrecomputeOptions::volumeMesh, or one made from its
+  // options): the Phong deformer. Its layout's "vertices" are then that mesh's vertices.
+  bool needsVolumeMesh;
+  std::vector<MethodOptionSpec> options;  // its own precompute options (PrecomputeOptions::methodOptions)
   // Throws InputError naming the parameter ("nu") when params are out of range for this method (at least
   // validateDeformParams, deformer.h; a method may refuse more, e.g. nu = 0.5 for BEM).
   void (*validateParams)(const DeformParams& params);
 
-  // The columns of C for a cage of dimension dim (coordinate_layout.h).
+  // The columns of C for a cage of dimension dim (coordinate_layout.h); numVertices: the cage's, or its volume
+  // mesh's for a method that needs one.
   CoordinateLayout (*layout)(int dim, int numVertices, int numFaces);
   // Bytes the precompute holds besides C at its peak (copies, per-thread buffers, diagnostics) for `points`
   // points with `threads` OpenMP threads (> 0).
@@ -84,7 +99,8 @@ bool readsParameter(Method method, DeformParameter parameter);
 // The names of the methods that read it, for help texts: "somigliana only", "somigliana and bem".
 std::string methodsReading(DeformParameter parameter);
 
-// The layout of C that `method` stores for a cage.
-CoordinateLayout coordinateLayout(Method method, const Cage& cage);
+// The layout of C that `method` stores for a cage, and for a method that needs a volume mesh, that mesh's vertex
+// count (layoutVertices: the cage's own otherwise).
+CoordinateLayout coordinateLayout(Method method, const Cage& cage, int layoutVertices = -1);
 
 }  // namespace somicage

@@ -63,8 +63,8 @@ std::string methodsReading(DeformParameter parameter) {
   return list.empty() ? "no method" : list;
 }
 
-CoordinateLayout coordinateLayout(Method method, const Cage& cage) {
-  return method->layout(cage.dim(), cage.numVertices(), cage.numFaces());
+CoordinateLayout coordinateLayout(Method method, const Cage& cage, int layoutVertices) {
+  return method->layout(cage.dim(), layoutVertices >= 0 ? layoutVertices : cage.numVertices(), cage.numFaces());
 }
 
 }  // namespace somicage

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "deform_choices_json.h"
 #include "errors.h"
 
 namespace somicage {
@@ -167,6 +168,7 @@ AnimationSource animationSourceFromSessionJson(const std::string& text, const st
   const JsonValue& traction = member(params, "tractionCorrection", source);
   if (traction.type() != JsonValue::Type::Bool) fail(source, "\"tractionCorrection\" must be true or false");
   out.params.tractionCorrection = traction.asBool();
+  readChoices(params, out.params, source);
   if (const JsonValue* poses = root.find("poses")) out.poses = poseLibraryFromJson(*poses, source);
   if (const JsonValue* timeline = root.find("timeline")) out.timeline = timelineFromJson(*timeline, source);
   return out;

@@ -23,13 +23,15 @@ Method methodArgument(const std::string& name) {
 
 DeformParams deformParams(const PythonDeformOptions& options) {
   DeformParams params;
-  if (options.variant != "global" && options.variant != "local")
-    throw InputError("variant", -1, "'" + options.variant + "' is not a choice", "use global or local");
-  params.blend = options.blend.value_or(options.variant == "local" ? 1.0 : 0.0);
+  setVariant(params, options.variant, "variant");
+  if (options.blend) params.blend = *options.blend;
   params.nu = options.nu;
   params.gamma = options.gamma;
   params.tractionCorrection = options.tractionFix;
   params.corotational = options.corotational;
+  const std::vector<ChoiceParameter>& choices = choiceParameters();
+  for (std::size_t k = 0; k < options.choices.size() && k < choices.size(); ++k)
+    choices[k].set(params, parseChoice(choices[k], options.choices[k], choices[k].name));
   return params;
 }
 
@@ -52,7 +54,7 @@ Eigen::MatrixXd inCageDimension(Eigen::MatrixXd matrix, int dim, const std::stri
 }  // namespace
 
 PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method,
-                               int threads, bool floatStorage, const ProgressArgument& progress)
+                               int threads, bool floatStorage, const ProgressArgument& progress, const std::string& tets)
     : restCage_(cage.cage) {
   const Method chosen = methodArgument(method);
   const int dim = restCage_.dim();
@@ -64,9 +66,15 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& poin
   options.threads = threads;
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
+  if (!tets.empty()) options.methodOptions["tets"] = tets;
   points_ =
       meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
+  try {
+    prepareVolumeMesh(chosen, restCage_, options, [](const Notice& n) { warn(describeNotice(n)); });
+  } catch (const InputError& e) {  // the keyword, not the command line's option
+    throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+  }
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;

@@ -29,13 +29,16 @@ struct PythonDeformOptions {
   std::optional<double> blend;  // overrides variant
   bool tractionFix = true;
   bool corotational = false;  // bem: remove the best-fit rotation before the linear solve
+  std::vector<std::string> choices;  // a value name per choiceParameters() (bulging, normals); empty: defaults
 };
 
 class PythonDeformer {
  public:
   // points: (#P, d), or (#P, 3) for a 2D cage (x, y are used, as by `somicage deform`).
+  // tets: a MEDIT volume mesh of the cage for a method that needs one (Phong's option "tets"); empty: the
+  // cage's star when it is star-shaped from its centroid (the module does not link CGAL's tetrahedralization).
   PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method, int threads,
-                 bool floatStorage, const ProgressArgument& progress);
+                 bool floatStorage, const ProgressArgument& progress, const std::string& tets = "");
 
   // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
   Eigen::MatrixXd deform(const ArrayArgument& posed, const PythonDeformOptions& options) const;

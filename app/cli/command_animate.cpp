@@ -21,16 +21,18 @@ namespace {
 const char* const kCommand = "somicage animate";
 
 ArgParser animateOptions() {
-  return ArgParser(kCommand,
-                   withScriptOptions({
-                       {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
-                       {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
-                       {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
-                       {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
-                       {"--recompute-normals", "",
-                        "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
-                       threadsOptionSpec(),
-                   }));
+  std::vector<OptionSpec> options = withScriptOptions({
+      {"--session", "S.json", "an editor session with poses and keys (File > Save session)", true},
+      {"--out", "OUT", "anim.glb (one GLB, morph-target animation) or DIR/ (OBJ sequence)", true},
+      {"--fps", "F", "frames per second of the GLB (default: the session's timeline)"},
+      {"--frames", "A:B", "the frames to write, inclusive (default: the timeline's range)"},
+      {"--recompute-normals", "",
+       "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
+      threadsOptionSpec(),
+  });
+  const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // the session's method's own (--tets)
+  options.insert(options.end(), methodOptions.begin(), methodOptions.end());
+  return ArgParser(kCommand, options);
 }
 
 // A session names its files as the editor opened them; a relative name is looked up next to the session first.
@@ -104,7 +106,8 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const Cage cage = loadUsableCage(cagePath, log.sink());
   const MeshDocument document = loadMeshDocument(meshPath);
   const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cagePath, log.sink());
-  const PrecomputeOptions options = precomputeOptions(threads);
+  PrecomputeOptions options = precomputeOptions(threads);
+  applyMethodOptions(args, session.method, cage, options, log.sink());
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient =
       document.normalCount > 0 && !args.has("--recompute-normals") && output == AnimationOutput::ObjSequence &&

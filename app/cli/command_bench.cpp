@@ -20,6 +20,7 @@
 #include "cpu_dispatch.h"
 #include "deformation_analysis.h"
 #include "deformation_quantities.h"
+#include "elastic_steiner_solve.h"
 #include "jacobian.h"
 #include "methods/method_descriptors.h"
 #include "obj_io.h"
@@ -32,18 +33,20 @@ namespace {
 const char* const kCommand = "somicage bench";
 
 ArgParser benchOptions() {
-  return ArgParser(kCommand,
-                   {
-                       {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
-                       {"--cage", "C.obj", "the rest cage", true},
-                       {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
-                       {"--frames", "N", "frames timed per backend and variant (default 50)"},
-                       {"--repeat", "R", "precomputes timed (default 3)"},
-                       {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
-                       {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
-                       threadsOptionSpec(),
-                       {"--json", "", "print one JSON object"},
-                   });
+  std::vector<OptionSpec> options{
+      {"--mesh", "M.obj", "the points to deform (any OBJ)", true},
+      {"--cage", "C.obj", "the rest cage", true},
+      {"--posed", "P.obj", "a posed cage (default: the rest cage bent and twisted)"},
+      {"--frames", "N", "frames timed per backend and variant (default 50)"},
+      {"--repeat", "R", "precomputes timed (default 3)"},
+      {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
+      {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
+      threadsOptionSpec(),
+      {"--json", "", "print one JSON object"},
+  };
+  const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // Phong's --tets, --tet-level
+  options.insert(options.end(), methodOptions.begin(), methodOptions.end());
+  return ArgParser(kCommand, options);
 }
 
 double median(std::vector<double> values) {
@@ -145,6 +148,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
       options.has("--posed") ? loadPosedVertices(options.text("--posed"), cage) : defaultPose(cage);
   PrecomputeOptions precompute = precomputeOptions(threads);
   precompute.floatStorage = true;
+  applyMethodOptions(options, methods::somigliana(), cage, precompute, log.sink());
 
   // Precompute as the editor does: exact integrals, stored in float.
   const Method somigliana = methods::somigliana();
@@ -269,13 +273,32 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     }
   }
   const double bemFactorMs = median(factorTimes);
-  // Every other registered method's frame (deform_ms.cpu_NAME), at the same nu where it reads one.
+  // Every other registered method's frame (deform_ms.cpu_NAME), at the same nu where it reads one. A method on a
+  // volume mesh (Phong) also times the factorisation of its Steiner vertices' elastic system (NAME_factor_ms),
+  // once per cage and nu like the BEM's.
   deformer.reset();
+  std::vector<std::pair<std::string, double>> volumeFactorMs;
   for (Method method : allMethods()) {
     if (method == somigliana) continue;
+    PrecomputeOptions methodOptions = precompute;
+    if (method->needsVolumeMesh) {
+      ProgressReporter progress("volume mesh for " + methodName(method));
+      applyMethodOptions(options, method, cage, methodOptions, log.sink());
+      progress.finish();
+      ElasticSteinerSolver solver(*methodOptions.volumeMesh,
+                                  interiorSteinerVertices(*methodOptions.volumeMesh, cage.numVertices()));
+      std::vector<double> times;
+      for (int r = 0; r < std::max(3, repeat); ++r) {
+        const CliClock::time_point start = CliClock::now();
+        solver.factor(r % 2 == 0 ? 0.3 : 0.31);  // a new nu each time: factored again
+        times.push_back(1e3 * secondsSince(start));
+      }
+      volumeFactorMs.emplace_back(methodName(method) + "_factor_ms", median(times));
+      volumeFactorMs.emplace_back(methodName(method) + "_volume_vertices", methodOptions.volumeMesh->numVertices());
+    }
     ProgressReporter progress("precompute " + methodName(method));
     const std::unique_ptr<CageDeformer> other = somicage::precompute(
-        method, cage, points, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(log));
+        method, cage, points, methodOptions, options.text("--mesh"), progress.callback(), commandMemoryCheck(log));
     progress.finish();
     DeformParams params;
     params.nu = 0.3;
@@ -299,6 +322,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     out.field("deform_ms", deformMs);
     out.field("nu_update_ms", nuUpdateMs);
     out.field("bem_factor_ms", bemFactorMs);
+    for (const auto& [key, value] : volumeFactorMs) out.field(key, value);
     out.field("analyze_ms", analyzeMs);
     out.field("detj_updates_per_s", 1e3 / analyzeMs.back().second);
     out.field("editor_measure_ms", editorMeasureMs);
@@ -331,6 +355,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   std::printf("nu update         %.2f ms (a frame at a new nu: only the weights change)\n", nuUpdateMs);
   std::printf("bem factor        %.2f ms (the boundary matrix of %d unknowns, once per cage and nu)\n", bemFactorMs,
               cage.dim() * (cage.numFaces() + 1));
+  for (const auto& [key, value] : volumeFactorMs) std::printf("%-17s %.6g\n", key.c_str(), value);
   for (const auto& [name, ms] : analyzeMs)
     std::printf("det J %-11s %.2f ms (%.1f updates/s: positions, J, det J and distortion)\n", name.c_str(), ms,
                 1e3 / ms);

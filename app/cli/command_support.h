@@ -52,6 +52,15 @@ int threadsOption(const ArgParser& args);
 // The options of a precompute on that many threads (0: all cores), its integration's included.
 PrecomputeOptions precomputeOptions(int threads);
 
+// Every method's own precompute options (MethodDescriptor::options) as --KEY VALUE, with "; NAME only": part of
+// withDeformParams, for the commands that precompute without it (animate, bench).
+std::vector<OptionSpec> methodOptionSpecs();
+// The method options given (--KEY VALUE) in options.methodOptions, the CGAL tetrahedralization as the volume
+// mesher, and, for a method that needs a volume mesh, the mesh made now (engine.h: prepareVolumeMesh), its
+// notices sent to `notices`.
+void applyMethodOptions(const ArgParser& args, Method method, const Cage& cage, PrecomputeOptions& options,
+                        const NoticeSink& notices);
+
 // The memory check of the commands' precomputes (engine.h: precompute): the refusal's hint offers no float
 // storage (no command has that option), and when the precompute takes 1 GB or more, or 10% of the free memory or
 // more, "COMMAND: estimated memory: X of coordinates, Y in all (Z free)" is a status line (log.status) before it

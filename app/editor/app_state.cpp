@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "cage_tetrahedralization.h"
 #include "drop.h"
 #include "engine.h"
 #include "errors.h"
@@ -90,6 +91,7 @@ PrecomputeRequest deformerRequest(const AppState& state, std::vector<Method> met
   request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
   if (const FrameDevice* device = findFrameDevice(state.devices.offered, state.devices.active()))
     request.options.rowIntegrator = device->rowIntegrator;
+  request.options.volumeMesher = tetrahedralizeCageWithOptions;  // Phong's tetrahedra (CGAL, default level)
   return request;
 }
 

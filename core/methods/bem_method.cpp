@@ -217,6 +217,8 @@ const MethodDescriptor& bem() {
       3,
       kParamNu | kParamCorotational,
       false,
+      false,
+      {},
       validateBemParams,
       bemLayout,
       bemWorkingBytes,

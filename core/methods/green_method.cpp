@@ -145,6 +145,8 @@ const MethodDescriptor& green() {
                                            1,
                                            0,
                                            false,
+                                           false,
+                                           {},
                                            validateDeformParams,
                                            greenLayout,
                                            greenWorkingBytes,

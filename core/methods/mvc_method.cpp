@@ -78,6 +78,8 @@ const MethodDescriptor& mvc() {
                                            2,
                                            0,
                                            true,
+                                           false,
+                                           {},
                                            validateDeformParams,
                                            meanValueLayout,
                                            meanValueWorkingBytes,

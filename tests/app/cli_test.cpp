@@ -80,7 +80,7 @@ TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {
       {"blend above 1", deformArgs({"--blend", "1.5"}), "--blend: blend"},
       {"unknown method", deformArgs({"--method", "harmonic"}), "--method: unknown method 'harmonic'"},
       {"unknown variant", deformArgs({"--variant", "sideways"}),
-       "--variant: 'sideways' is not a choice (use global or local"},
+       "--variant: 'sideways' is not a choice (use global, local, affine or stable"},
       {"negative threads", deformArgs({"--threads", "-1"}), "--threads: -1 is out of range"},
       {"fractional threads", deformArgs({"--threads", "2.5"}), "--threads: '2.5' is not a whole number"},
       {"flag with a value", deformArgs({"--no-traction-fix=yes"}), "--no-traction-fix: takes no value"},
@@ -88,6 +88,41 @@ TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {
       {"stray argument", deformArgs({"extra.obj"}), "extra.obj: unexpected argument"},
       {"missing required option", {"deform", "--cage", dataFile("cube_cage.obj")}, "--posed: is missing"},
       {"check without cage", {"check", "--json"}, "--cage: is missing"},
+      {"phong at nu = inf", deformArgs({"--method", "phong", "--nu", "inf"}), "--nu: Poisson ratio inf leaves"},
+      {"unknown tetrahedral mesh level", deformArgs({"--method", "phong", "--tet-level", "7"}),
+       "--tet-level: '7' is not a tetrahedral mesh level"},
+  });
+}
+
+// --tets: a MEDIT file's problems name its line; a cage vertex out of place names the vertex and the distance.
+TEST(CliErrors, BadTetrahedralMeshesNameTheirLine) {
+  ScratchDir dir;
+  const std::string cage = dataFile("cube_cage.obj"), mesh = dataFile("pyramid_mesh.obj"), out = dir.file("out.obj");
+  const Cage cube = loadCage(cage);
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir.file(name)) << text;
+    return dir.file(name);
+  };
+  std::string vertices = "MeshVersionFormatted 2\nDimension 3\nVertices\n9\n";
+  for (int i = 0; i < 8; ++i) {
+    const double shift = i == 6 ? 0.5 : 0.0;  // vertex 7 (line 11) half a unit off
+    vertices += std::to_string(cube.vertices(i, 0) + shift) + " " + std::to_string(cube.vertices(i, 1)) + " " +
+                std::to_string(cube.vertices(i, 2)) + " 0\n";
+  }
+  const std::string moved = write("moved.mesh", vertices + "0 0 0 0\nTetrahedra\n1\n9 1 2 3 0\nEnd\n");
+  const std::string badIndex = write("bad.mesh",
+                                     "MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 0 0\n"
+                                     "Tetrahedra\n1\n1 1 1 2 0\nEnd\n");
+  const std::vector<std::string> phong = {"deform", "--cage", cage, "--posed",  cage,    "--mesh",
+                                          mesh,     "--out",  out,  "--method", "phong", "--tets"};
+  auto with = [&](const std::string& file) {
+    std::vector<std::string> args = phong;
+    args.push_back(file);
+    return args;
+  };
+  expectBadInput({
+      {"index out of range", with(badIndex), badIndex + ":8: index 4 of element 1 2 is outside [1, 1]"},
+      {"cage vertex moved", with(moved), moved + ":11: vertex 7 is"},
   });
 }
 

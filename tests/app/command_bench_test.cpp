@@ -26,6 +26,7 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
                                          "detj_updates_per_s", "gradient_precompute_s",
                                          "gradient_bytes",     "bem_factor_ms",
                                          "editor_measure_ms",  "editor_detj_updates_per_s",
+                                         "phong_factor_ms",    "phong_volume_vertices",
                                          "cpu_kernels"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
@@ -41,6 +42,9 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
   EXPECT_TRUE(json["deform_ms"].has("cpu_bem"));
   EXPECT_GT(json["bem_factor_ms"].number, 0);
+  EXPECT_TRUE(json["deform_ms"].has("cpu_phong"));
+  EXPECT_GT(json["phong_factor_ms"].number, 0);
+  EXPECT_EQ(json["phong_volume_vertices"].number, 9);  // the cube's star: its 8 corners and its centre
   EXPECT_GT(json["coord_bytes"].number, 0);
   EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
   ASSERT_EQ(json["analyze_ms"].type, Json::Type::Object);

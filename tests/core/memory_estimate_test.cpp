@@ -47,8 +47,9 @@ void forEachDeformer(double lo, double hi, Check check) {
         options.floatStorage = floatStorage;
         options.threads = 1;
         const std::unique_ptr<CageDeformer> deformer = makeDeformer(method, cage, points, options);
-        const std::size_t estimate = estimateCoordinateBytes(method, cage.dim(), cage.numVertices(), cage.numFaces(),
-                                                             points.rows(), floatStorage);
+        const int vertices = method->needsVolumeMesh ? volumeMeshFor(cage, options)->numVertices() : cage.numVertices();
+        const std::size_t estimate =
+            estimateCoordinateBytes(method, cage.dim(), vertices, cage.numFaces(), points.rows(), floatStorage);
         check(*deformer, estimate,
               methodName(method) + " " + std::to_string(cage.dim()) + "D " + (floatStorage ? "float" : "double"));
       }
@@ -89,10 +90,11 @@ TEST(MemoryEstimate, DoubleCopiesBeforeFloatStorageAreCounted) {
     const MemoryEstimate f = estimatePrecomputeMemory(method, 3, 49, 94, P, true, 2);
     EXPECT_GE(f.working, 2 * f.coordinates) << methodName(method);
   }
-  // Somigliana writes rows straight into C: its working memory is the diagnostics and the row buffers only.
+  // Somigliana writes rows straight into C: its working memory is the diagnostics and the row buffers only (the
+  // integrals: main block and the 18 affine terms); C's tail holds 10 sums, the 18 affine terms and [x | 1].
   const MemoryEstimate s = estimatePrecomputeMemory(methods::somigliana(), 3, 49, 94, P, true, 2);
-  EXPECT_EQ(s.working, 2 * P * sizeof(double) + 2 * (49 * 10 + 94 * 4) * sizeof(double));
-  EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 4) * sizeof(float));
+  EXPECT_EQ(s.working, 2 * P * sizeof(double) + 2 * (49 * 10 + 94 * 4 + 18) * sizeof(double));
+  EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 18 + 4) * sizeof(float));
 }
 
 TEST(MemoryEstimate, SeveralDeformersAddTheirCoordinatesNotTheirWorkingMemory) {

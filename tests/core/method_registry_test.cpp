@@ -54,7 +54,9 @@ TEST(MethodRegistry, EachLayoutIsTheShapeOfTheStoredCoordinates) {
     const Eigen::MatrixXd points = test::randomBoxPoints(11, cage.dim(), 0.2, 0.8, 3);
     for (Method method : allMethods()) {
       SCOPED_TRACE(methodName(method) + " " + std::to_string(cage.dim()) + "D");
-      const CoordinateLayout layout = coordinateLayout(method, cage);
+      // A volume method's vertices are its volume mesh's: here the cage's star (no mesher given).
+      const CoordinateLayout layout =
+          coordinateLayout(method, cage, method->needsVolumeMesh ? cage.numVertices() + 1 : -1);
       const std::unique_ptr<CageDeformer> deformer = makeDeformer(method, cage, points);
       EXPECT_EQ(deformer->method(), method);
       EXPECT_EQ(deformer->frameCoordinates().mainColumns, layout.mainColumns());

@@ -1,5 +1,6 @@
 // libFuzzer target: the OBJ loaders (core/obj_io.h) on arbitrary bytes, as `somicage deform` and the editor read
-// them: parse (loadMesh), turn into a cage (loadCage), read as a pose (loadPosedVertices).
+// them: parse (loadMesh), turn into a cage (loadCage), read as a pose (loadPosedVertices); and the same bytes as a
+// MEDIT volume mesh (core/medit_io.h, --tets), checked against the unit cube's cage (volume_mesh.h).
 // Contract: no crash and no sanitizer report; bad input throws InputError; what is accepted is well formed
 // (finite coordinates, indices in range).
 #include <cstdint>
@@ -9,6 +10,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "medit_io.h"
 #include "obj_io.h"
 
 namespace {
@@ -35,11 +37,45 @@ somicage::Cage squareCage() {
   return somicage::makePolygonCage(loop);
 }
 
+// The cube [0, 1]^3: the cage a fuzzed volume mesh is checked against (the seeds in tests/fuzz/corpus/medit).
+somicage::Cage cubeCage() {
+  somicage::Cage cube;
+  cube.vertices.resize(8, 3);
+  for (int i = 0; i < 8; ++i) cube.vertices.row(i) << (i & 1), (i & 2) >> 1, (i & 4) >> 2;
+  cube.faces.resize(12, 3);
+  cube.faces << 0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7,
+      5;
+  return cube;
+}
+
+void checkMedit(const std::string& text) {
+  somicage::MeditMesh read;
+  try {
+    read = somicage::parseMedit(text, "fuzz.mesh");
+  } catch (const somicage::InputError&) {
+    return;
+  }
+  const somicage::VolumeMesh& mesh = read.mesh;
+  require(mesh.vertices.allFinite(), "a parsed volume mesh has finite coordinates");
+  require(mesh.simplices.cols() == mesh.dim() + 1, "a simplex has d + 1 vertices");
+  require(mesh.simplices.minCoeff() >= 0 && mesh.simplices.maxCoeff() < mesh.numVertices(), "indices are in range");
+  require(read.source.simplexLines.size() == static_cast<std::size_t>(mesh.numSimplices()), "each simplex has a line");
+  somicage::VolumeMesh checked = mesh;
+  try {
+    somicage::checkVolumeMesh(checked, cubeCage(), read.source);
+  } catch (const somicage::InputError&) {
+    return;
+  }
+  for (int s = 0; s < checked.numSimplices(); ++s)
+    require(somicage::signedSimplexMeasure(checked, s) > 0, "an accepted volume mesh is positively oriented");
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   const std::string text(reinterpret_cast<const char*>(data), size);
   const std::string source = "fuzz.obj";
+  checkMedit(text);
 
   somicage::PolygonMesh mesh;
   try {

@@ -18,7 +18,7 @@ cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 # The seed inputs of each target (read only); what a run discovers goes to build-fuzz/corpus/TARGET.
 seeds_of() {
   case $1 in
-    fuzz_obj_loader) echo "-dict=tests/fuzz/obj.dict tests/data" ;;
+    fuzz_obj_loader) echo "-dict=tests/fuzz/obj.dict tests/data tests/fuzz/corpus/medit" ;;
     fuzz_session_loader) echo "-dict=tests/fuzz/session.dict tests/fuzz/corpus/session" ;;
     *) echo "" ;;
   esac
