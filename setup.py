@@ -1,6 +1,7 @@
 """Builds the somicage extension with the project's CMake (target somicage_python) for the running interpreter;
 the package metadata is in pyproject.toml. Environment: CMAKE_BUILD_PARALLEL_LEVEL (default: all cores),
-SOMICAGE_CMAKE_ARGS (extra -D options, e.g. -DSOMICAGE_NATIVE=OFF for a wheel that runs on other CPUs)."""
+SOMICAGE_CMAKE_ARGS (extra -D options). The module runs on any CPU of its architecture, with the AVX2/FMA kernels
+where the CPU has them; -DSOMICAGE_NATIVE=ON builds for this machine's CPU only (docs/performance.md)."""
 import os
 import pathlib
 import shlex

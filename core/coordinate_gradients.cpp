@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "affine_terms.h"
 #include "bem_layer_integrals.h"
 #include "dual_number.h"
 #include "edge_integrals.h"
@@ -63,7 +64,7 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
     PortableTriangleIntegralsOf<DualOf<3>> I;
     for (int j = 0; j < cage.numFaces(); ++j) {
       if (frames[j].degenerate) continue;
-      integrateTrianglePortable(frames[j].kernel, x, I);
+      integrateTriangle(frames[j], x, I);
       perFace(j, I);
     }
   } else {
@@ -77,13 +78,13 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
   }
 }
 
-// Rows laid out as `layout` (vertexTermCount(Dim) terms per vertex, no tail): the vertex terms of
-// somigliana_coordinates.h and, per face, writeFace(face, integrals, n) for the face block.
+// Rows laid out as `layout` (vertexTermCount(Dim) terms per vertex, then its tailIntegrals): the vertex terms of
+// somigliana_coordinates.h and, per face, writeFace(face block, integrals, n, tail integrals).
 template <int Dim, typename WriteFace>
 void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
                          const CoordinateLayout& layout, WriteFace writeFace, const GradientRowSink& sink) {
   const RowMatrixXd normals = faceNormals(cage, cage.vertices);  // row-major: rows as pointers
-  const int columns = layout.mainColumns(), stride = layout.numVertices;
+  const int columns = layout.integralColumns(), stride = layout.numVertices;
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
   forEachPointInBlocks(
       static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
@@ -111,20 +112,21 @@ void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
               t[2 * stride] += I.B[k][0][0], t[3 * stride] += I.B[k][1][1], t[4 * stride] += I.B[k][0][1];
             }
           }
-          writeFace(row + layout.faceColumn(j, 0), I, n);
+          writeFace(row + layout.faceColumn(j, 0), I, n, row + layout.mainColumns());
         });
         buffers.emit(p, sink);
       });
 }
 
-// Somigliana's face terms S_j and q_j = M_j n_j (somigliana_coordinates.h).
+// Somigliana's face terms S_j and q_j = M_j n_j, and the affine terms (somigliana_coordinates.h).
 template <int Dim>
 void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
                          const GradientRowSink& sink) {
-  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double* n) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double* n, DualOf<Dim>* affine) {
     f[0] += I.S;
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
+    addAffineTerms<Dim>(I.M, n, affine);
   };
   const CoordinateLayout layout = somiglianaLayout(Dim, cage.numVertices(), cage.numFaces());
   vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
@@ -134,7 +136,7 @@ void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
 template <int Dim>
 void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
                        const GradientRowSink& sink) {
-  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double*) {
+  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double*, DualOf<Dim>*) {
     f[0] = I.S;
     if constexpr (Dim == 3)
       f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[2][2], f[4] = I.M[0][1], f[5] = I.M[0][2], f[6] = I.M[1][2];

@@ -6,6 +6,8 @@
 //                                                reads in one pass: e.g. only the antisymmetric terms for A)
 //   face j, term k:    column #V * vertexTerms + j * faceTerms + k
 //   tail column k:     column mainColumns() + k (per-point numbers such as [x | 1], see the method)
+// An integrator writes a point's main block followed by its tailIntegrals (per-point integrals that belong to no
+// single vertex or face): integralColumns() numbers; the method places them in its tail.
 #pragma once
 
 #include <Eigen/Core>
@@ -22,10 +24,12 @@ struct CoordinateLayout {
   int vertexTerms = 0;  // numbers per cage vertex
   int faceTerms = 0;    // numbers per cage face
   int tailColumns = 0;  // numbers per point after the vertex and face blocks
+  int tailIntegrals = 0;  // of them, integrals the integrator writes after the main block (Somigliana's affine terms)
 
   int vertexColumns() const { return numVertices * vertexTerms; }
   int mainColumns() const { return vertexColumns() + numFaces * faceTerms; }  // K_main of frame_evaluation.h
   int columns() const { return mainColumns() + tailColumns; }
+  int integralColumns() const { return mainColumns() + tailIntegrals; }  // an integrator's row
   int vertexColumn(int i, int k) const { return k * numVertices + i; }
   int faceColumn(int j, int k) const { return vertexColumns() + j * faceTerms + k; }
   int tailColumn(int k) const { return mainColumns() + k; }

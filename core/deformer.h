@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cage.h"
+#include "deform_choices.h"
 #include "exterior_points.h"
 #include "frame_evaluation.h"
 #include "integration_options.h"
@@ -18,6 +19,13 @@
 
 namespace somicage {
 
+// Which boundary conditions the Somigliana deformer builds (docs/engine.md, "Variants beyond the paper").
+enum class VariantKind {
+  Blend,   // the paper's: rotations blended from the global (blend 0) to the local (blend 1) variant (Fig. 4)
+  Affine,  // the global variant with the best-fit affine map A = R S: tractions R sigma(S) n_j (blend ignored)
+  Stable,  // the local variant without its fold-overs at high nu (blend ignored)
+};
+
 // Run-time parameters. Green and mean value coordinates ignore all but the posed cage.
 struct DeformParams {
   double blend = 0.0;              // t in [0, 1]: 0 = global variant, 1 = local variant (Fig. 4)
@@ -25,8 +33,14 @@ struct DeformParams {
   double gamma = 0.0;              // bulging scale >= 0 (section 4.4)
   bool tractionCorrection = true;  // Eq. 15
   bool corotational = false;       // BEM only: remove the best-fit rotation before the linear solve (bem_method.cpp)
+  Bulging bulging = Bulging::SolidAngle;        // how eta grows with gamma (deform_choices.h)
+  NormalWeights normals = NormalWeights::Area;  // vertex normals' and vertex rotations' face weights
+  VariantKind kind = VariantKind::Blend;        // set with blend by the variant's name (variants.h)
 };
 
+// Every field equal (numbers exactly).
+bool operator==(const DeformParams& a, const DeformParams& b);
+inline bool operator!=(const DeformParams& a, const DeformParams& b) { return !(a == b); }
 // The ranges validateDeformParams accepts: the one list every front end shows or checks (the CLI's help, the
 // editor's options and sliders, Python's somicage.parameter_ranges(), the Blender add-on through it).
 struct ParameterRange {

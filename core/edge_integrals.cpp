@@ -3,6 +3,7 @@
 #include <cmath>
 #include <vector>
 
+#include "cpu_dispatch.h"
 #include "dual_eigen.h"
 
 namespace somicage {
@@ -179,9 +180,11 @@ void toEigen(const EdgeIntegralsOf<double>& I, EdgeIntegrals& out) {
 
 }  // namespace
 
+namespace {
+
 template <typename Scalar>
-void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
-                     EdgeIntegralsOf<Scalar>& out) {
+void integrateEdgePoint(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
+                        EdgeIntegralsOf<Scalar>& out) {
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
   if (l == 0) return integrateEdgeLocalOf<Scalar>(p0, p1, Scalar(0), Scalar(0), out);
@@ -192,10 +195,18 @@ void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const
   integrateEdgeLocalOf<Scalar>(p0, p1, d.dot(tau), d.dot(n), out);
 }
 
-template void integrateEdgeOf<double>(const Eigen::Vector2d&, const Eigen::Vector2d&, const double[2],
-                                      EdgeIntegralsOf<double>&);
-template void integrateEdgeOf<dual::Dual<2>>(const Eigen::Vector2d&, const Eigen::Vector2d&, const dual::Dual<2>[2],
-                                             EdgeIntegralsOf<dual::Dual<2>>&);
+}  // namespace
+
+// The 2D kernels, dispatched (cpu_dispatch.h): each call is one point and one edge.
+SOMICAGE_DISPATCH void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const double x[2],
+                                       EdgeIntegralsOf<double>& out) {
+  integrateEdgePoint(p0, p1, x, out);
+}
+
+SOMICAGE_DISPATCH void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const dual::Dual<2> x[2],
+                                       EdgeIntegralsOf<dual::Dual<2>>& out) {
+  integrateEdgePoint(p0, p1, x, out);
+}
 
 void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out) {
   EdgeIntegralsOf<double> I;
@@ -204,8 +215,8 @@ void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const E
   toEigen(I, out);
 }
 
-void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& onEdge,
-                                EdgeIntegrals& out) {
+SOMICAGE_DISPATCH void integrateEdgeInteriorLimit(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1,
+                                                  const Eigen::Vector2d& onEdge, EdgeIntegrals& out) {
   const Eigen::Vector2d e = p1 - p0;
   const double l = e.norm();
   EdgeIntegralsOf<double> I;

@@ -7,6 +7,8 @@
 
 #include <Eigen/Core>
 
+#include "dual_number.h"
+
 namespace somicage {
 
 struct EdgeIntegrals {
@@ -19,14 +21,16 @@ struct EdgeIntegrals {
 };
 
 // The same integrals as plain arrays, for x given as doubles or as dual numbers (dual_number.h: then every output
-// carries its exact gradient with respect to x). Instantiated for double and dual::Dual<2>.
+// carries its exact gradient with respect to x). Two functions, not a template, so that each is dispatched
+// (cpu_dispatch.h).
 template <typename Scalar>
 struct EdgeIntegralsOf {
   Scalar S, M[2][2], D[2], A[2], B[2][2][2], angle;
 };
-template <typename Scalar>
-void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Scalar x[2],
-                     EdgeIntegralsOf<Scalar>& out);
+void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const double x[2],
+                     EdgeIntegralsOf<double>& out);
+void integrateEdgeOf(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const dual::Dual<2> x[2],
+                     EdgeIntegralsOf<dual::Dual<2>>& out);
 
 // Closed form, double precision, valid for any x not on the edge.
 void integrateEdge(const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& x, EdgeIntegrals& out);

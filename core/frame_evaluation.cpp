@@ -6,6 +6,7 @@
 #include <cstring>
 #include <vector>
 
+#include "cpu_dispatch.h"
 #include "errors.h"
 #include "frame_point_kernel.h"
 
@@ -46,6 +47,7 @@ struct PreparedWeights {
   int mainColumns, tailColumns, outputs;
   std::vector<Scalar> mainRows;  // (outputs) rows of mainColumns, zero for outputs before mainOffset
   Eigen::MatrixXd tail;          // tailColumns by outputs, in double: the tail is a handful of columns
+  std::vector<int> tailRows;     // the tail columns whose W row is not zero (the affine terms only in that variant)
   std::vector<Group> groups;
   int steps = 0;                 // SIMD steps of all the groups' passes over one block
   double origin[3] = {0, 0, 0};  // FrameWeights::origin
@@ -53,6 +55,8 @@ struct PreparedWeights {
   PreparedWeights(const FrameWeights& W, int mainColumns_)
       : mainColumns(mainColumns_), tailColumns(static_cast<int>(W.tail.rows())), outputs(W.outputs), tail(W.tail) {
     for (int a = 0; a < 3 && a < W.origin.size(); ++a) origin[a] = W.origin(a);
+    for (int k = 0; k < tailColumns; ++k)
+      if (!W.tail.row(k).isZero(0)) tailRows.push_back(k);
     mainRows.assign(static_cast<size_t>(outputs) * mainColumns, Scalar(0));
     for (int o = W.mainOffset; o < outputs; ++o)
       for (int k = 0; k < mainColumns; ++k)
@@ -75,7 +79,7 @@ struct PreparedWeights {
   const Scalar* row(int output) const { return mainRows.data() + static_cast<size_t>(output) * mainColumns; }
 };
 
-// A 32-byte SIMD vector of Scalar (GCC/Clang vector extensions: one AVX2 register where the build targets AVX2,
+// A 32-byte SIMD vector of Scalar (GCC/Clang vector extensions: one AVX2 register in the x86-64-v3 copy,
 // two SSE halves otherwise). This file is compiled with -ffp-contract=fast, so `sum += c * w` is one FMA.
 template <typename Scalar>
 struct Simd {
@@ -160,12 +164,31 @@ void outputsOfRows(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scal
       for (int j = 0; j < g.count; ++j) y[r][o + j] += sums[r][j];
   }
   for (int r = 0; r < Rows; ++r) {
-    for (int k = 0; k < W.tailColumns; ++k) {
+    for (int k : W.tailRows) {
       const double ck = static_cast<double>(rows[r][W.mainColumns + k]);
       if (ck != 0)
         for (int o = 0; o < W.outputs; ++o) y[r][o] += ck * W.tail(k, o);
     }
   }
+}
+
+// A block of `rows` points from `first` on (kBlockRows, or 1 for the last few): the frame's hot loop, dispatched
+// (cpu_dispatch.h), for float and for double storage.
+template <typename Scalar>
+void outputsOfBlock(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& W, int first, int rows,
+                    double (*y)[kMaxOutputs]) {
+  if (rows == kBlockRows)
+    outputsOfRows<Scalar, kBlockRows>(C, W, first, y);
+  else
+    outputsOfRows<Scalar, 1>(C, W, first, y);
+}
+SOMICAGE_DISPATCH void dispatchedOutputsOfBlock(const CoordinateMatrix<float>& C, const PreparedWeights<float>& W,
+                                                int first, int rows, double (*y)[kMaxOutputs]) {
+  outputsOfBlock(C, W, first, rows, y);
+}
+SOMICAGE_DISPATCH void dispatchedOutputsOfBlock(const CoordinateMatrix<double>& C, const PreparedWeights<double>& W,
+                                                int first, int rows, double (*y)[kMaxOutputs]) {
+  outputsOfBlock(C, W, first, rows, y);
 }
 
 template <typename Scalar, int Dim>
@@ -175,13 +198,13 @@ void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& 
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
-    outputsOfRows<Scalar, kBlockRows>(C, W, b * kBlockRows, y);
+    dispatchedOutputsOfBlock(C, W, b * kBlockRows, kBlockRows, y);
     for (int r = 0; r < kBlockRows; ++r)
       finishFramePoint<Dim>(y[r], W.outputs, W.origin, out.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
-    outputsOfRows<Scalar, 1>(C, W, p, y);
+    dispatchedOutputsOfBlock(C, W, p, 1, y);
     finishFramePoint<Dim>(y[0], W.outputs, W.origin, out.row(p).data());
   }
 }
@@ -210,12 +233,12 @@ void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const F
 #pragma omp parallel for schedule(static, 64) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int b = 0; b < numBlocks; ++b) {
     double y[kBlockRows][kMaxOutputs] = {};
-    outputsOfRows<Scalar, kBlockRows>(C, prepared, b * kBlockRows, y);
+    dispatchedOutputsOfBlock(C, prepared, b * kBlockRows, kBlockRows, y);
     for (int r = 0; r < kBlockRows; ++r) std::copy(y[r], y[r] + W.outputs, rows.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
-    outputsOfRows<Scalar, 1>(C, prepared, p, y);
+    dispatchedOutputsOfBlock(C, prepared, p, 1, y);
     std::copy(y[0], y[0] + W.outputs, rows.row(p).data());
   }
 }

@@ -18,7 +18,7 @@ struct IntegrationOptions {
   int threads = 0;              // OpenMP threads; 0 = the OpenMP default
 };
 
-// Receives each point's row of the main block of C (coordinate_layout.h: CoordinateLayout::mainColumns()
+// Receives each point's row of the integrals of C (coordinate_layout.h: CoordinateLayout::integralColumns()
 // numbers, in that layout) and its generalised winding number. Called from worker threads, once per point: it
 // may write per-point storage without locking. The row buffer is reused after the call returns.
 using CoordinateRowSink = std::function<void(int point, const double* row, double winding)>;

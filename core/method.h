@@ -28,6 +28,8 @@ enum DeformParameter : unsigned {
   kParamGamma = 1u << 2,         // gamma
   kParamTractionFix = 1u << 3,   // tractionCorrection
   kParamCorotational = 1u << 4,  // corotational
+  kParamBulging = 1u << 5,       // bulging (deform_choices.h)
+  kParamNormals = 1u << 6,       // normals (deform_choices.h)
 };
 
 // A precompute option of a method's own (MethodDescriptor::options): text in PrecomputeOptions::methodOptions

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "deform_choices_json.h"
 #include "errors.h"
 
 namespace somicage {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <limits>
 
+#include "deform_choices_json.h"
 #include "errors.h"
 #include "file_util.h"
 #include "json.h"
@@ -149,7 +150,7 @@ struct Reader {
       if (v.find("tractionCorrection")) view.tractionCorrection = boolean(v, "tractionCorrection");
       if (v.find("variant")) {
         view.variant = findVariant(string(v, "variant"));
-        if (!view.variant) fail("field \"variant\" must be \"global\" or \"local\"");
+        if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
       }
       validateViewSpec(view, source);
     } catch (const InputError& e) {
@@ -192,6 +193,7 @@ std::string sessionToJson(const Session& s) {
   params.set("gamma", JsonValue::number(s.params.gamma));
   params.set("tractionCorrection", JsonValue::boolean(s.params.tractionCorrection));
   params.set("corotational", JsonValue::boolean(s.params.corotational));
+  writeChoices(s.params, params);
   root.set("params", std::move(params));
   root.set("compare", JsonValue::boolean(s.compare));
   JsonValue methods = JsonValue::array(), views = JsonValue::array();
@@ -249,6 +251,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
   // BEM's option; sessions saved before it existed do not have it (off).
   s.params.corotational = params.find("corotational") != nullptr && r.boolean(params, "corotational");
+  readChoices(params, s.params, source);  // "bulging", "normals": absent in sessions saved before them
   try {
     validateDeformParams(s.params);
   } catch (const InputError& e) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <vector>
 
+#include "affine_terms.h"
 #include "edge_integrals.h"
 #include "errors.h"
 #include "kelvin_kernels.h"
@@ -40,7 +41,8 @@ Eigen::MatrixXd assembleVertexCoordinate(const double* t, int dim, double nu) {
 }
 
 CoordinateLayout somiglianaLayout(int dim, int numVertices, int numFaces) {
-  return {numVertices, numFaces, vertexTermCount(dim), faceTermCount(dim), vertexTermCount(dim) + dim + 1};
+  return {numVertices, numFaces, vertexTermCount(dim), faceTermCount(dim),
+          vertexTermCount(dim) + affineTermCount(dim) + dim + 1, affineTermCount(dim)};
 }
 
 void gatherVertexTerms(const CoordinateLayout& layout, const double* row, int i, double* terms) {
@@ -110,13 +112,17 @@ void addVertexTerms(const EdgeIntegrals& I, const int ends[2], const CoordinateL
 
 namespace {
 
-// Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; in the layout of C).
+// Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; in the layout of C), its
+// affine terms after the main block.
 void accumulateTriangle(const TriangleIntegrals& I, const Eigen::Vector3d& n, const int corners[3],
                         const CoordinateLayout& layout, int face, double* row, double& solidAngleSum) {
   addVertexTerms(I, n, corners, layout, row);
   double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector3d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y(), f[3] += q.z();
+  const double M[3][3] = {{I.M(0, 0), I.M(0, 1), I.M(0, 2)}, {I.M(1, 0), I.M(1, 1), I.M(1, 2)},
+                          {I.M(2, 0), I.M(2, 1), I.M(2, 2)}};
+  addAffineTerms<3>(M, n.data(), row + layout.mainColumns());
   solidAngleSum += I.solidAngle;
 }
 
@@ -126,6 +132,8 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
   double* f = row + layout.faceColumn(face, 0);
   const Eigen::Vector2d q = I.M * n;
   f[0] += I.S, f[1] += q.x(), f[2] += q.y();
+  const double M[2][2] = {{I.M(0, 0), I.M(0, 1)}, {I.M(1, 0), I.M(1, 1)}};
+  addAffineTerms<2>(M, n.data(), row + layout.mainColumns());
   angleSum += I.angle;
 }
 
@@ -139,7 +147,7 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
   const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
   const int numPoints = static_cast<int>(points.rows());
   const CoordinateLayout layout = somiglianaLayout(dim, cage.numVertices(), cage.numFaces());
-  const int columns = layout.mainColumns();
+  const int columns = layout.integralColumns();
   std::vector<TriangleFrame> frames;
   if (dim == 3) {
     frames.reserve(cage.numFaces());

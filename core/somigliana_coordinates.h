@@ -27,6 +27,10 @@ namespace somicage {
 //   2D vertex (5):  D, A01 (A = [[0, A01], [-A01, 0]]), B (xx, yy, xy);             face (3): S, q (2).
 constexpr int vertexTermCount(int dim) { return 1 + dim * dim; }
 constexpr int faceTermCount(int dim) { return 1 + dim; }
+// Per point, for the affine variant's tractions M_j sigma n_j with one symmetric sigma (somigliana_method.cpp): the
+// sums P_a,(bc) = sum_j (M_j)_ab (n_j)_c + (M_j)_ac (n_j)_b (b != c; once for b = c) over the faces, for every
+// output a and pair bc in B's order (3D: xx, yy, zz, xy, xz, yz; 2D: xx, yy, xy), output-major. 18 (3D) or 6 (2D).
+constexpr int affineTermCount(int dim) { return dim * dim * (dim + 1) / 2; }
 
 struct NuCoefficients {
   double alpha, beta, k1, k2;
@@ -39,8 +43,8 @@ Eigen::MatrixXd assembleVertexCoordinate(const double* terms, int dim, double nu
 // max |sum_i T_i - I| at nu = 0, from the sums over i of the vertex terms (vertexTermCount(dim) numbers).
 double unityResidualOfSums(const double* termSums, int dim);
 
-// The Somigliana layout of C: these terms per vertex and per face, then the tail the deformer adds to every row:
-// the per-point sums over the vertices of the vertex terms, [x | 1] (somigliana_method.cpp).
+// The Somigliana layout of C: these terms per vertex and per face, then the tail: the per-point sums over the
+// vertices of the vertex terms, the affine terms (the integrator's tailIntegrals), [x | 1] (somigliana_method.cpp).
 CoordinateLayout somiglianaLayout(int dim, int numVertices, int numFaces);
 
 // The terms of vertex i gathered from a row laid out as C (vertexTermCount(dim) numbers into terms).
@@ -49,7 +53,7 @@ void gatherVertexTerms(const CoordinateLayout& layout, const double* row, int i,
 struct SomiglianaCoordinates {
   int dim = 3;
   CoordinateLayout layout;  // somiglianaLayout
-  // #P by layout.mainColumns(), in the layout of C.
+  // #P by layout.mainColumns(), in the layout of C (the affine terms are the deformer's only).
   RowMatrixXd values;
   // Unit outward normals n_j of the rest cage (#F by d), which K_j is applied to.
   Eigen::MatrixXd restNormals;

@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "cage.h"
+#include "cpu_dispatch.h"
 
 namespace somicage {
 
@@ -99,18 +100,25 @@ void toEigen(const PortableTriangleIntegrals& I, TriangleIntegrals& out) {
 
 }  // namespace
 
-void integrateTriangle(const TriangleFrame& f, const Eigen::Vector3d& x, TriangleIntegrals& out) {
+// The precompute's kernels, dispatched (cpu_dispatch.h): each call is one point and one face.
+SOMICAGE_DISPATCH void integrateTriangle(const TriangleFrame& f, const Eigen::Vector3d& x, TriangleIntegrals& out) {
   PortableTriangleIntegrals I;
   const double point[3] = {x.x(), x.y(), x.z()};
   integrateTrianglePortable(f.kernel, point, I);
   toEigen(I, out);
 }
 
-void integrateTriangleInteriorLimit(const TriangleFrame& f, const Eigen::Vector3d& onFace, TriangleIntegrals& out) {
+SOMICAGE_DISPATCH void integrateTriangleInteriorLimit(const TriangleFrame& f, const Eigen::Vector3d& onFace,
+                                                      TriangleIntegrals& out) {
   PortableTriangleIntegrals I;
   const Eigen::Vector3d rel = onFace - f.origin;
   integrateTriangleLocalPortable(f.kernel, rel.dot(f.u), rel.dot(f.v), -0.0, I);
   toEigen(I, out);
+}
+
+SOMICAGE_DISPATCH void integrateTriangle(const TriangleFrame& f, const dual::Dual<3> x[3],
+                                         PortableTriangleIntegralsOf<dual::Dual<3>>& out) {
+  integrateTrianglePortable(f.kernel, x, out);
 }
 
 }  // namespace somicage

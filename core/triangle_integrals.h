@@ -8,6 +8,7 @@
 
 #include <Eigen/Core>
 
+#include "dual_number.h"
 #include "triangle_integrals_kernel.h"
 
 namespace somicage {
@@ -53,6 +54,11 @@ TriangleFrame makeTriangleFrame(const Eigen::Vector3d& p0, const Eigen::Vector3d
 // from an edge or vertex (the conditioning of the integrals themselves), and for a face D diameters away an
 // error that is small in absolute terms but grows like eps (D / h_min)^3 relative to the face's own integrals.
 void integrateTriangle(const TriangleFrame& frame, const Eigen::Vector3d& x, TriangleIntegrals& out);
+
+// The same in dual numbers seeded with the unit vectors: every output carries its exact gradient with respect to x
+// (coordinate_gradients.h). A function of its own, not the template, so that it is dispatched (cpu_dispatch.h).
+void integrateTriangle(const TriangleFrame& frame, const dual::Dual<3> x[3],
+                       PortableTriangleIntegralsOf<dual::Dual<3>>& out);
 
 // The limit of integrateTriangle as x tends to the point `onFace` of the face (strictly inside it; it is projected
 // onto the face's plane) from the inside of the cage, h -> 0-: the closed form with h = -0 (exact, no quadrature).

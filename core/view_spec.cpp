@@ -21,7 +21,11 @@ DeformParams ViewSpec::params(const DeformParams& shared) const {
   DeformParams p = shared;
   if (nu) p.nu = *nu;
   if (gamma) p.gamma = *gamma;
-  if (variant) p.blend = *variant == Variant::Local ? 1.0 : 0.0;
+  if (variant) {
+    const VariantChoice& v = variantChoices()[static_cast<std::size_t>(*variant)];
+    p.kind = static_cast<VariantKind>(v.kind);
+    p.blend = v.blend;
+  }
   if (tractionCorrection) p.tractionCorrection = *tractionCorrection;
   return p;
 }
@@ -46,11 +50,11 @@ ViewSpec withMethod(ViewSpec view, Method m) {
   return view;
 }
 
-const char* variantName(Variant variant) { return variant == Variant::Local ? "local" : "global"; }
+const char* variantName(Variant variant) { return variantChoices()[static_cast<std::size_t>(variant)].name; }
 
 std::optional<Variant> findVariant(const std::string& name) {
-  if (name == "global") return Variant::Global;
-  if (name == "local") return Variant::Local;
+  if (const VariantChoice* v = somicage::findVariant(name))
+    return static_cast<Variant>(v - variantChoices().data());
   return std::nullopt;
 }
 
@@ -110,7 +114,7 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
       once(view.variant.has_value());
       view.variant = findVariant(value);
       if (!view.variant)
-        throw InputError(option, -1, "variant must be global or local, got '" + value + "'", kViewHint);
+        throw InputError(option, -1, "variant must be " + variantNameList() + ", got '" + value + "'", kViewHint);
     } else if (key == "traction") {
       once(view.tractionCorrection.has_value());
       if (value != "on" && value != "off")

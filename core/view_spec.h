@@ -12,7 +12,7 @@
 
 namespace somicage {
 
-enum class Variant { Global, Local };  // blend 0 / 1 (Fig. 4)
+enum class Variant { Global, Local, Affine, Stable };  // core's variantChoices(), in its order
 
 struct ViewSpec {
   Method method;
@@ -37,11 +37,11 @@ ViewSpec withMethod(ViewSpec view, Method m);
 // resolved parameters) or the view sets a parameter its method does not read ("green does not read nu").
 void validateViewSpec(const ViewSpec& view, const std::string& option);
 
-// "METHOD[:nu=X][:gamma=Y][:variant=global|local][:traction=on|off]" (--view). Throws InputError(option, ...)
+// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]" (--view). Throws InputError(option, ...)
 // naming what is wrong: an unknown method or key, a repeated key, a bad value.
 ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 
-const char* variantName(Variant variant);  // "global", "local"
+const char* variantName(Variant variant);  // "global", "local", "affine", "stable"
 std::optional<Variant> findVariant(const std::string& name);
 
 }  // namespace somicage

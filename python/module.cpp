@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <variant>
 
+#include "cpu_dispatch.h"
 #include "errors.h"
 #include "mesh_formats.h"
 #include "numpy_arrays.h"
@@ -70,12 +71,30 @@ py::dict methodInfo(Method method) {
   std::vector<std::string> parameters;
   for (const ParameterKeyword& k : kParameterKeywords)
     if (readsParameter(method, k.parameter)) parameters.emplace_back(k.keyword);
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (readsParameter(method, choice.parameter)) parameters.emplace_back(choice.name);
   py::dict info;
   info["name"] = method->name;
   info["display_name"] = method->displayName;
   info["description"] = method->description;
   info["parameters"] = parameters;
   return info;
+}
+
+// The choice parameters (deform_choices.h) as a list of dicts, for front ends that build menus from them
+// (Blender): name, description, and values as (name, description) pairs, the default first.
+py::list choiceInfo() {
+  py::list list;
+  for (const ChoiceParameter& choice : choiceParameters()) {
+    py::list values;
+    for (const ChoiceValue& value : choice.values) values.append(py::make_tuple(value.name, value.description));
+    py::dict entry;
+    entry["name"] = choice.name;
+    entry["description"] = choice.description;
+    entry["values"] = values;
+    list.append(entry);
+  }
+  return list;
 }
 
 void defineCage(py::module_& module) {
@@ -123,10 +142,11 @@ const std::string& deformDoc() {
       "The deformed points (P, d) float64 (Fortran order, no copy) for the cage's vertices moved to posed (V, d). "
       "nu: Poisson ratio in " +
       rangeText(kNuRange, true) + " or +-inf; gamma in " + rangeText(kGammaRange) +
-      ": bulging; variant: global or local; blend in " + rangeText(kBlendRange) +
+      ": bulging; variant: global, local, affine or stable; blend in " + rangeText(kBlendRange) +
       " overrides variant (somicage.parameter_ranges() has them all); traction_fix: Eq. 15; corotational: bem "
-      "only, removes the best-fit rotation before the linear-elastic solve. Green and mvc ignore all but posed; "
-      "bem reads nu and corotational.";
+      "only, removes the best-fit rotation before the linear-elastic solve; bulging: solid-angle (the paper's text), "
+      "reference (the authors' code: gamma squared) or swept-volume; normals: area or angle. Green and mvc ignore "
+      "all but posed; bem reads nu and corotational.";
   return doc;
 }
 
@@ -145,25 +165,28 @@ void defineDeformer(py::module_& module) {
       .def(
           "deform",
           [](const PythonDeformer& deformer, const ArrayArgument& posed, double nu, double gamma,
-             const std::string& variant, std::optional<double> blend, bool tractionFix, bool corotational) {
-            return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix, corotational});
+             const std::string& variant, std::optional<double> blend, bool tractionFix, bool corotational,
+             const std::string& bulging, const std::string& normals) {
+            return deformer.deform(posed, {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}});
           },
           py::arg("posed"), py::kw_only(), py::arg("nu") = 0.0, py::arg("gamma") = 0.0, py::arg("variant") = "global",
           py::arg("blend") = py::none(), py::arg("traction_fix") = true, py::arg("corotational") = false,
-          deformDoc().c_str())
+          py::arg("bulging") = "solid-angle", py::arg("normals") = "area", deformDoc().c_str())
       .def(
           "analyze",
           [](const PythonDeformer& deformer, const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
              double nu, double gamma, const std::string& variant, std::optional<double> blend, bool tractionFix,
              bool corotational, const std::optional<std::tuple<double, double, int>>& nuSweep,
-             const ProgressArgument& progress) {
-            return deformer.analyze(posed, faces, {nu, gamma, variant, blend, tractionFix, corotational}, nuSweep,
+             const ProgressArgument& progress, const std::string& bulging, const std::string& normals) {
+            return deformer.analyze(posed, faces,
+                                    {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}}, nuSweep,
                                     progress);
           },
           py::arg("posed"), py::arg("faces") = std::vector<std::vector<int>>{}, py::kw_only(), py::arg("nu") = 0.0,
           py::arg("gamma") = 0.0, py::arg("variant") = "global", py::arg("blend") = py::none(),
           py::arg("traction_fix") = true, py::arg("corotational") = false, py::arg("nu_sweep") = py::none(),
           py::arg("progress") = py::none(),
+          py::arg("bulging") = "solid-angle", py::arg("normals") = "area",
           "The numbers of `somicage analyze --json` for the cage's vertices moved to posed, as a dict with its keys: "
           "volume change of the mesh faces (0-based index lists over the points; None when open, "
           "volume_change_capped then), det J, conformal distortion and area ratio quantiles, fold-overs; "
@@ -195,6 +218,7 @@ PYBIND11_MODULE(_somicage, module) {
       "Cage deformation with Somigliana coordinates and the other methods of somicage.methods() (SomiCage's "
       "engine).";
   module.attr("__version__") = SOMICAGE_VERSION;
+  module.attr("cpu_kernels") = dispatchedKernelTarget();
   registerErrors(module);
   defineCage(module);
   defineDeformer(module);
@@ -216,6 +240,9 @@ PYBIND11_MODULE(_somicage, module) {
       },
       "One dict per method, in the order of methods(): name, display_name, description and parameters (the "
       "keyword arguments of Deformer.deform it reads; it ignores the others).");
+  module.def("choice_info", &choiceInfo,
+             "One dict per keyword of Deformer.deform that takes a name (bulging, normals): name, description and "
+             "values, a list of (name, description) with the default first.");
   module.def(
       "parameter_ranges", [] { return parameterRanges(); },
       "{keyword: (min, max)} of Deformer.deform's numbers and Deformer's threads, from the engine's one list "

@@ -23,13 +23,15 @@ Method methodArgument(const std::string& name) {
 
 DeformParams deformParams(const PythonDeformOptions& options) {
   DeformParams params;
-  if (options.variant != "global" && options.variant != "local")
-    throw InputError("variant", -1, "'" + options.variant + "' is not a choice", "use global or local");
-  params.blend = options.blend.value_or(options.variant == "local" ? 1.0 : 0.0);
+  setVariant(params, options.variant, "variant");
+  if (options.blend) params.blend = *options.blend;
   params.nu = options.nu;
   params.gamma = options.gamma;
   params.tractionCorrection = options.tractionFix;
   params.corotational = options.corotational;
+  const std::vector<ChoiceParameter>& choices = choiceParameters();
+  for (std::size_t k = 0; k < options.choices.size() && k < choices.size(); ++k)
+    choices[k].set(params, parseChoice(choices[k], options.choices[k], choices[k].name));
   return params;
 }
 

@@ -29,6 +29,7 @@ struct PythonDeformOptions {
   std::optional<double> blend;  // overrides variant
   bool tractionFix = true;
   bool corotational = false;  // bem: remove the best-fit rotation before the linear solve
+  std::vector<std::string> choices;  // a value name per choiceParameters() (bulging, normals); empty: defaults
 };
 
 class PythonDeformer {

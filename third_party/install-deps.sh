@@ -16,6 +16,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-setuptools  # the Python module and its tests
   python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (docs/python.md)
   python3-matplotlib  # tools/figures.sh: the gallery's plots (it brings python3-pil, which stitches the images)
+  qemu-user  # the portable build's test on an emulated CPU without AVX (qemu-x86_64 -cpu Nehalem)
   blender  # headless tests: the add-on (~55 MB download with blender-data; Debian's 3.4 runs /usr/bin/python3) and the GLB import
 )
 

@@ -142,6 +142,14 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   if (json) {
     JsonObjectWriter out(std::cout);
     out.field("method", methodName(method));
+    if (readsParameter(method, kParamBlend)) {
+      out.field("variant", variantName(params));
+      out.field("blend", params.blend);
+    }
+    if (readsParameter(method, kParamGamma)) out.field("gamma", params.gamma);
+    for (const ChoiceParameter& choice : choiceParameters())
+      if (readsParameter(method, choice.parameter))
+        out.field(choice.name, choice.values[static_cast<std::size_t>(choice.get(params))].name);
     out.field("dimension", cage.dim());
     out.field("vertices", static_cast<int>(points.rows()));
     // An open mesh encloses no volume: null, and the estimate with its holes capped (deformation_quantities.h).

@@ -17,6 +17,7 @@
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
+#include "cpu_dispatch.h"
 #include "deformation_analysis.h"
 #include "deformation_quantities.h"
 #include "elastic_steiner_solve.h"
@@ -312,6 +313,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     out.field("cage_vertices", cage.numVertices());
     out.field("cage_faces", cage.numFaces());
     out.field("threads", usedThreads);
+    out.field("cpu_kernels", dispatchedKernelTarget());
     out.field("precompute_s", precomputeSeconds);
     out.field("pou_max", pouMax);
     out.field("pou_median", pouMedian);
@@ -336,8 +338,9 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     return kExitOk;
   }
   const double bandwidth = copyBandwidth(std::min<std::size_t>(coordBytes, std::size_t(1) << 28));
-  std::printf("mesh %d vertices, cage %d vertices / %d faces, %d threads\n", static_cast<int>(points.rows()),
-              cage.numVertices(), cage.numFaces(), usedThreads);
+  std::printf("mesh %d vertices, cage %d vertices / %d faces, %d threads, %s CPU kernels\n",
+              static_cast<int>(points.rows()), cage.numVertices(), cage.numFaces(), usedThreads,
+              dispatchedKernelTarget());
   std::printf("precompute        %.3f s (median of %d)\n", precomputeSeconds, repeat);
   std::printf("partition of unity max %.3g, median %.3g\n", pouMax, pouMedian);
   std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",

@@ -144,11 +144,15 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   const auto add = [&](DeformParameter p, const std::string& text) {
     if (readsParameter(method, p) && !text.empty()) used += (used.empty() ? "" : ", ") + text;
   };
-  add(kParamBlend, "blend " + formatNumber(params.blend));
+  add(kParamBlend, params.kind == VariantKind::Blend ? "blend " + formatNumber(params.blend)
+                                                    : "variant " + variantName(params));
   add(kParamNu, "nu " + formatNumber(params.nu));
   add(kParamGamma, "gamma " + formatNumber(params.gamma));
   add(kParamTractionFix, params.tractionCorrection ? "" : "no traction fix");
   add(kParamCorotational, params.corotational ? "corotational" : "");
+  for (const ChoiceParameter& choice : choiceParameters())  // only where not the default
+    if (const int value = choice.get(params))
+      add(choice.parameter, std::string(choice.name) + " " + choice.values[static_cast<std::size_t>(value)].name);
   if (!used.empty()) summary << " (" << used << ")";
   summary << ": cage " << cage.numVertices() << " vertices / " << cage.numFaces()
           << (cage.dim() == 3 ? " faces" : " edges") << ", " << points.rows() << " points; precompute "

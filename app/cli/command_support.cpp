@@ -90,7 +90,10 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
       before.end(),
       {
           {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
-          {"--variant", "NAME", "global (default, blend 0) or local (blend 1)" + forMethods(kParamBlend)},
+          {"--variant", "NAME",
+            "global (default, blend 0), local (blend 1), affine (exact on affine poses) or stable (local without its "
+            "fold-overs at high nu)" +
+                forMethods(kParamBlend)},
           {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
           {"--nu", "V",
            "Poisson ratio in " + rangeText(kNuRange, true) + ", or inf / -inf (default 0)" + forMethods(kParamNu)},
@@ -101,6 +104,10 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
       });
   const std::vector<OptionSpec> own = methodOptionSpecs();
   before.insert(before.end(), own.begin(), own.end());
+  for (const ChoiceParameter& choice : choiceParameters())
+    before.push_back({std::string("--") + choice.name, "NAME",
+                      std::string(choice.description) + ": " + choiceNameList(choice) + " (default " +
+                          choice.values.front().name + ")" + forMethods(choice.parameter)});
   before.insert(before.end(), after.begin(), after.end());
   return before;
 }
@@ -136,12 +143,16 @@ std::string methodsHelp() {
 
 DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   DeformParams params;
-  params.blend = args.choice("--variant", {"global", "local"}, "global") == "local" ? 1.0 : 0.0;
+  setVariant(params, args.text("--variant", "global"), "--variant");
   params.blend = args.number("--blend", params.blend);
   params.nu = args.numberOrInfinity("--nu", params.nu);
   params.gamma = args.number("--gamma", params.gamma);
   params.tractionCorrection = !args.has("--no-traction-fix");
   params.corotational = args.has("--corotational");
+  for (const ChoiceParameter& choice : choiceParameters()) {
+    const std::string option = std::string("--") + choice.name;
+    if (args.has(option)) choice.set(params, parseChoice(choice, args.text(option), option));
+  }
   try {
     method->validateParams(params);
   } catch (const InputError& e) {  // the method names the parameter ("nu"); here it is the option
@@ -153,9 +164,12 @@ DeformParams deformParamsOptions(const ArgParser& args, Method method) {
 
 void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method) {
   std::string ignored;
-  for (const ParameterOption& o : kParameterOptions)
-    if (args.has(o.option) && !readsParameter(method, o.parameter))
-      ignored += (ignored.empty() ? "" : ", ") + std::string(o.option) + " (" + methodsReading(o.parameter) + ")";
+  const auto note = [&](const std::string& option, DeformParameter parameter) {
+    if (args.has(option) && !readsParameter(method, parameter))
+      ignored += (ignored.empty() ? "" : ", ") + option + " (" + methodsReading(parameter) + ")";
+  };
+  for (const ParameterOption& o : kParameterOptions) note(o.option, o.parameter);
+  for (const ChoiceParameter& choice : choiceParameters()) note(std::string("--") + choice.name, choice.parameter);
   for (Method m : allMethods())
     for (const MethodOptionSpec& o : m->options)
       if (m != method && args.has(std::string("--") + o.key))

@@ -34,10 +34,8 @@ bool sameCage(const Cage& a, const Cage& b) {
 }
 
 bool operator==(const Document& a, const Document& b) {
-  const DeformParams &p = a.params, &q = b.params;
   return a.method == b.method && a.pose.rows() == b.pose.rows() && a.pose.cols() == b.pose.cols() && a.pose == b.pose &&
-         p.nu == q.nu && p.gamma == q.gamma && p.blend == q.blend && p.tractionCorrection == q.tractionCorrection &&
-         p.corotational == q.corotational && samePoses(a.poses, b.poses) && sameTimeline(a.timeline, b.timeline) &&
+         a.params == b.params && samePoses(a.poses, b.poses) && sameTimeline(a.timeline, b.timeline) &&
          sameCage(a.restCage, b.restCage) && a.cagePath == b.cagePath;
 }
 

@@ -52,8 +52,10 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   if (o.method) state.method = *o.method;
   if (o.nu) state.params.nu = *o.nu;
   if (o.gamma) state.params.gamma = *o.gamma;
+  if (o.variant) setVariant(state.params, *o.variant, "--variant");
   if (o.blend) state.params.blend = *o.blend;
   if (o.tractionCorrection) state.params.tractionCorrection = *o.tractionCorrection;
+  for (const auto& [choice, value] : o.choices) choice->set(state.params, value);
   if (!o.views.empty()) {
     state.compare = true;
     state.compareViews = o.views;

@@ -11,6 +11,28 @@
 
 namespace somicage::editor {
 
+namespace {
+
+// The choice parameter whose option (--bulging) a is, or null.
+const ChoiceParameter* findChoiceOption(const std::string& a) {
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (a == std::string("--") + choice.name) return &choice;
+  return nullptr;
+}
+
+std::string choicesUsage() {
+  std::string text;
+  for (const ChoiceParameter& choice : choiceParameters()) {
+    std::string option = "  --" + std::string(choice.name) + " NAME";
+    option.resize(28, ' ');
+    text += option + choice.description + ": " + choiceNameList(choice) + " (default " + choice.values.front().name +
+            ")\n";
+  }
+  return text;
+}
+
+}  // namespace
+
 EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   EditorOptions o;
   std::vector<std::string> positional;
@@ -31,6 +53,10 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.gamma = parseNumber(value(), a);
     } else if (a == "--blend") {
       o.blend = parseNumber(value(), a);
+    } else if (a == "--variant") {
+      const std::string& v = value();
+      if (!somicage::findVariant(v)) throw InputError(a, -1, "'" + v + "' is not a choice", "use " + variantNameList());
+      o.variant = v;
     } else if (a == "--local") {
       o.blend = 1.0;
     } else if (a == "--global") {
@@ -39,6 +65,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       const std::string& v = value();
       if (v != "on" && v != "off") throw InputError(a, -1, "expected on or off, got '" + v + "'", "--traction-fix on");
       o.tractionCorrection = v == "on";
+    } else if (const ChoiceParameter* choice = findChoiceOption(a)) {
+      o.choices.emplace_back(choice, parseChoice(*choice, value(), a));
     } else if (a == "--compare") {
       if (compareGiven || !o.views.empty())
         throw InputError(a, -1, "given twice, or with --view", "use --compare a,b or --view SPEC (repeated), not both");
@@ -176,9 +204,11 @@ std::string editorUsage() {
          rangeText(kNuRange, true) + ", or inf / -inf\n" + "  --gamma X                 bulging scale in " +
          rangeText(kGammaRange) + "\n" +
          "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
-         "  --traction-fix on|off     traction correction (Eq. 15)\n"
+         "  --variant NAME            " + variantNameList() + " (affine, stable: docs/engine.md)\n"
+         "  --traction-fix on|off     traction correction (Eq. 15)\n" +
+         choicesUsage() +
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
-         "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local][:traction=on|off]\n"
+         "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]\n"
          "                            one side-by-side view with its own parameters (the others follow --nu\n"
          "                            etc.); give it 2 or 3 times, e.g. --view somigliana:nu=0\n"
          "                            --view somigliana:nu=0.45 (paper Fig. 3)\n"

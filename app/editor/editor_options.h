@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deformer.h"
@@ -18,7 +19,9 @@ struct EditorOptions {
   int demoDim = 3;                            // --demo 2d|3d
   std::optional<Method> method;               // --method
   std::optional<double> nu, gamma, blend;     // --nu (inf allowed), --gamma, --blend
+  std::optional<std::string> variant;         // --variant NAME (deform_choices.h), before --blend
   std::optional<bool> tractionCorrection;     // --traction-fix on|off
+  std::vector<std::pair<const ChoiceParameter*, int>> choices;  // --bulging NAME, --normals NAME (deform_choices.h)
   std::vector<ViewSpec> views;                // --compare a,b[,c] or --view SPEC (2 or 3); empty = one view
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH

@@ -25,7 +25,8 @@ bool measuresDifference(const MeasureView& v) {
 }
 
 MeasureKey::Params paramsKey(const DeformParams& p) {
-  return {p.blend, p.nu, p.gamma, p.tractionCorrection, p.corotational};
+  return {p.blend, p.nu, p.gamma, p.tractionCorrection, p.corotational, static_cast<int>(p.bulging),
+          static_cast<int>(p.normals)};
 }
 
 std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {

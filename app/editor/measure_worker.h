@@ -48,7 +48,7 @@ struct MeasureRequest {
 
 // What a request is of: two requests with equal keys measure the same thing.
 struct MeasureKey {
-  using Params = std::tuple<double, double, double, bool, bool>;  // DeformParams' fields
+  using Params = std::tuple<double, double, double, bool, bool, int, int>;  // DeformParams' fields
   const Scene* scene = nullptr;
   std::uint64_t poseGeneration = 0;
   // deformer, quantity, vertex, face, parameters; the other view's deformer and parameters (a difference)

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <string>
 #include <system_error>
 
 #include "compare_views_panel.h"
@@ -29,6 +30,46 @@ void sectionHeader(const char* title) {
 
 void openDemo(AppState& state, int dim) {
   guardUnsaved(state, dim == 2 ? "open the 2D demo" : "open the 3D demo", [dim](AppState& s) { requestDemo(s, dim); });
+}
+
+// gamma's tooltip names the bulging convention in use (deform_choices.h).
+std::string gammaTooltip(Bulging bulging) {
+  switch (bulging) {
+    case Bulging::Reference:
+      return "Bulging scale gamma >= 0, the authors' code's convention (bulging: reference):\n"
+             "eta_j = lambda_j exp(gamma^2 dOmega_j / 4 pi), dOmega_j the change of the unsigned solid angle of\n"
+             "the face's vertex normals (2D: signed angle / 2 pi). gamma here = gamma in the paper's figures. 0: none.";
+    case Bulging::SweptVolume:
+      return "Bulging scale gamma >= 0, swept volume (bulging: swept-volume): eta_j = lambda_j exp(gamma^2 V_j / V),\n"
+             "V_j the volume face j swept from the best-fit similarity of its rest place, V that cage's volume.\n"
+             "0: no bulging.";
+    case Bulging::SolidAngle:
+      break;
+  }
+  return "Bulging scale gamma >= 0 (section 4.4, the paper's text; bulging: solid-angle):\n"
+         "eta_j = lambda_j exp(gamma beta_j / (2^(d-1) pi)), beta_j the change of the face's signed solid angle\n"
+         "of vertex normals. The paper's figures used gamma^2 (bulging: reference). 0: no bulging.";
+}
+
+// A combo box for a choice parameter; true when the user picked another value.
+bool choiceCombo(const ChoiceParameter& choice, DeformParams& p) {
+  const int current = choice.get(p);
+  bool changed = false;
+  if (ImGui::BeginCombo(choice.name, choice.values[static_cast<std::size_t>(current)].name)) {
+    for (int k = 0; k < static_cast<int>(choice.values.size()); ++k) {
+      const ChoiceValue& value = choice.values[static_cast<std::size_t>(k)];
+      if (ImGui::Selectable(value.name, k == current) && k != current) {
+        choice.set(p, k);
+        changed = true;
+      }
+      tooltip(value.description);
+    }
+    ImGui::EndCombo();
+  }
+  std::string help = std::string(choice.description) + ":";
+  for (const ChoiceValue& value : choice.values) help += "\n  " + std::string(value.name) + ": " + value.description;
+  tooltip(help.c_str());
+  return changed;
 }
 
 }  // namespace
@@ -189,24 +230,31 @@ void drawControlPanel(AppState& state) {
   if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once
-  int variant = p.blend <= 0.0 ? 0 : (p.blend >= 1.0 ? 1 : 2);
-  if (ImGui::RadioButton("global", variant == 0)) {
-    p.blend = 0.0;
-    changed = "Global variant";
+  const std::string variant = variantName(p);
+  const char* variantTooltips[] = {
+      "Global variant: one similarity (R, s) fitted to the whole cage (Umeyama); R_j = R, lambda_j = s.",
+      "Local variant: each face's own polar rotation R_j and stretch lambda_j (Eqs. 12-14).",
+      "Affine variant: the global variant with the best-fit affine map A = R S instead of the similarity;\n"
+      "tractions R sigma(S) n_j, sigma(S) = 2S + lambda tr(S) I. Any affine pose moves the mesh exactly by it.",
+      "Stable variant: the local variant without the fold-overs it makes at high nu (docs/engine.md)."};
+  for (std::size_t k = 0; k < variantChoices().size(); ++k) {
+    const VariantChoice& v = variantChoices()[k];
+    if (k > 0) ImGui::SameLine();
+    if (ImGui::RadioButton(v.name, variant == v.name)) {
+      p.kind = static_cast<VariantKind>(v.kind);
+      p.blend = v.blend;
+      changed = std::string(v.name) + " variant";
+    }
+    tooltip(k < 4 ? variantTooltips[k] : v.description);
   }
-  tooltip("Global variant: one similarity (R, s) fitted to the whole cage (Umeyama); R_j = R, lambda_j = s.");
-  ImGui::SameLine();
-  if (ImGui::RadioButton("local", variant == 1)) {
-    p.blend = 1.0;
-    changed = "Local variant";
-  }
-  tooltip("Local variant: each face's own polar rotation R_j and stretch lambda_j (Eqs. 12-14).");
+  if (p.kind != VariantKind::Blend) ImGui::BeginDisabled();
   float blend = static_cast<float>(p.blend);
   if (ImGui::SliderFloat("blend", &blend, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.blend = blend;
   const bool blendDone = ImGui::IsItemDeactivatedAfterEdit();
   tooltip(
       "t in [0, 1] between the global (0) and the local (1) variant (Fig. 4):\n"
       "R_j(t) = R exp(t log(R^T R_j)), lambda_j(t) = t lambda_j + (1 - t) s. Ctrl+click to type a value.");
+  if (p.kind != VariantKind::Blend) ImGui::EndDisabled();
 
   bool infinite = std::isinf(p.nu);
   if (ImGui::Checkbox("nu = infinity", &infinite)) {
@@ -231,22 +279,19 @@ void drawControlPanel(AppState& state) {
   float gamma = static_cast<float>(p.gamma);
   if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.gamma = gamma;
   const bool gammaDone = ImGui::IsItemDeactivatedAfterEdit();
-  tooltip(
-      "Bulging scale gamma >= 0 (section 4.4): eta_j = lambda_j exp(gamma beta_j / (2^(d-1) pi)), with\n"
-      "beta_j the change of the face's solid angle of vertex normals. 0: no bulging.");
+  tooltip(gammaTooltip(p.bulging).c_str());
   if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) changed = "Traction fix";
   tooltip(
       "Traction correction (Eq. 15): s'_j = s_j - lambda . w_j, so that a similarity pose moves the mesh\n"
       "exactly as a similarity.");
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (choiceCombo(choice, p)) changed = choice.name;
   if (ImGui::Checkbox("BEM: corotational", &p.corotational)) changed = "Corotational";
   tooltip(
       "BEM only: remove the cage's best-fit rotation (Umeyama) before the linear solve and apply it after,\n"
       "so that large rotations of the cage do not shear the mesh.");
   if (!parametersUsed) ImGui::EndDisabled();
-  if (p.blend != state.params.blend || p.nu != state.params.nu || p.gamma != state.params.gamma ||
-      p.tractionCorrection != state.params.tractionCorrection || p.corotational != state.params.corotational) {
-    setParams(state, p);
-  }
+  if (p != state.params) setParams(state, p);
   if (!changed.empty()) commitEdit(state, changed);
   if (blendDone) commitEdit(state, "blend");
   if (nuDone) commitEdit(state, "nu");

@@ -21,9 +21,20 @@ REST_ATTRIBUTE = "somicage_rest"  # the bound mesh's original vertex coordinates
 STORED = ("somicage_rest_matrix", "somicage_cage_rest", "somicage_cage_triangles")  # the object's custom properties
 # The binding's settings that are Deformer.deform keywords; the panel enables those the method reads
 # (somicage.method_info(): "parameters"). nu_infinite goes with nu.
-PARAMETER_PROPERTIES = (("nu", "nu_infinite"), ("gamma",), ("variant",), ("traction_fix",), ("corotational",))
+PARAMETER_PROPERTIES = (("nu", "nu_infinite"), ("gamma",), ("variant",), ("traction_fix",), ("corotational",),
+                        ("bulging",), ("normals",))
 VARIANTS = [("global", "Global", "One best-fit rotation for the whole cage (Fig. 4)"),
-            ("local", "Local", "Per-face rotations blended to the vertices (Fig. 4)")]
+            ("local", "Local", "Per-face rotations blended to the vertices (Fig. 4)"),
+            ("affine", "Affine", "Global with the best-fit affine map: reproduces any affine pose exactly"),
+            ("stable", "Stable", "Local without the fold-overs local makes at high Poisson ratio")]
+# The engine's choice parameters (somicage.choice_info(), core/deform_choices.h), default first; Blender needs the
+# items when the class is defined, before the module may be found, so they are written out here (the add-on's test
+# compares them with choice_info()).
+BULGING = [("solid-angle", "Solid angle", "The paper's text: gamma times the change of the signed solid angle"),
+           ("reference", "Reference", "The authors' code: gamma squared, unsigned solid angle (the paper's figures)"),
+           ("swept-volume", "Swept volume", "gamma squared times the volume each face swept / the cage's volume")]
+NORMALS = [("area", "Area", "Vertex normals and rotations weighted by face area (the paper's)"),
+           ("angle", "Angle", "Weighted by corner angle: flat regions do not depend on their triangulation")]
 
 # (the binding's bind_id, method) -> somicage.Deformer. bind_id is stored with the binding, new at each bind: a
 # rename keeps it (a name key would leak a deformer of hundreds of MB), and a duplicate of a bound object, which
@@ -54,6 +65,8 @@ class SomicageBinding(bpy.types.PropertyGroup):
     traction_fix: bpy.props.BoolProperty(name="Traction fix", description="Eq. 15", default=True, update=_refresh)
     corotational: bpy.props.BoolProperty(name="Corotational", description="Remove the cage's best-fit rotation "
                                          "before the linear-elastic solve", default=False, update=_refresh)
+    bulging: bpy.props.EnumProperty(name="Bulging", items=BULGING, default="solid-angle", update=_refresh)
+    normals: bpy.props.EnumProperty(name="Normals", items=NORMALS, default="area", update=_refresh)
     live: bpy.props.BoolProperty(name="Live", description="Re-deform when the cage changes or the frame changes; "
                                  "baked SomiCage shape keys are muted meanwhile", default=True, update=_live_changed)
     bound: bpy.props.BoolProperty(name="Bound", default=False)
@@ -62,7 +75,8 @@ class SomicageBinding(bpy.types.PropertyGroup):
 
     def deform_settings(self):
         return dict(nu=float("inf") if self.nu_infinite else self.nu, gamma=self.gamma, variant=self.variant,
-                    traction_fix=self.traction_fix, corotational=self.corotational)
+                    traction_fix=self.traction_fix, corotational=self.corotational, bulging=self.bulging,
+                    normals=self.normals)
 
     def refresh(self, context):
         owner = self.id_data

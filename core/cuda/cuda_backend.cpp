@@ -104,7 +104,7 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
     for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(j, k);
   }
   const int numPoints = static_cast<int>(points.rows());
-  const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).mainColumns();
+  const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   const int chunk = static_cast<int>(
       std::clamp<long>((256L << 20) / (static_cast<long>(columns) * sizeof(double)), 1, std::max(1, numPoints)));
   const RowMatrixXd rowPoints = points;

@@ -166,7 +166,7 @@ void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out) {
 void integrateSomiglianaRows(const PortableFace* faces, int numFaces, int numVertices, const double* points,
                              int numPoints, double* rows, double* winding) {
   const size_t columns = static_cast<size_t>(numVertices) * kPortableVertexTerms +
-                         static_cast<size_t>(numFaces) * kPortableFaceTerms;
+                         static_cast<size_t>(numFaces) * kPortableFaceTerms + kPortableAffineTerms;
   DeviceArray<PortableFace> deviceFaces(numFaces);
   DeviceArray<double> devicePoints(static_cast<size_t>(numPoints) * 3), deviceRows(columns * numPoints),
       deviceWinding(numPoints);

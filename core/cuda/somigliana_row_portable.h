@@ -3,6 +3,7 @@
 // same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
 #pragma once
 
+#include "affine_terms.h"
 #include "triangle_integrals_kernel.h"
 
 namespace somicage {
@@ -15,14 +16,17 @@ struct PortableFace {
 
 constexpr int kPortableVertexTerms = 10;  // vertexTermCount(3)
 constexpr int kPortableFaceTerms = 4;     // faceTermCount(3)
+constexpr int kPortableAffineTerms = 18;  // affineTermCount(3)
 
-// Overwrites the row of point x: numVertices * 10 + numFaces * 4 numbers, entry k at row[k * stride] (stride 1
+// Overwrites the row of point x: numVertices * 10 + numFaces * 4 + 18 numbers (the main block, then the affine
+// terms), entry k at row[k * stride] (stride 1
 // for a contiguous row; the kernels use the number of points, so that neighbouring threads write neighbouring
 // addresses). Returns the generalised winding number -sum_j W_j / 4pi.
 SOMICAGE_HD inline double integrateSomiglianaRowPortable(const PortableFace* faces, int numFaces, int numVertices,
                                                          const double x[3], double* row, long stride) {
   const int vertexColumns = numVertices * kPortableVertexTerms;
-  for (long k = 0; k < vertexColumns + static_cast<long>(numFaces) * kPortableFaceTerms; ++k) row[k * stride] = 0;
+  const long mainColumns = vertexColumns + static_cast<long>(numFaces) * kPortableFaceTerms;
+  for (long k = 0; k < mainColumns + kPortableAffineTerms; ++k) row[k * stride] = 0;
   double angleSum = 0;
   PortableTriangleIntegrals I;
   for (int j = 0; j < numFaces; ++j) {
@@ -47,6 +51,7 @@ SOMICAGE_HD inline double integrateSomiglianaRowPortable(const PortableFace* fac
     double* f = row + (vertexColumns + static_cast<long>(j) * kPortableFaceTerms) * stride;
     f[0] += I.S;
     for (int i = 0; i < 3; ++i) f[(1 + i) * stride] += I.M[i][0] * n[0] + I.M[i][1] * n[1] + I.M[i][2] * n[2];
+    addAffineTerms<3>(I.M, n, row + mainColumns * stride, stride);
     angleSum += I.solidAngle;
   }
   return -angleSum / (4 * 3.14159265358979323846);

@@ -54,13 +54,17 @@ void sumVertexTerms(const CoordinateLayout& layout, const double* integrals, dou
     for (int i = 0; i < layout.numVertices; ++i) sums[k] += integrals[layout.vertexColumn(i, k)];
 }
 
-// A point's integrals (already in the layout of C, layout.mainColumns() numbers) and their per-vertex sums in the
-// tail, the tail's [x | 1] columns zero, in the storage type.
+// A point's integrals (layout.integralColumns() numbers: the main block in the layout of C, then the affine terms)
+// into its row of C, in the storage type: the main block, then the tail [per-vertex sums | affine terms | x | 1]
+// with [x | 1] zero.
 template <typename Scalar>
 void writeIntegralColumns(const CoordinateLayout& layout, const double* integrals, const double* sums, Scalar* row) {
   for (int k = 0; k < layout.mainColumns(); ++k) row[k] = static_cast<Scalar>(integrals[k]);
   for (int k = 0; k < layout.vertexTerms; ++k) row[layout.tailColumn(k)] = static_cast<Scalar>(sums[k]);
-  for (int k = layout.vertexTerms; k < layout.tailColumns; ++k) row[layout.tailColumn(k)] = Scalar(0);
+  for (int k = 0; k < layout.tailIntegrals; ++k)
+    row[layout.tailColumn(layout.vertexTerms + k)] = static_cast<Scalar>(integrals[layout.mainColumns() + k]);
+  for (int k = layout.vertexTerms + layout.tailIntegrals; k < layout.tailColumns; ++k)
+    row[layout.tailColumn(k)] = Scalar(0);
 }
 
 // The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the dual-number integrals of
@@ -89,7 +93,7 @@ void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, co
 template <typename Scalar>
 PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::MatrixXd& points, int p,
                           const CoordinateLayout& layout, bool exactIntegrals, Scalar* row, double& residual) {
-  const int dim = static_cast<int>(points.cols()), main = layout.mainColumns(), columns = layout.columns();
+  const int dim = static_cast<int>(points.cols()), main = layout.integralColumns(), columns = layout.columns();
   double sums[vertexTermCount(3)] = {0};
   sumVertexTerms(layout, integrals, sums);
   residual = unityResidualOfSums(sums, dim);
@@ -180,13 +184,18 @@ class SomiglianaDeformer final : public CageDeformer {
   // Both sums are linear in the stored nu-independent terms t_k (T_i = sum_k t_k E_k), so their weights are
   // R_i E_k R_i^T (for T) and R_i E_k R_i^T v~_i (for the right-hand side); the face terms give
   // R_j K_j R_j^T tau~_j = s_j R_j K_j n_j = s_j R_j (k1 S_j n_j + k2 q_j) (Eq. 14, docs/method.md).
+  // The affine variant adds R K_j sigma n_j = R (k1 S_j sigma n_j + k2 M_j sigma n_j) for one global sigma: the
+  // first through S_j's column, the second from the per-point affine terms in the tail (somigliana_coordinates.h).
   FrameWeights frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params) const override {
     validateDeformParams(params);
     const int d = dim(), terms = vertexTermCount(d);
     SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == d, "posed cage matches the rest cage");
     const BoundaryConditions bc = computeBoundaryConditions(rest_, posed, params);
     const std::vector<Eigen::MatrixXd> basis = vertexTermBasis(d, params.nu);
-    const bool global = params.blend == 0;  // every R_i = R: T(x) comes from the per-point sums in the tail
+    const bool affine = params.kind == VariantKind::Affine;
+    // Every R_i = R: T(x) comes from the per-point sums in the tail.
+    const bool global = affine || (params.kind == VariantKind::Blend && params.blend == 0);
+    const Eigen::MatrixXd& rotation = affine ? bc.faceRotations.front() : bc.global.rotation;
 
     FrameWeights W;
     W.outputs = d * d + d;
@@ -199,7 +208,7 @@ class SomiglianaDeformer final : public CageDeformer {
     W.main = Eigen::MatrixXd::Zero(layout_.mainColumns(), W.outputs - W.mainOffset);
     W.tail = Eigen::MatrixXd::Zero(layout_.tailColumns, W.outputs);
     for (int i = 0; i < rest_.numVertices(); ++i) {
-      const Eigen::MatrixXd& R = global ? bc.global.rotation : bc.vertexRotations[i];
+      const Eigen::MatrixXd& R = global ? rotation : bc.vertexRotations[i];
       const Eigen::VectorXd v = posed.row(i).transpose() - W.origin;
       for (int k = 0; k < terms; ++k) {
         const Eigen::MatrixXd rotated = R * basis[k] * R.transpose();
@@ -213,20 +222,40 @@ class SomiglianaDeformer final : public CageDeformer {
       const Eigen::MatrixXd& R = bc.faceRotations[j];
       const double s = bc.tractionScales(j);
       const int row = layout_.faceColumn(j, 0);
-      W.main.row(row).segment(rhs, d) = (s * c.k1 * R * restNormals_.row(j).transpose()).transpose();
+      const auto n = restNormals_.row(j).transpose();
+      if (affine)
+        W.main.row(row).segment(rhs, d) = (c.k1 * R * (s * n + bc.stress * n)).transpose();
+      else
+        W.main.row(row).segment(rhs, d) = (s * c.k1 * R * n).transpose();
       for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) = (s * c.k2 * R.col(a)).transpose();
+      if (bc.globalScales.size() > 0) {  // stable: + u_j R n_j in the global frame
+        const double u = bc.globalScales(j);
+        W.main.row(row).segment(rhs, d) += (u * c.k1 * rotation * n).transpose();
+        for (int a = 0; a < d; ++a) W.main.row(row + 1 + a).segment(rhs, d) += (u * c.k2 * rotation.col(a)).transpose();
+      }
     }
     if (global) {
-      for (int k = 0; k < terms; ++k)
-        setTColumns(bc.global.rotation * basis[k] * bc.global.rotation.transpose(), W.tail, k);
+      for (int k = 0; k < terms; ++k) setTColumns(rotation * basis[k] * rotation.transpose(), W.tail, k);
     } else {
       setTColumns(basis[0], W.tail, 0);  // sum_i R_i (alpha D_i I) R_i^T = alpha (sum_i D_i) I
     }
-    // Rows [0 | x | 1] (exterior points, exterior_points.h): T = I and b = s R x + t.
-    const Eigen::MatrixXd sR = bc.global.scale * bc.global.rotation;
-    for (int a = 0; a < d; ++a) W.tail.row(terms + a).tail(d) = sR.col(a).transpose();
-    setTColumns(Eigen::MatrixXd::Identity(d, d), W.tail, terms + d);
-    W.tail.row(terms + d).tail(d) = (bc.global.translation - W.origin).transpose();
+    if (affine) {  // tail row (a, pair bc) holds sum_j (M_j sigma n_j)_a's coefficient of sigma_bc
+      const int pairs = d * (d + 1) / 2;
+      const int first[6] = {0, 1, 2, 0, 0, 1}, second[6] = {0, 1, 2, 1, 2, 2}, second2[3] = {0, 1, 1};
+      for (int a = 0; a < d; ++a)
+        for (int k = 0; k < pairs; ++k) {
+          const int b = d == 3 ? first[k] : (k == 2 ? 0 : k), e = d == 3 ? second[k] : second2[k];
+          W.tail.row(terms + a * pairs + k).tail(d) = (c.k2 * bc.stress(b, e) * rotation.col(a)).transpose();
+        }
+    }
+    // Rows [0 | x | 1] (exterior points, exterior_points.h), the tail's last d + 1: T = I and b = s R x + t, or
+    // A x + b in the affine variant.
+    const int xRow = layout_.tailColumns - d - 1;
+    const Eigen::MatrixXd map = affine ? bc.affine.linear : Eigen::MatrixXd(bc.global.scale * bc.global.rotation);
+    const Eigen::VectorXd shift = affine ? bc.affine.translation : bc.global.translation;
+    for (int a = 0; a < d; ++a) W.tail.row(xRow + a).tail(d) = map.col(a).transpose();
+    setTColumns(Eigen::MatrixXd::Identity(d, d), W.tail, xRow + d);
+    W.tail.row(xRow + d).tail(d) = (shift - W.origin).transpose();
     return W;
   }
 
@@ -259,7 +288,7 @@ std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const E
 // Rows go straight into C; the diagnostics keep a winding number, a residual and a region per point; each thread
 // has a row buffer of the main block.
 std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::size_t points, bool, int threads) {
-  return static_cast<std::size_t>(threads) * static_cast<std::size_t>(layout.mainColumns()) * sizeof(double) +
+  return static_cast<std::size_t>(threads) * static_cast<std::size_t>(layout.integralColumns()) * sizeof(double) +
          points * (2 * sizeof(double) + sizeof(PointRegion));
 }
 
@@ -273,7 +302,7 @@ const MethodDescriptor& somigliana() {
       "Somigliana",
       "Somigliana coordinates (Chen et al. 2023): elastic, with Poisson ratio nu and bulging gamma",
       0,
-      kParamBlend | kParamNu | kParamGamma | kParamTractionFix,
+      kParamBlend | kParamNu | kParamGamma | kParamTractionFix | kParamBulging | kParamNormals,
       false,
       false,
       {},

@@ -4,8 +4,10 @@
     deformer = somicage.Deformer(cage, points, method="somigliana")
     moved = deformer.deform(somicage.load_posed("posed.obj", cage), nu=0.3, variant="local")
 """
-from ._somicage import (Cage, Cancelled, Deformer, InputError, SomiCageWarning, __version__, check, load_mesh,
-                        load_posed, load_session, method_info, methods, parameter_ranges, save_obj)
+from ._somicage import (Cage, Cancelled, Deformer, InputError, SomiCageWarning, __version__, check, choice_info,
+                        cpu_kernels, load_mesh, load_posed, load_session, method_info, methods, parameter_ranges,
+                        save_obj)
 
-__all__ = ["Cage", "Cancelled", "Deformer", "InputError", "SomiCageWarning", "__version__", "check", "load_mesh",
-           "load_posed", "load_session", "method_info", "methods", "parameter_ranges", "save_obj"]
+__all__ = ["Cage", "Cancelled", "Deformer", "InputError", "SomiCageWarning", "__version__", "check", "choice_info",
+           "cpu_kernels", "load_mesh", "load_posed", "load_session", "method_info", "methods", "parameter_ranges",
+           "save_obj"]

@@ -6,6 +6,7 @@ import numpy as np
 import numpy.typing as npt
 
 __version__: str
+cpu_kernels: str  # the dispatched CPU kernels: "x86-64-v3" (AVX2, FMA), "baseline" or "native"
 
 ArrayLike = npt.ArrayLike
 Progress = Callable[[float], Optional[bool]]
@@ -57,12 +58,14 @@ class Deformer:
         tetrahedral mesh of the cage for method="phong"."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
                blend: Optional[float] = None, traction_fix: bool = True,
-               corotational: bool = False) -> npt.NDArray[np.float64]:
+               corotational: bool = False, bulging: str = "solid-angle",
+               normals: str = "area") -> npt.NDArray[np.float64]:
         """(P, d) float64, Fortran order, for the cage's vertices moved to posed (V, d)."""
     def analyze(self, posed: ArrayLike, faces: Sequence[Sequence[int]] = ..., *, nu: float = 0.0, gamma: float = 0.0,
                 variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
                 corotational: bool = False, nu_sweep: Optional[tuple[float, float, int]] = None,
-                progress: Optional[Progress] = None) -> dict[str, object]:
+                progress: Optional[Progress] = None, bulging: str = "solid-angle",
+                normals: str = "area") -> dict[str, object]:
         """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
         det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked.
         progress: as for Deformer (False cancels, Ctrl-C raises KeyboardInterrupt)."""
@@ -82,6 +85,8 @@ class Deformer:
     def coordinate_bytes(self) -> int: ...
 
 def methods() -> list[str]: ...
+def choice_info() -> list[dict[str, Union[str, list[tuple[str, str]]]]]:
+    """Deformer.deform's keywords that take a name (bulging, normals): name, description, values (default first)."""
 def method_info() -> list[dict[str, Union[str, list[str]]]]:
     """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
 def parameter_ranges() -> dict[str, tuple[float, float]]:

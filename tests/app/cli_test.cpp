@@ -80,7 +80,7 @@ TEST(CliErrors, BadOptionsExitTwoWithOneMessage) {
       {"blend above 1", deformArgs({"--blend", "1.5"}), "--blend: blend"},
       {"unknown method", deformArgs({"--method", "harmonic"}), "--method: unknown method 'harmonic'"},
       {"unknown variant", deformArgs({"--variant", "sideways"}),
-       "--variant: 'sideways' is not a choice (use global or local"},
+       "--variant: 'sideways' is not a choice (use global, local, affine or stable"},
       {"negative threads", deformArgs({"--threads", "-1"}), "--threads: -1 is out of range"},
       {"fractional threads", deformArgs({"--threads", "2.5"}), "--threads: '2.5' is not a whole number"},
       {"flag with a value", deformArgs({"--no-traction-fix=yes"}), "--no-traction-fix: takes no value"},

@@ -141,6 +141,20 @@ TEST(CliAnalyze, RefusesABadSweepNamingTheOption) {
   }
 }
 
+// The chosen variant and choices (issue 26) are named in the JSON; a bad choice is refused naming the option.
+TEST(CliAnalyze, JsonNamesTheChosenOptions) {
+  const RunResult r = runSomicage(
+      analyzeArgs(dataFile("cube_cage.obj"), {"--variant", "affine", "--bulging", "reference", "--normals", "angle"}));
+  ASSERT_EQ(r.exitCode, 0) << r;
+  for (const char* field : {"\"variant\": \"affine\"", "\"bulging\": \"reference\"", "\"normals\": \"angle\""})
+    EXPECT_NE(r.out.find(field), std::string::npos) << field << "\n" << r.out;
+  const RunResult bad = runSomicage(analyzeArgs(dataFile("cube_cage.obj"), {"--bulging", "solid_angle"}));
+  EXPECT_EQ(bad.exitCode, 2) << bad;
+  EXPECT_NE(bad.err.find("--bulging: bulging 'solid_angle' is not a choice (use solid-angle, reference or swept-volume"),
+            std::string::npos)
+      << bad;
+}
+
 TEST(CliAnalyze, TwoDimensionalAreasAndCsvHeader) {
   ScratchDir dir;
   const std::string csv = dir.file("j.csv");

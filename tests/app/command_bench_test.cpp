@@ -1,6 +1,7 @@
 // somicage bench, run as a process: --json prints one object with exactly the documented keys, and its numbers
 // are consistent (exact integrals at round-off, the baseline slower and less accurate, frames timed per variant).
 #include "cli_test_support.h"
+#include "cpu_dispatch.h"
 
 namespace somicage {
 namespace {
@@ -25,12 +26,14 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
                                          "detj_updates_per_s", "gradient_precompute_s",
                                          "gradient_bytes",     "bem_factor_ms",
                                          "editor_measure_ms",  "editor_detj_updates_per_s",
-                                         "phong_factor_ms",    "phong_volume_vertices"};
+                                         "phong_factor_ms",    "phong_volume_vertices",
+                                         "cpu_kernels"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
   EXPECT_EQ(json["mesh_vertices"].number, 5);
   EXPECT_EQ(json["cage_vertices"].number, 8);
   EXPECT_EQ(json["threads"].number, 1);
+  EXPECT_EQ(json["cpu_kernels"].string, dispatchedKernelTarget());  // the copy this process runs too
   EXPECT_EQ(json["baseline_quadrature"].number, 8);
   EXPECT_EQ(json["baseline_points"].number, 5);
   EXPECT_LE(json["pou_max"].number, 1e-12);

@@ -118,7 +118,11 @@ class LayoutRecorder:
 
 
 # The panel enables a setting exactly when the method reads it (method_info's parameters; nu_infinite goes with nu).
-SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational"}
+SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational", "bulging", "normals"}
+# The choice menus are the engine's table (somicage.choice_info()), names and order.
+for choice in somicage.choice_info():
+    items = getattr(addon_binding, choice["name"].upper())
+    assert [item[0] for item in items] == [value[0] for value in choice["values"]], choice["name"]
 bpy.context.view_layer.objects.active = hydrant
 for m in info:
     binding.method = m["name"]

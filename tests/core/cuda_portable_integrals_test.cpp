@@ -70,7 +70,7 @@ TEST(CudaPortableIntegrals, RowsMatchTheReferenceQuadrature) {
 
   const std::vector<PortableFace> faces = portableFaces(cage);
   const int numPoints = static_cast<int>(points.rows());
-  const int columns = cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms;
+  const int columns = cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms + kPortableAffineTerms;
   std::vector<double> rows(static_cast<size_t>(columns) * numPoints, 12345.0);  // overwritten, column-major
   double worst = 0, worstWinding = 0;
   for (int p = 0; p < numPoints; ++p) {
@@ -90,7 +90,7 @@ TEST(CudaPortableIntegrals, RowsMatchTheReferenceQuadrature) {
 TEST(CudaPortableIntegrals, WindingNumberIsZeroOutside) {
   const Cage cage = test::makeBumpySphere(1);
   const std::vector<PortableFace> faces = portableFaces(cage);
-  std::vector<double> row(cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms);
+  std::vector<double> row(cage.numVertices() * kPortableVertexTerms + cage.numFaces() * kPortableFaceTerms + kPortableAffineTerms);
   const double x[3] = {3, 0.2, -0.1};
   const double winding =
       integrateSomiglianaRowPortable(faces.data(), cage.numFaces(), cage.numVertices(), x, row.data(), 1);

@@ -118,7 +118,7 @@ TEST(MemoryEstimate, DoubleCopiesBeforeFloatStorageAreCounted) {
   EXPECT_GT(perThread, 0u);
   EXPECT_LE(perThread, static_cast<std::size_t>(deformer->frameCoordinates().columns()) * sizeof(double));
   const MemoryEstimate s = estimatePrecomputeMemory(methods::somigliana(), 3, 49, 94, P, true, 2);
-  EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 4) * sizeof(float));
+  EXPECT_EQ(s.coordinates, P * (49 * 10 + 94 * 4 + 10 + 18 + 4) * sizeof(float));
 }
 
 TEST(MemoryEstimate, SeveralDeformersAddTheirCoordinatesNotTheirWorkingMemory) {

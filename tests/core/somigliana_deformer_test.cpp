@@ -30,12 +30,28 @@ std::vector<DeformParams> parameterGrid() {
     for (double nu : {-0.5, 0.0, 0.3, 0.45, kInf})
       for (double gamma : {0.0, 2.0})
         for (bool fix : {true, false}) grid.push_back({blend, nu, gamma, fix});
+  // Every bulging convention and normal weighting (deform_choices.h), with bulging on, in both variants.
+  for (double blend : {0.0, 1.0})
+    for (Bulging bulging : {Bulging::SolidAngle, Bulging::Reference, Bulging::SweptVolume})
+      for (NormalWeights normals : {NormalWeights::Area, NormalWeights::Angle})
+        grid.push_back({blend, 0.3, 1.5, true, false, bulging, normals});
+  // The variants beyond the paper (deformer.h: VariantKind).
+  for (VariantKind kind : {VariantKind::Affine, VariantKind::Stable})
+    for (double nu : {0.0, 0.45})
+      for (double gamma : {0.0, 1.5}) {
+        DeformParams p{kind == VariantKind::Stable ? 1.0 : 0.0, nu, gamma, true};
+        p.kind = kind;
+        grid.push_back(p);
+      }
   return grid;
 }
 
 std::string describe(const DeformParams& p) {
-  return "blend " + std::to_string(p.blend) + " nu " + std::to_string(p.nu) + " gamma " + std::to_string(p.gamma) +
-         (p.tractionCorrection ? " fix" : " nofix");
+  std::string text = "blend " + std::to_string(p.blend) + " nu " + std::to_string(p.nu) + " gamma " +
+                     std::to_string(p.gamma) + (p.tractionCorrection ? " fix" : " nofix");
+  for (const ChoiceParameter& choice : choiceParameters())
+    text += std::string(" ") + choice.name + " " + choice.values[static_cast<std::size_t>(choice.get(p))].name;
+  return text + " variant " + variantName(p);
 }
 
 class SomiglianaDeformerTest : public ::testing::TestWithParam<int> {
@@ -128,6 +144,16 @@ TEST_P(SomiglianaDeformerTest, EachParameterMovesPointsAsEq11Does) {
     EXPECT_GT(referenceChange.rowwise().norm().maxCoeff(), 1e-4 * diameter) << change.name;
     EXPECT_LE((coreChange - referenceChange).rowwise().norm().maxCoeff(), 1e-8 * diameter) << change.name;
   }
+  // The choices (variants, normals: deform_params.h) each change the result too.
+  const DeformParams bulged{0.0, 0.0, 3.0, true};
+  for (const ChoiceParameter& choice : choiceParameters())
+    for (int value = 1; value < static_cast<int>(choice.values.size()); ++value) {
+      DeformParams p = bulged;
+      choice.set(p, value);
+      EXPECT_GT((deformer->deform(pose, p) - deformer->deform(pose, bulged)).rowwise().norm().maxCoeff(),
+                1e-4 * diameter)
+          << choice.name << " " << choice.values[static_cast<std::size_t>(value)].name;
+    }
 }
 
 TEST_P(SomiglianaDeformerTest, ResultDoesNotDependOnThreadCount) {
@@ -208,7 +234,9 @@ TEST(SomiglianaDeformer, RejectsInvalidParameters) {
   const auto deformer = makeDeformer(methods::somigliana(), s.cage, s.points, {}, noProgress);
   for (const DeformParams& bad :
        {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true}, DeformParams{0, kNaN, 0, true},
-        DeformParams{0, 0, -1, true}, DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true}})
+        DeformParams{0, 0, -1, true}, DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true},
+        DeformParams{0, 0, 0, true, false, static_cast<Bulging>(3)},
+        DeformParams{0, 0, 0, true, false, Bulging::SolidAngle, static_cast<NormalWeights>(-1)}})
     EXPECT_THROW(deformer->deform(s.cage.vertices, bad), InputError) << describe(bad);
 }
 

@@ -223,7 +223,7 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "somigliana:nu=0.7", "--view", "green"}, "out of range"},
       {{"--view", "somigliana:nu=abc", "--view", "green"}, "'abc' is not a number"},
       {{"--view", "somigliana:gamma=-1", "--view", "green"}, "gamma"},
-      {{"--view", "somigliana:variant=middle", "--view", "green"}, "variant must be global or local"},
+      {{"--view", "somigliana:variant=middle", "--view", "green"}, "variant must be global, local, affine or stable"},
       {{"--view", "somigliana:traction=yes", "--view", "green"}, "traction must be on or off"},
       {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
       {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},

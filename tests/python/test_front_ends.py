@@ -124,7 +124,7 @@ def test_array_input_errors_name_the_argument(cube_cage, cube_points):
         somicage.Deformer(cube_cage, cube_points).deform(cube_cage.vertices[:7])
     with pytest.raises(somicage.InputError, match=r"^faces: is not an array of integers"):
         somicage.Cage(cube_cage.vertices, cube_cage.faces.astype(float))
-    with pytest.raises(somicage.InputError, match=r"^variant: 'wide' is not a choice \(use global or local\)"):
+    with pytest.raises(somicage.InputError, match=r"^variant: 'wide' is not a choice \(use global, local, affine or stable\)"):
         somicage.Deformer(cube_cage, cube_points).deform(cube_cage.vertices, variant="wide")
 
 
@@ -172,7 +172,8 @@ def test_points_outside_warn_in_the_cli_words(tmp_path, cube_cage, cube_points):
 
 # The CLI's options that set a method's parameters, and the Deformer.deform keywords that set the same ones.
 CLI_PARAMETER_OPTIONS = {"--variant": ["variant", "blend"], "--nu": ["nu"], "--gamma": ["gamma"],
-                         "--no-traction-fix": ["traction_fix"], "--corotational": ["corotational"]}
+                         "--no-traction-fix": ["traction_fix"], "--corotational": ["corotational"],
+                         "--bulging": ["bulging"], "--normals": ["normals"]}
 
 
 def methods_reading(help_line):
@@ -205,11 +206,24 @@ def test_method_info_matches_cli_help():
         assert sorted(m["parameters"]) == sorted(read), m["name"]
 
 
+def test_choice_info_matches_cli_help():
+    """choice_info() is the table `somicage deform --help` lists as --bulging and --normals: values, default first."""
+    result = run_cli("deform", "--help")
+    assert result.returncode == 0, result.stderr
+    option = {line.split()[0]: line for line in result.stdout.splitlines() if line.startswith("  --")}
+    for choice in somicage.choice_info():
+        line = option["--" + choice["name"]]
+        listed = line.split(": ", 1)[1].split(" (default")[0].replace(" or ", ", ").split(", ")
+        assert listed == [value[0] for value in choice["values"]], line
+        assert f"(default {choice['values'][0][0]})" in line
+
+
 def test_methods_ignore_the_keywords_method_info_leaves_out(cube_cage, cube_points):
     """A keyword a method does not list in method_info() leaves its deformation bit for bit as it was."""
     pose = cube_cage.vertices @ np.array([[1.2, 0.3, 0.0], [0.0, 0.9, 0.2], [0.1, 0.0, 1.1]]).T
     pose[7] += [0.2, 0.1, -0.15]  # not affine either
-    changed = dict(nu=0.3, gamma=1.0, variant="local", blend=0.5, traction_fix=False, corotational=True)
+    changed = dict(nu=0.3, gamma=1.0, variant="local", blend=0.5, traction_fix=False, corotational=True,
+                   bulging="reference", normals="angle")
     for m in somicage.method_info():
         deformer = somicage.Deformer(cube_cage, cube_points, method=m["name"])
         base = deformer.deform(pose)

@@ -1,0 +1,203 @@
+// The choice parameters (deform_choices.h): the bulging conventions against their formulas on hand-computed
+// cases, and angle-weighted normals, which make a flat region's normals independent of its triangulation.
+#include "deform_choices.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "boundary_conditions.h"
+#include "deformer.h"
+#include "errors.h"
+#include "methods/method_descriptors.h"
+#include "test_shapes.h"
+
+namespace somicage {
+namespace {
+
+DeformParams bulged(double blend, double gamma, Bulging bulging, NormalWeights normals = NormalWeights::Area) {
+  return {blend, 0.3, gamma, true, false, bulging, normals};
+}
+
+Cage oneTriangle(const Eigen::Matrix3d& corners) {
+  Cage cage;
+  cage.vertices = corners;
+  cage.faces.resize(1, 3);
+  cage.faces << 0, 1, 2;
+  return cage;
+}
+
+TEST(DeformChoices, TableNamesAreDistinctAndDefaultsComeFirst) {
+  std::set<std::string> names;
+  const DeformParams defaults;
+  for (const ChoiceParameter& choice : choiceParameters()) {
+    EXPECT_TRUE(names.insert(choice.name).second) << choice.name;
+    EXPECT_EQ(choice.get(defaults), 0) << choice.name << ": values[0] is DeformParams' default";
+    EXPECT_TRUE(readsParameter(methods::somigliana(), choice.parameter)) << choice.name;
+    for (int k = 0; k < static_cast<int>(choice.values.size()); ++k) {
+      EXPECT_EQ(findChoice(choice, choice.values[static_cast<std::size_t>(k)].name), k);
+      DeformParams p;
+      choice.set(p, k);
+      EXPECT_EQ(choice.get(p), k);
+    }
+    EXPECT_THROW(parseChoice(choice, "nonsense", "--x"), InputError);
+  }
+  try {
+    parseChoice(choiceParameters().front(), "solid_angle", "--bulging");
+    FAIL() << "no such value";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.source(), "--bulging");
+    EXPECT_NE(e.hint().find("solid-angle, reference or swept-volume"), std::string::npos) << e.hint();
+  }
+}
+
+TEST(DeformChoices, UnsignedSolidAngleOfAnOctant) {
+  // The normals e_z, e_x, e_y span one octant: solid angle 4 pi / 8, signed by their order.
+  Eigen::Matrix3d n;
+  n << 0, 0, 1, 1, 0, 0, 0, 1, 0;
+  const Cage face = oneTriangle(Eigen::Matrix3d::Identity());
+  EXPECT_NEAR(normalSpread(face, n, true)(0), M_PI / 2, 1e-15);
+  EXPECT_NEAR(normalSpread(face, n, false)(0), M_PI / 2, 1e-15);
+  n.row(1).swap(n.row(2));
+  EXPECT_NEAR(normalSpread(face, n, true)(0), -M_PI / 2, 1e-15);
+  EXPECT_NEAR(normalSpread(face, n, false)(0), M_PI / 2, 1e-15);
+  // Coplanar normals: 0, continuously (the authors' code returns 2 pi there).
+  n << 0, 0, 1, 0, 0, 1, 0, 0, 1;
+  EXPECT_EQ(normalSpread(face, n, false)(0), 0.0);
+}
+
+TEST(DeformChoices, SweptMeasureOfHandCases) {
+  Eigen::Matrix3d rest;
+  rest << 0, 0, 0, 1, 0, 0, 0, 1, 0;  // area 1/2, normal +z
+  const Cage face = oneTriangle(rest);
+  Eigen::Matrix3d lifted = rest;
+  lifted.col(2).setConstant(0.3);
+  EXPECT_NEAR(sweptMeasure(face, rest, lifted, 0), 0.5 * 0.3, 1e-15) << "a prism";
+  EXPECT_NEAR(sweptMeasure(face, lifted, rest, 0), -0.5 * 0.3, 1e-15) << "inward";
+  Eigen::Matrix3d tipped = rest;
+  tipped(2, 2) = 0.3;
+  EXPECT_NEAR(sweptMeasure(face, rest, tipped, 0), 0.3 / 6, 1e-15) << "a tetrahedron";
+  Eigen::Matrix3d slid = rest;
+  slid.col(0).array() += 0.7;
+  EXPECT_NEAR(sweptMeasure(face, rest, slid, 0), 0.0, 1e-15) << "in its plane";
+  // 2D: the counter-clockwise square's bottom edge (0,0)->(1,0), outward -y, moved out by 0.3: area 0.3.
+  Eigen::MatrixXd loop(4, 2);
+  loop << 0, 0, 1, 0, 1, 1, 0, 1;
+  const Cage square = makePolygonCage(loop);
+  Eigen::MatrixXd out = loop;
+  out.block(0, 1, 2, 1).setConstant(-0.3);
+  int bottom = -1;
+  for (int j = 0; j < square.numFaces(); ++j)
+    if (square.faces(j, 0) == 0 && square.faces(j, 1) == 1) bottom = j;
+  ASSERT_GE(bottom, 0);
+  EXPECT_NEAR(sweptMeasure(square, loop, out, bottom), 0.3, 1e-15);
+}
+
+TEST(DeformChoices, SweptVolumeOnAStretchedCubeIsAFrustum) {
+  // The cube [-1,1]^3 stretched along z by 1 + h: the best fit is R = I, s = (3 + h) / 3. The top face's triangles
+  // sweep from the registered cage (scaled by s, at height s) to z = 1 + h: together a frustum of a pyramid,
+  // H/3 (A1 + A2 + sqrt(A1 A2)) with A1 = 4, A2 = 4 s^2, H = 1 + h - s; split on the face's diagonal, each
+  // triangle takes half. eta = s exp(gamma^2 V_e / (s^3 V_0)), V_0 = 8.
+  const Cage cube = test::makeCube();
+  const double h = 0.4, s = (3 + h) / 3, gamma = 1.7;
+  Eigen::MatrixXd posed = cube.vertices;
+  posed.col(2) *= 1 + h;
+  const BoundaryConditions bc = computeBoundaryConditions(cube, posed, bulged(0.0, gamma, Bulging::SweptVolume));
+  EXPECT_NEAR(bc.global.scale, s, 1e-14);
+  const double frustum = (1 + h - s) / 3 * (4 + 4 * s * s + 4 * s);
+  const double eta = s * std::exp(gamma * gamma * 0.5 * frustum / (s * s * s * 8));
+  int top = 0;
+  for (int j = 0; j < cube.numFaces(); ++j) {
+    if (cube.vertices(cube.faces(j, 0), 2) < 1 || cube.vertices(cube.faces(j, 1), 2) < 1 ||
+        cube.vertices(cube.faces(j, 2), 2) < 1)
+      continue;
+    ++top;
+    EXPECT_NEAR(bc.normalStretch(j), eta, 1e-14) << "face " << j;
+  }
+  EXPECT_EQ(top, 2);
+  // 2D: the square [-1,1]^2 stretched along y: s = (2 + h) / 2, the top edge sweeps a trapezoid H (2 + 2 s) / 2.
+  Eigen::MatrixXd loop(4, 2);
+  loop << -1, -1, 1, -1, 1, 1, -1, 1;
+  const Cage square = makePolygonCage(loop);
+  Eigen::MatrixXd stretched = square.vertices;
+  stretched.col(1) *= 1 + h;
+  const BoundaryConditions bc2 =
+      computeBoundaryConditions(square, stretched, bulged(0.0, gamma, Bulging::SweptVolume));
+  const double s2 = (2 + h) / 2, trapezoid = (1 + h - s2) * (1 + s2);
+  for (int j = 0; j < square.numFaces(); ++j) {
+    if (square.vertices(square.faces(j, 0), 1) < 0 || square.vertices(square.faces(j, 1), 1) < 0) continue;
+    EXPECT_NEAR(bc2.normalStretch(j), s2 * std::exp(gamma * gamma * trapezoid / (s2 * s2 * 4)), 1e-14);
+  }
+}
+
+TEST(DeformChoices, ReferenceAtGammaIsSolidAngleAtGammaSquaredWhereNormalsStayPositive) {
+  // A convex pose of a convex cage: every normal triangle stays positively oriented, so the unsigned solid angle
+  // is the signed one and only gamma^2 differs. In 2D both use the signed angle: equal on any pose.
+  const Cage sphere = test::makeIcosphere(1);
+  Eigen::MatrixXd convex = sphere.vertices;
+  convex.col(0) *= 1.4;
+  convex.col(1) *= 0.8;
+  for (NormalWeights w : {NormalWeights::Area, NormalWeights::Angle}) {
+    ASSERT_GT(normalSpread(sphere, vertexNormals(sphere, convex, w)).minCoeff(), 0.0);
+    ASSERT_GT(normalSpread(sphere, vertexNormals(sphere, sphere.vertices, w)).minCoeff(), 0.0);
+  }
+  const Cage star = test::makeStarPolygon(5);
+  const std::pair<Cage, Eigen::MatrixXd> cases[] = {{sphere, convex},
+                                                    {star, test::bendPose(star.vertices, 0.4, 3)}};
+  for (const auto& [cage, pose] : cases)
+    for (double blend : {0.0, 1.0})
+      for (NormalWeights w : {NormalWeights::Area, NormalWeights::Angle}) {
+        const double gamma = 1.6;
+        const BoundaryConditions ref = computeBoundaryConditions(cage, pose, bulged(blend, gamma, Bulging::Reference, w));
+        const BoundaryConditions paper =
+            computeBoundaryConditions(cage, pose, bulged(blend, gamma * gamma, Bulging::SolidAngle, w));
+        EXPECT_LT((ref.normalStretch - paper.normalStretch).cwiseAbs().maxCoeff(), 1e-12);
+        const BoundaryConditions flat = computeBoundaryConditions(cage, pose, bulged(blend, 0, Bulging::SolidAngle, w));
+        EXPECT_GT((ref.normalStretch - flat.normalStretch).cwiseAbs().maxCoeff(), 1e-3) << "bulging is on";
+      }
+}
+
+TEST(DeformChoices, AngleWeightedNormalsOfACubeDoNotDependOnItsSplit) {
+  // Each corner of the cube meets three squares at right angles, however they are split: the angle-weighted
+  // normal is the diagonal (+-1, +-1, +-1) / sqrt 3. Area weights count a square once or twice per corner.
+  const Cage cube = test::makeCube();
+  const Eigen::MatrixXd byAngle = vertexNormals(cube, cube.vertices, NormalWeights::Angle);
+  const Eigen::MatrixXd byArea = vertexNormals(cube, cube.vertices, NormalWeights::Area);
+  const Eigen::MatrixXd diagonal = cube.vertices / std::sqrt(3.0);
+  EXPECT_LT((byAngle - diagonal).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_GT((byArea - diagonal).cwiseAbs().maxCoeff(), 0.1);
+}
+
+// The mirror x -> -x of every point.
+Eigen::MatrixXd mirrored(Eigen::MatrixXd points) {
+  points.col(0) *= -1;
+  return points;
+}
+
+TEST(DeformChoices, LiftedCubeStaysMirrorSymmetricWithAngleNormals) {
+  // test::makeCube splits its z and y faces along diagonals that the mirror x -> -x does not keep. Mirror-
+  // symmetric points, the top face lifted: with angle weights the vertex normals stay the box's diagonals, so
+  // bulging sees no change and the result is as symmetric as the cage's geometry (1e-12 diameters); area weights
+  // make the normals, and so the result, depend on the split.
+  const Cage cube = test::makeCube();
+  const Eigen::MatrixXd half = test::randomBoxPoints(20, 3, -0.9, 0.9, 4);
+  Eigen::MatrixXd points(40, 3);
+  points << half, mirrored(half);
+  Eigen::MatrixXd posed = cube.vertices;
+  for (int i = 0; i < 8; ++i)
+    if (posed(i, 2) > 0) posed(i, 2) += 1;
+  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  const double diameter = cageDiameter(posed);
+  for (double blend : {0.0, 1.0}) {
+    auto asymmetry = [&](NormalWeights w) {
+      const Eigen::MatrixXd out = deformer->deform(posed, bulged(blend, 2.0, Bulging::SolidAngle, w));
+      return (mirrored(out.topRows(20)) - out.bottomRows(20)).rowwise().norm().maxCoeff() / diameter;
+    };
+    EXPECT_LE(asymmetry(NormalWeights::Angle), 1e-12) << "blend " << blend;
+    EXPECT_GT(asymmetry(NormalWeights::Area), 1e-5) << "blend " << blend << ": the case tests the split";
+  }
+}
+
+}  // namespace
+}  // namespace somicage
