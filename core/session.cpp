@@ -149,7 +149,7 @@ struct Reader {
       if (v.find("gamma")) view.gamma = number(v, "gamma");
       if (v.find("tractionCorrection")) view.tractionCorrection = boolean(v, "tractionCorrection");
       if (v.find("variant")) {
-        view.variant = findVariant(string(v, "variant"));
+        view.variant = findViewVariant(string(v, "variant"));
         if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
       }
       validateViewSpec(view, source);

@@ -52,8 +52,8 @@ ViewSpec withMethod(ViewSpec view, Method m) {
 
 const char* variantName(Variant variant) { return variantChoices()[static_cast<std::size_t>(variant)].name; }
 
-std::optional<Variant> findVariant(const std::string& name) {
-  if (const VariantChoice* v = somicage::findVariant(name))
+std::optional<Variant> findViewVariant(const std::string& name) {
+  if (const VariantChoice* v = findVariant(name))
     return static_cast<Variant>(v - variantChoices().data());
   return std::nullopt;
 }
@@ -112,7 +112,7 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
       view.gamma = parseNumber(value, option + " gamma");
     } else if (key == "variant") {
       once(view.variant.has_value());
-      view.variant = findVariant(value);
+      view.variant = findViewVariant(value);
       if (!view.variant)
         throw InputError(option, -1, "variant must be " + variantNameList() + ", got '" + value + "'", kViewHint);
     } else if (key == "traction") {

@@ -42,6 +42,6 @@ void validateViewSpec(const ViewSpec& view, const std::string& option);
 ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 
 const char* variantName(Variant variant);  // "global", "local", "affine", "stable"
-std::optional<Variant> findVariant(const std::string& name);
+std::optional<Variant> findViewVariant(const std::string& name);
 
 }  // namespace somicage
