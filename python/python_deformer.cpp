@@ -1,5 +1,6 @@
 #include "python_deformer.h"
 
+#include "deform_choices.h"
 #include "engine.h"
 #include "errors.h"
 #include "numpy_arrays.h"
@@ -125,7 +126,16 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
   }
   const EnclosedMeasure& volume = a.fields.volume;
   py::dict result;  // the keys and order of `somicage analyze --json` (app/cli/command_analyze.cpp)
-  result["method"] = methodName(deformer_->method());
+  const Method method = deformer_->method();
+  result["method"] = methodName(method);
+  if (readsParameter(method, kParamBlend)) {
+    result["variant"] = variantName(params);
+    result["blend"] = params.blend;
+  }
+  if (readsParameter(method, kParamGamma)) result["gamma"] = params.gamma;
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (readsParameter(method, choice.parameter))
+      result[choice.name] = choice.values[static_cast<std::size_t>(choice.get(params))].name;
   result["dimension"] = restCage_.dim();
   result["vertices"] = points_.rows();
   result["closed"] = volume.closed;

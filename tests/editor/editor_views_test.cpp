@@ -228,7 +228,7 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
       {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},
       {{"--view", "somigliana:color=red", "--view", "green"}, "unknown key 'color'"},
-      {{"--view", "phong", "--view", "green"}, "unknown method 'phong'"},
+      {{"--view", "harmonic", "--view", "green"}, "unknown method 'harmonic'"},
       {{"--view", "green:nu=0.3", "--view", "somigliana"}, "green does not read nu"},
       {{"--view", "bem:nu=0.5", "--view", "somigliana"}, "bem nu: the boundary element method cannot use nu = 0.5"},
       {{"--view", "somigliana:nu=0"}, "one view given"},
@@ -277,7 +277,7 @@ TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
       {"{\"method\": \"somigliana\", \"variant\": \"mid\"}", "\"views\" entry 1: field \"variant\" must be"},
       {"{\"method\": \"somigliana\", \"colour\": 1}", "\"views\" entry 1 has an unknown field \"colour\""},
       {"{\"nu\": 0}", "\"views\" entry 1 needs \"method\""},
-      {"{\"method\": \"phong\"}", "unknown method \"phong\""},
+      {"{\"method\": \"harmonic\"}", "unknown method \"harmonic\""},
       {"3", "\"views\" entry 1 must be an object"},
   };
   for (const auto& [replacement, expected] : cases) {

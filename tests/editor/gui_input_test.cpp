@@ -349,7 +349,7 @@ TEST(GuiInput, FinishedWorkIsDrawnWithoutMovingTheMouse) {
       runScenario(dir,
                   "start --compare somigliana,green\n"
                   "still() { sleep 1.5; shot $1_still.png; xdotool key shift; settle; shot $1_redrawn.png; }\n"
-                  "xdotool mousemove 40 403 click 1; waitfor 'job nu sweep' 1 60 || exit 4; still sweep\n"
+                  "xdotool mousemove 40 449 click 1; waitfor 'job nu sweep' 1 60 || exit 4; still sweep\n"
                   // + view (a copy of the Green pane), then that pane's method: BEM, precomputed on the worker.
                   "n=$(grep -c '^job precompute' \"$log\")\n"
                   "xdotool mousemove 33 193 click 1; sleep 1.5; xdotool mousemove 75 193 click 1; sleep 1.5\n"
