@@ -12,6 +12,11 @@ namespace somicage {
 namespace {
 
 TEST(CpuDispatch, RunsTheAvx2FmaCopyExactlyWhereTheCpuHasIt) {
+#ifdef SOMICAGE_SANITIZE
+  // The sanitizer build compiles -O1, where GCC forms no fused multiply-add, so the observation cannot tell the
+  // copies apart there; the Release build runs this test.
+  GTEST_SKIP() << "the dispatch is observed through a fused multiply-add, which -O1 (sanitizer build) never forms";
+#endif
   const std::string target = dispatchedKernelTarget();
 #if SOMICAGE_DISPATCH_CLONES
   const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
