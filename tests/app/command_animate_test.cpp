@@ -66,11 +66,16 @@ struct Glb {
   }
 };
 
-std::string matrixJson(const Eigen::MatrixXd& m) {
+// Rows with 17 significant digits: the session holds exactly the numbers the posed files of `deform` hold.
+std::string exactRowsJson(const Eigen::MatrixXd& m) {
   std::string out = "[";
+  char number[32];
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
     out += i ? ", [" : "[";
-    for (Eigen::Index c = 0; c < m.cols(); ++c) out += (c ? ", " : "") + std::to_string(m(i, c));
+    for (Eigen::Index c = 0; c < m.cols(); ++c) {
+      std::snprintf(number, sizeof number, "%.17g", m(i, c));
+      out += (c ? ", " : "") + std::string(number);
+    }
     out += "]";
   }
   return out + "]";
@@ -98,7 +103,7 @@ class Animate : public ::testing::Test {
       "poses": [)";
     for (int k = 0; k < 3; ++k) {
       session += (k ? ", " : "") + std::string(R"({"name": "p)") + std::to_string(k) + R"(", "vertices": )" +
-                 matrixJson(poses[static_cast<size_t>(k)]) + "}";
+                 exactRowsJson(poses[static_cast<size_t>(k)]) + "}";
     }
     session += R"(], "timeline": {"fps": 24, "first": 0, "last": 12, "loop": true, "interpolation": "catmull-rom",
       "keys": [{"frame": 0, "pose": "p0"}, {"frame": 6, "pose": "p1", "nu": 0.3}, {"frame": 12, "pose": "p2"}]}})";
@@ -390,7 +395,7 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
       dataFile("cube_cage.obj") + R"(", "method": "somigliana",
       "params": {"blend": 0, "nu": 0, "gamma": 0, "tractionCorrection": true},
       "poses": [{"name": "rest", "vertices": )" +
-      matrixJson(rest) + R"(}, {"name": "turned", "vertices": )" + matrixJson(rest * R.transpose()) +
+      exactRowsJson(rest) + R"(}, {"name": "turned", "vertices": )" + exactRowsJson(rest * R.transpose()) +
       R"(}], "timeline": {"fps": 24, "first": 0, "last": 2, "loop": true, "interpolation": "linear",
       "keys": [{"frame": 0, "pose": "rest"}, {"frame": 2, "pose": "turned"}]}})";
   std::ofstream(dir.file("s.json")) << session;
@@ -408,21 +413,6 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
   ASSERT_EQ(r.exitCode, 0) << r;
   const std::vector<Eigen::Vector3d> recomputed = objNormals(dir.file("seq2/tet_0002.obj"));
   EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
-}
-
-// Rows with 17 significant digits: the session holds exactly the numbers the posed files of `deform` hold.
-std::string exactRowsJson(const Eigen::MatrixXd& m) {
-  std::string out = "[";
-  char number[32];
-  for (Eigen::Index i = 0; i < m.rows(); ++i) {
-    out += i ? ", [" : "[";
-    for (Eigen::Index c = 0; c < m.cols(); ++c) {
-      std::snprintf(number, sizeof number, "%.17g", m(i, c));
-      out += (c ? ", " : "") + std::string(number);
-    }
-    out += "]";
-  }
-  return out + "]";
 }
 
 // `animate` plays what the editor shows (issue 23): a version-3 session read by the editor's reader (core/session.h),
