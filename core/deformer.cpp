@@ -49,6 +49,10 @@ void validateDeformParams(const DeformParams& params) {
   }
 }
 
+Eigen::MatrixXd CageDeformer::posedVolumeMesh(const Eigen::MatrixXd&, const DeformParams&) const {
+  return Eigen::MatrixXd(0, dim());
+}
+
 void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params,
                           Eigen::MatrixXd& out) const {
   evaluateFrame(coordinates_, frameWeights(posedVertices, params), dim(), threads_, out);

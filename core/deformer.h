@@ -121,6 +121,12 @@ class CageDeformer {
   virtual std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                             const ProgressCallback& progress) const = 0;
 
+  // A volume method's mesh of the rest cage (MethodDescriptor::needsVolumeMesh; null for the other methods) and its
+  // vertices for a posed cage (#N by d: the cage's, then the Steiner vertices where the frame puts them; empty
+  // without a mesh): what the editor draws as the tetrahedra's wireframe. Validates params.
+  virtual std::shared_ptr<const VolumeMesh> volumeMesh() const { return nullptr; }
+  virtual Eigen::MatrixXd posedVolumeMesh(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const;
+
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
   int numPoints() const { return coordinates_.numPoints(); }

@@ -45,6 +45,11 @@ JsonValue viewToJson(const ViewSpec& view) {
   if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
   if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
   if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
+  if (!view.options.empty()) {
+    JsonValue options = JsonValue::object();
+    for (const auto& [key, value] : view.options) options.set(key, JsonValue::string(value));
+    out.set("options", std::move(options));
+  }
   return out;
 }
 
@@ -134,16 +139,19 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
-  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection"}; nothing else.
+  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection", "options" (the method's
+  // own, as text: {"tet-level": "2"})}; nothing else.
   ViewSpec view(const JsonValue& v, std::size_t i) const {
     const std::string where = "\"views\" entry " + std::to_string(i);
     if (!v.isObject()) fail(where + " must be an object with \"method\"");
     for (const auto& [key, value] : v.members())
-      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection")
-        fail(where + " has an unknown field \"" + key + "\" (expected method, nu, gamma, variant, tractionCorrection)");
+      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection" &&
+          key != "options")
+        fail(where + " has an unknown field \"" + key +
+             "\" (expected method, nu, gamma, variant, tractionCorrection, options)");
     const JsonValue* name = v.find("method");
     if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
-    ViewSpec view{method(name->asString()), {}, {}, {}, {}};
+    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}};
     try {
       if (v.find("nu")) view.nu = number(v, "nu", true);
       if (v.find("gamma")) view.gamma = number(v, "gamma");
@@ -151,6 +159,13 @@ struct Reader {
       if (v.find("variant")) {
         view.variant = findViewVariant(string(v, "variant"));
         if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
+      }
+      if (const JsonValue* options = v.find("options")) {
+        if (!options->isObject()) fail("field \"options\" must be an object of texts");
+        for (const auto& [key, value] : options->members()) {
+          if (!value.isString()) fail("field \"options\" must hold texts: \"" + key + "\" is not one");
+          view.options[key] = value.asString();
+        }
       }
       validateViewSpec(view, source);
     } catch (const InputError& e) {
@@ -269,7 +284,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}});
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}});
     }
   }
   if (const JsonValue* cameraField = root.find("camera")) {

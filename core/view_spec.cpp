@@ -1,6 +1,7 @@
 #include "view_spec.h"
 
 #include <cmath>
+#include <iterator>
 
 #include "errors.h"
 #include "parse_number.h"
@@ -10,6 +11,24 @@ namespace somicage {
 namespace {
 
 const char* const kViewHint = "e.g. --view somigliana:nu=0.45:gamma=1:variant=local:traction=off";
+
+bool hasMethodOption(Method m, const std::string& key) {
+  for (const MethodOptionSpec& o : m->options)
+    if (key == o.key) return true;
+  return false;
+}
+
+// ", or tets, tet-level" for a method with options of its own ("" without).
+std::string ownOptionList(Method m, const std::string& lead) {
+  std::string list;
+  for (const MethodOptionSpec& o : m->options) list += (list.empty() ? lead : ", ") + std::string(o.key);
+  return list;
+}
+
+std::string optionsHint(Method m) {
+  const std::string list = ownOptionList(m, "");
+  return list.empty() ? methodName(m) + " has no options of its own" : "its options: " + list;
+}
 
 bool sameNumber(const std::optional<double>& a, const std::optional<double>& b) {
   return a.has_value() == b.has_value() && (!a || *a == *b);
@@ -32,12 +51,17 @@ DeformParams ViewSpec::params(const DeformParams& shared) const {
 
 bool operator==(const ViewSpec& a, const ViewSpec& b) {
   return a.method == b.method && sameNumber(a.nu, b.nu) && sameNumber(a.gamma, b.gamma) && a.variant == b.variant &&
-         a.tractionCorrection == b.tractionCorrection;
+         a.tractionCorrection == b.tractionCorrection && a.options == b.options;
 }
+
+bool operator<(const DeformerKey& a, const DeformerKey& b) {
+  return a.method != b.method ? a.method < b.method : a.options < b.options;
+}
+bool operator==(const DeformerKey& a, const DeformerKey& b) { return a.method == b.method && a.options == b.options; }
 
 std::vector<ViewSpec> viewsOf(const std::vector<Method>& methods) {
   std::vector<ViewSpec> views;
-  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}});
+  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}, {}});
   return views;
 }
 
@@ -47,6 +71,8 @@ ViewSpec withMethod(ViewSpec view, Method m) {
   if (!readsParameter(m, kParamGamma)) view.gamma.reset();
   if (!readsParameter(m, kParamBlend)) view.variant.reset();
   if (!readsParameter(m, kParamTractionFix)) view.tractionCorrection.reset();
+  for (auto it = view.options.begin(); it != view.options.end();)
+    it = hasMethodOption(m, it->first) ? std::next(it) : view.options.erase(it);
   return view;
 }
 
@@ -71,6 +97,9 @@ void validateViewSpec(const ViewSpec& view, const std::string& option) {
     if (p.set && !readsParameter(view.method, p.parameter))
       throw InputError(option, -1, methodName(view.method) + " does not read " + p.name,
                        "give " + std::string(p.name) + " to a view of " + methodsReading(p.parameter));
+  for (const auto& [key, value] : view.options)
+    if (!hasMethodOption(view.method, key))
+      throw InputError(option, -1, methodName(view.method) + " has no option " + key, optionsHint(view.method));
   // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
   DeformParams p;
   if (view.nu) p.nu = *view.nu;
@@ -94,7 +123,7 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
   if (!method)
     throw InputError(option, -1, "unknown method '" + parts.front() + "' in '" + text + "'",
                      "start with one of " + methodNameList() + ", " + kViewHint);
-  ViewSpec view{*method, {}, {}, {}, {}};
+  ViewSpec view{*method, {}, {}, {}, {}, {}};
   for (std::size_t i = 1; i < parts.size(); ++i) {
     const std::string& part = parts[i];
     const std::size_t eq = part.find('=');
@@ -120,11 +149,13 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
       if (value != "on" && value != "off")
         throw InputError(option, -1, "traction must be on or off, got '" + value + "'", kViewHint);
       view.tractionCorrection = value == "on";
+    } else if (hasMethodOption(view.method, key)) {
+      once(view.options.count(key) > 0);
+      view.options[key] = value;
     } else {
       throw InputError(option, -1,
-                       "unknown key '" + key + "' in '" + text +
-                           "' (expected nu, gamma, variant or "
-                           "traction)",
+                       "unknown key '" + key + "' in '" + text + "' (expected nu, gamma, variant or traction" +
+                           ownOptionList(view.method, ", or ") + ")",
                        kViewHint);
     }
   }

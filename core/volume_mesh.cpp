@@ -53,6 +53,22 @@ double signedSimplexMeasure(const VolumeMesh& mesh, int s) {
   return D.determinant() / factorial(mesh.dim());
 }
 
+Eigen::MatrixXi volumeMeshEdges(const VolumeMesh& mesh) {
+  std::vector<std::array<int, 2>> edges;
+  for (int s = 0; s < mesh.numSimplices(); ++s)
+    for (int a = 0; a <= mesh.dim(); ++a)
+      for (int b = a + 1; b <= mesh.dim(); ++b) {
+        const int u = mesh.simplices(s, a), v = mesh.simplices(s, b);
+        edges.push_back({std::min(u, v), std::max(u, v)});
+      }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  Eigen::MatrixXi out(static_cast<Eigen::Index>(edges.size()), 2);
+  for (std::size_t e = 0; e < edges.size(); ++e)
+    out.row(static_cast<Eigen::Index>(e)) << edges[e][0], edges[e][1];
+  return out;
+}
+
 std::vector<Eigen::MatrixXd> barycentricGradients(const VolumeMesh& mesh) {
   const int d = mesh.dim();
   std::vector<Eigen::MatrixXd> out(static_cast<std::size_t>(mesh.numSimplices()));

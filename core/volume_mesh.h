@@ -32,6 +32,9 @@ double signedSimplexMeasure(const VolumeMesh& mesh, int s);
 // of D_m^-1 (D_m = [v1 - v0, ..., vd - v0]) and minus their sum. Constant in a simplex.
 std::vector<Eigen::MatrixXd> barycentricGradients(const VolumeMesh& mesh);
 
+// The mesh's edges, each once (#E by 2, the smaller index first, sorted): what a wireframe of it draws.
+Eigen::MatrixXi volumeMeshEdges(const VolumeMesh& mesh);
+
 // A face on the mesh's boundary (used by one simplex): that simplex, and its vertex opposite the face.
 struct BoundaryFace {
   int simplex;

@@ -20,14 +20,14 @@ namespace somicage::editor {
 
 std::vector<ViewSpec> AppState::views() const {
   if (compare && compareViews.size() >= 2) return compareViews;
-  return {ViewSpec{method, {}, {}, {}, {}}};
+  return {ViewSpec{method, {}, {}, {}, {}, {}}};
 }
 
-std::vector<Method> AppState::deformerMethods() const {
-  std::vector<Method> methods;
+std::vector<DeformerKey> AppState::deformerKeys() const {
+  std::vector<DeformerKey> keys;
   for (const ViewSpec& view : views())
-    if (std::find(methods.begin(), methods.end(), view.method) == methods.end()) methods.push_back(view.method);
-  return methods;
+    if (std::find(keys.begin(), keys.end(), deformerKey(view)) == keys.end()) keys.push_back(deformerKey(view));
+  return keys;
 }
 
 std::string viewLabel(const AppState& state, std::size_t v) {
@@ -63,7 +63,8 @@ std::string viewLabel(const AppState& state, std::size_t v) {
   if (readsParameter(method, kParamTractionFix) && !params.tractionCorrection)
     label += view.tractionCorrection ? "  no traction fix (own)" : "  no traction fix";
   if (readsParameter(method, kParamCorotational) && params.corotational) label += "  corotational";
-  if (!hasDeformer(state, method)) label += "  (precomputing...)";
+  for (const auto& [key, value] : view.options) label += "  " + key + " " + value + " (own)";
+  if (!hasDeformer(state, deformerKey(view))) label += "  (precomputing...)";
   return label;
 }
 
@@ -75,6 +76,7 @@ std::string viewShortName(const AppState& state, std::size_t v) {
     std::snprintf(buf, sizeof buf, " nu=%.2f", *view.nu);
     name += buf;
   }
+  for (const auto& [key, value] : view.options) name += " " + key + " " + value;
   return name;
 }
 
@@ -85,7 +87,7 @@ namespace {
 // A precompute of `methods`' deformers: the J-based quantities' gradients count in its memory check when shown, and
 // the active device integrates the coordinates when it can (its row integrator: --device cuda runs the whole
 // pipeline on CUDA; the CPU's and the in-place OpenGL device's integrate on the CPU).
-PrecomputeRequest deformerRequest(const AppState& state, std::vector<Method> methods) {
+PrecomputeRequest deformerRequest(const AppState& state, std::vector<DeformerKey> methods) {
   PrecomputeRequest request;
   request.methods = std::move(methods);
   request.withGradients = state.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
@@ -98,7 +100,7 @@ PrecomputeRequest deformerRequest(const AppState& state, std::vector<Method> met
 }  // namespace
 
 void requestScene(AppState& state, std::shared_ptr<const Scene> scene) {
-  PrecomputeRequest request = deformerRequest(state, state.deformerMethods());
+  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
   request.scene = std::move(scene);
   state.loadingScene = true;
   state.pendingRecent.reset();
@@ -109,7 +111,7 @@ namespace {
 
 // Starts loading a scene on the worker with `load`, then precomputing the views' deformers.
 void requestLoad(AppState& state, std::function<Scene()> load) {
-  PrecomputeRequest request = deformerRequest(state, state.deformerMethods());
+  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
   request.loadScene = std::move(load);
   state.loadingScene = true;
   state.pendingRecent.reset();
@@ -127,13 +129,13 @@ void requestSceneFiles(AppState& state, const std::string& meshPath, const std::
 
 void requestDemo(AppState& state, int dim) { requestScene(state, std::make_shared<const Scene>(makeDemoScene(dim))); }
 
-bool hasDeformer(const AppState& state, Method method) { return state.deformers.count(method) > 0; }
+bool hasDeformer(const AppState& state, const DeformerKey& key) { return state.deformers.count(key) > 0; }
 
 void ensureDeformers(AppState& state) {
   if (!state.scene || state.loadingScene) return;
-  std::vector<Method> missing;
-  for (Method m : state.deformerMethods()) {
-    if (!hasDeformer(state, m)) missing.push_back(m);
+  std::vector<DeformerKey> missing;
+  for (const DeformerKey& key : state.deformerKeys()) {
+    if (!hasDeformer(state, key)) missing.push_back(key);
   }
   if (missing.empty()) return;
   PrecomputeRequest request = deformerRequest(state, std::move(missing));
@@ -283,7 +285,7 @@ bool updateDeformation(AppState& state) {
   bool changed = false;
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t v = 0; v < views.size(); ++v) {
-    auto it = state.deformers.find(views[v].method);
+    auto it = state.deformers.find(deformerKey(views[v]));
     if (it == state.deformers.end()) continue;
     try {
       deformOnDevice(state, it->second, views[v].params(state.params), state.deformed[v]);
@@ -305,7 +307,7 @@ void ensureCpuPoints(AppState& state, std::size_t view) {
   state.cpuStale.erase(stale);
   const std::vector<ViewSpec> views = state.views();
   if (view >= views.size()) return;
-  auto it = state.deformers.find(views[view].method);
+  auto it = state.deformers.find(deformerKey(views[view]));
   if (it == state.deformers.end()) return;
   state.deformed.resize(views.size());
   try {
@@ -325,7 +327,7 @@ void setDevice(AppState& state, const std::string& device) {
 const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view) {
   const std::vector<ViewSpec> views = state.views();
   if (view < views.size() && view < state.deformed.size() && state.scene &&
-      state.deformed[view].rows() == state.scene->meshVertices.rows() && hasDeformer(state, views[view].method)) {
+      state.deformed[view].rows() == state.scene->meshVertices.rows() && hasDeformer(state, deformerKey(views[view]))) {
     return state.deformed[view];
   }
   return state.scene->meshVertices;

@@ -125,6 +125,7 @@ struct AppState {
   bool hideUi = false;
   bool showCage = true;
   bool showMesh = true;
+  bool showTets = false;  // the posed tetrahedra of views with a volume mesh (Phong), as a wireframe
   int wireframe = -1;  // -1: automatic (on in 2D), 0 off, 1 on
   bool flatShading = false;
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
@@ -137,8 +138,8 @@ struct AppState {
 
   // The views shown, one per viewport: the compare view's list, or the current method with the shared parameters.
   std::vector<ViewSpec> views() const;
-  // The distinct methods of the views, one deformer each.
-  std::vector<Method> deformerMethods() const;
+  // The distinct deformers of the views (method and method options), one deformer each.
+  std::vector<DeformerKey> deformerKeys() const;
   // The parameters view v deforms with (its own, else the panel's).
   DeformParams viewParams(std::size_t v) const { return views()[v].params(params); }
   int dim() const { return scene ? scene->dim() : 3; }
@@ -180,7 +181,7 @@ void setDevice(AppState& state, const std::string& device);
 
 // The points shown in view `view` (views()): deformed when available, else the rest mesh.
 const Eigen::MatrixXd& displayedPoints(const AppState& state, std::size_t view);
-bool hasDeformer(const AppState& state, Method method);
+bool hasDeformer(const AppState& state, const DeformerKey& key);
 
 // ---- edits (history.h) ----
 // A command changes the document (setPose / setParams / setMethod, which record nothing) and then commits it:

@@ -27,6 +27,7 @@
 #include "event_queue.h"
 #include "export_jobs.h"
 #include "export_panel.h"
+#include "fig8_demo.h"
 #include "frame_pacing.h"
 #include "gl_context.h"
 #include "gpu_deformer.h"
@@ -66,6 +67,7 @@ void applyOptions(AppState& state, const EditorOptions& o) {
   for (const ViewShow& view : o.show.views)
     if (o.range && view.quantity > 0) state.quantities.show.ranges[view.quantity] = RangeSetting{true, *o.range};
   state.showCage = !o.hideCage;
+  state.showTets = o.showTets;
 }
 
 // The devices the editor offers, whether the in-place OpenGL one can run in this context, and the default: opengl on
@@ -404,7 +406,7 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     } else if (!options.meshPath.empty()) {
       requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
     } else {
-      requestDemo(state, options.demoDim);
+      options.demoFig8 ? requestFig8Demo(state, !options.views.empty()) : requestDemo(state, options.demoDim);
     }
     std::string title;
 

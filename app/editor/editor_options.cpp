@@ -99,8 +99,10 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.sessionPath = value();
     } else if (a == "--demo") {
       const std::string& v = value();
-      if (v != "2d" && v != "3d") throw InputError(a, -1, "expected 2d or 3d, got '" + v + "'", "--demo 2d");
+      if (v != "2d" && v != "3d" && v != "fig8")
+        throw InputError(a, -1, "expected 2d, 3d or fig8, got '" + v + "'", "--demo 2d");
       o.demoDim = v == "2d" ? 2 : 3;
+      o.demoFig8 = v == "fig8";
     } else if (a == "--size") {
       const std::string& v = value();
       const std::size_t x = v.find('x');
@@ -129,6 +131,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.nuPlot = true;
     } else if (a == "--hide-cage") {
       o.hideCage = true;
+    } else if (a == "--show-tets") {
+      o.showTets = true;
     } else if (a == "--make-cage") {
       const std::string& v = value();
       const double faces = parseNumber(v, a);
@@ -195,7 +199,8 @@ std::string editorUsage() {
          "       somicage deform|check|bench|help ...   (command line tools, see 'somicage help')\n"
          "\n"
          "With no files the built-in demo opens.\n"
-         "  --demo 2d|3d              which demo (default 3d)\n"
+         "  --demo 2d|3d|fig8         which demo (default 3d; fig8: the paper's Fig. 8, Phong's creases beside\n"
+         "                            Somigliana local nu = 0)\n"
          "  --session FILE.json       open a saved session\n"
          "  --method NAME             " +
          methodNameList() + " (default " + methodName(Method()) +
@@ -211,7 +216,8 @@ std::string editorUsage() {
          "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]\n"
          "                            one side-by-side view with its own parameters (the others follow --nu\n"
          "                            etc.); give it 2 or 3 times, e.g. --view somigliana:nu=0\n"
-         "                            --view somigliana:nu=0.45 (paper Fig. 3)\n"
+         "                            --view somigliana:nu=0.45 (paper Fig. 3); a method's own options too,\n"
+         "                            e.g. --view phong:tet-level=2 (each such view precomputes its own)\n"
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"
@@ -219,6 +225,7 @@ std::string editorUsage() {
          "  --nu-plot                 with --screenshot: sweep nu first, so the panel shows the plot of volume\n"
          "                            change against nu (in the window: the Sweep nu button)\n"
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
+         "  --show-tets               draw the posed tetrahedra of Phong views as a wireframe (View menu)\n"
          "  --make-cage N             with --screenshot: File > Make cage... with N faces, shown once generated\n"
          "  --show detj|distortion|foldover|area|difference|field:VERTEX[,...]\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"

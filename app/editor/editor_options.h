@@ -16,7 +16,8 @@ namespace somicage::editor {
 struct EditorOptions {
   std::string meshPath, cagePath, posedPath;  // empty mesh and cage: the built-in demo
   std::string sessionPath;                    // --session FILE
-  int demoDim = 3;                            // --demo 2d|3d
+  int demoDim = 3;                            // --demo 2d|3d|fig8
+  bool demoFig8 = false;                      // --demo fig8: the paper's Fig. 8 (fig8_demo.h)
   std::optional<Method> method;               // --method
   std::optional<double> nu, gamma, blend;     // --nu (inf allowed), --gamma, --blend
   std::optional<std::string> variant;         // --variant NAME (deform_choices.h), before --blend
@@ -33,6 +34,7 @@ struct EditorOptions {
   int frameDelayMs = 0;                       // --frame-delay MS: testing, every frame MS slower (low frame rates)
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
+  bool showTets = false;                      // --show-tets: the tetrahedral wireframe of volume-mesh views
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
   int makeCageFaces = 0;                      // --make-cage N: open File > Make cage with N faces (screenshots)
   ShowSettings show;                          // --show detj|...|field:VERTEX, per view (view_quantity.h)

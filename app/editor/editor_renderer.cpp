@@ -20,7 +20,7 @@ Renderer::Renderer() = default;
 
 bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, bool newScene) {
   const ViewSpec view = state.views()[v];
-  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(view.method);
+  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(deformerKey(view));
   if (!slot.gpu) slot.gpu = std::make_unique<render::GpuDeformer>();
   const bool newDeformer = slot.uploaded != deformer;
   if (newDeformer) {
@@ -52,7 +52,7 @@ void Renderer::sync(AppState& state) {
     if (!slot.mesh) slot.mesh = std::make_unique<render::MeshRenderer>();
     const bool newScene = slot.sceneGeneration != state.sceneGeneration;
     if (newScene) slot.mesh->setTopology(state.scene->meshTriangles);
-    if (state.devices.inPlace() && hasDeformer(state, views[v].method)) {  // (a failure turns it off)
+    if (state.devices.inPlace() && hasDeformer(state, deformerKey(views[v]))) {  // (a failure turns it off)
       try {
         if (syncGpu(slot, state, v, newScene)) {
           ranOnGpu = true;
@@ -82,7 +82,7 @@ void Renderer::sync(AppState& state) {
       slot.gpu.reset();
       slot.uploaded.reset();
     }
-    const bool deformed = hasDeformer(state, views[v].method) && v < state.deformed.size() &&
+    const bool deformed = hasDeformer(state, deformerKey(views[v])) && v < state.deformed.size() &&
                           state.deformed[v].rows() == state.scene->meshVertices.rows();
     if (newScene || slot.view != views[v] || slot.deformGeneration != state.deformGeneration ||
         slot.showedDeformed != deformed || slot.onGpu) {
@@ -95,6 +95,7 @@ void Renderer::sync(AppState& state) {
     }
   }
   syncScalars(state);
+  for (std::size_t v = 0; v < views.size(); ++v) syncTets(meshes_[v], state, v);
   if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
   if (inPlace && state.devices.inPlace())
     state.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
@@ -115,6 +116,26 @@ void Renderer::sync(AppState& state) {
       preview_.setTopology(maker.candidate()->generated.cage.faces);
       preview_.setPositions(maker.candidate()->generated.cage.vertices);
     }
+  }
+}
+
+void Renderer::syncTets(MeshSlot& slot, const AppState& state, std::size_t v) {
+  const auto found = state.deformers.find(deformerKey(state.views()[v]));
+  const std::shared_ptr<const CageDeformer> deformer = found == state.deformers.end() ? nullptr : found->second;
+  slot.tetsShown = state.showTets && deformer && deformer->volumeMesh();
+  if (!slot.tetsShown) return;
+  if (!slot.tets) slot.tets = std::make_unique<render::CageRenderer>();
+  if (slot.tetsDeformer != deformer) {
+    slot.tets->setTopology(volumeMeshEdges(*deformer->volumeMesh()));
+    slot.tetsDeformer = deformer;
+    slot.tetsGeneration = ~0ull;
+  }
+  if (slot.tetsGeneration == state.deformGeneration) return;
+  try {  // the Steiner vertices where this frame puts them (a solve as small as the mesh)
+    slot.tets->setPositions(deformer->posedVolumeMesh(state.pose, state.viewParams(v)));
+    slot.tetsGeneration = state.deformGeneration;
+  } catch (const InputError&) {  // parameters the method refuses: the deformation reports them
+    slot.tetsShown = false;
   }
 }
 
@@ -161,6 +182,9 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
   previewStyle.faceColor = Eigen::Vector4f(0.20f, 0.85f, 0.35f, 0.10f);
   previewStyle.edgeColor = Eigen::Vector4f(0.10f, 0.80f, 0.25f, 1.0f);
   previewStyle.showHandles = false;
+  render::CageStyle tetsStyle;  // View > Show tetrahedra: edges only, orange (the cage is blue)
+  tetsStyle.edgeColor = Eigen::Vector4f(0.95f, 0.55f, 0.15f, 0.9f);
+  tetsStyle.showFaces = tetsStyle.showHandles = false;
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
     const ViewRect& r = views[v];
     render::ViewportRect rect;
@@ -173,6 +197,7 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
     meshStyle.colorMap = state.quantities.show.view(v).quantity > 0 ? meshes_[v].colorMap : -1;
     if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);
+    if (meshes_[v].tetsShown) meshes_[v].tets->draw(matrices, tetsStyle);
     if (state.cageMaker.isOpen() && state.cageMaker.candidate()) {
       preview_.draw(matrices, previewStyle);  // in place of the scene's cage
     } else if (state.showCage) {

@@ -46,7 +46,14 @@ class Renderer {
     int quantity = 0;                          // and their quantity and range
     ColorRange range;
     int colorMap = -1;  // MeshStyle::colorMap of the uploaded scalars
+    // View > Show tetrahedra: the view's volume mesh as a wireframe (edges of the deformer's mesh, posed).
+    std::unique_ptr<render::CageRenderer> tets;
+    std::shared_ptr<const CageDeformer> tetsDeformer;  // whose mesh the edges are (held: its address stays unique)
+    std::uint64_t tetsGeneration = ~0ull;              // the deformGeneration the positions are posed for
+    bool tetsShown = false;                            // the positions are current and drawn
   };
+  // Poses slot v's tetrahedra for the view's deformer when View > Show tetrahedra is on and it has a volume mesh.
+  void syncTets(MeshSlot& slot, const AppState& state, std::size_t v);
   // Uploads the shown quantity's colour-map coordinates of each view (shared range) when they changed.
   void syncScalars(const AppState& state);
   // Deforms slot v (view v) on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.

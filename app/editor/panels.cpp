@@ -13,6 +13,7 @@
 #include <system_error>
 
 #include "compare_views_panel.h"
+#include "fig8_demo.h"
 #include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
@@ -118,6 +119,9 @@ void drawMainMenu(AppState& state) {
     commandItem(state, "Open mesh + cage...", "open");
     drawOpenRecentMenu(state);
     if (ImGui::MenuItem("2D demo")) openDemo(state, 2);
+    if (ImGui::MenuItem("Fig. 8 demo")) guardUnsaved(state, "open the Fig. 8 demo", [](AppState& s) { requestFig8Demo(s); });
+    tooltip("The paper's Fig. 8: the bar twisted, Phong (James 2020) over a coarse and a finer tetrahedral mesh\n"
+            "of the cage beside Somigliana local nu = 0. Phong creases where the mesh crosses tetrahedra.");
     ImGui::Separator();
     if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
     if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
@@ -164,6 +168,9 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Compare methods", nullptr, &compare)) setCompare(state, compare);
     ImGui::MenuItem("Show cage", nullptr, &state.showCage);
     ImGui::MenuItem("Show mesh", nullptr, &state.showMesh);
+    ImGui::MenuItem("Show tetrahedra", nullptr, &state.showTets);
+    tooltip("Draw the tetrahedral mesh of each Phong view as a wireframe, posed (its Steiner vertices follow the\n"
+            "cage as the frame moves them).");
     ImGui::MenuItem("Timeline and pose library", nullptr, &state.animation.showPanels);
     ImGui::EndMenu();
   }
@@ -226,7 +233,7 @@ void drawControlPanel(AppState& state) {
   sectionHeader("Somigliana parameters");
   // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
   bool parametersUsed = false;
-  for (Method m : state.deformerMethods()) parametersUsed |= m->parameters != 0;
+  for (const DeformerKey& key : state.deformerKeys()) parametersUsed |= key.method->parameters != 0;
   if (!parametersUsed) ImGui::BeginDisabled();
   DeformParams p = state.params;
   std::string changed;  // the committed step's name, for edits that are complete at once

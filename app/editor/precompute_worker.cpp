@@ -15,7 +15,8 @@ void requireMemoryFor(const PrecomputeRequest& request) {
   const Scene& scene = *request.scene;
   MemoryEstimate estimate;
   const std::size_t points = static_cast<std::size_t>(scene.meshVertices.rows());
-  for (Method m : request.methods) {
+  for (const DeformerKey& key : request.methods) {
+    const Method m = key.method;
     estimate += estimatePrecomputeMemory(m, scene.dim(), scene.restCage.numVertices(), scene.restCage.numFaces(),
                                          points, request.options.floatStorage, request.options.threads);
     if (request.withGradients)
@@ -41,11 +42,14 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
     const std::size_t n = request.methods.size();
     for (std::size_t k = 0; k < n; ++k) {
       if (context.cancelled()) throw Cancelled();
-      const Method m = request.methods[k];
-      context.setStage(std::string(m->displayName) + " " + std::to_string(k + 1) + "/" + std::to_string(n));
+      const DeformerKey& key = request.methods[k];
+      context.setStage(std::string(key.method->displayName) + " " + std::to_string(k + 1) + "/" + std::to_string(n));
       const double share = 1.0 / static_cast<double>(n);
-      out.deformers[m] = makeDeformer(m, request.scene->restCage, request.scene->meshVertices, request.options,
-                                      context.span(static_cast<double>(k) * share, static_cast<double>(k + 1) * share));
+      PrecomputeOptions options = request.options;
+      options.methodOptions = key.options;
+      out.deformers[key] =
+          makeDeformer(key.method, request.scene->restCage, request.scene->meshVertices, options,
+                       context.span(static_cast<double>(k) * share, static_cast<double>(k + 1) * share));
     }
     context.report(1.0);
   } catch (const Cancelled&) {

@@ -14,6 +14,7 @@
 #include "background_job.h"
 #include "deformer.h"
 #include "scene.h"
+#include "view_spec.h"
 
 namespace somicage::editor {
 
@@ -24,13 +25,14 @@ inline PrecomputeOptions interactiveOptions() {
   return options;
 }
 
-using DeformerSet = std::map<Method, std::shared_ptr<const CageDeformer>>;
+// One deformer per method and method options (views with equal keys share it).
+using DeformerSet = std::map<DeformerKey, std::shared_ptr<const CageDeformer>>;
 
 struct PrecomputeRequest {
   // Either a ready scene, or a loader run on the worker (file loading can take a while too).
   std::shared_ptr<const Scene> scene;
   std::function<Scene()> loadScene;
-  std::vector<Method> methods;  // deformers to build, in this order
+  std::vector<DeformerKey> methods;  // deformers to build, in this order (each with its options)
   PrecomputeOptions options = interactiveOptions();
   bool withGradients = false;  // a J-based quantity is shown: its gradients count in the memory check too
 };

@@ -35,7 +35,7 @@ void selectedElement(const AppState& state, int& vertex, int& face) {
 
 // View v's deformer (null while its method's precompute runs).
 std::shared_ptr<const CageDeformer> deformerOf(const AppState& state, std::size_t v) {
-  const auto d = state.deformers.find(state.views()[v].method);
+  const auto d = state.deformers.find(deformerKey(state.views()[v]));
   return d == state.deformers.end() ? nullptr : d->second;
 }
 

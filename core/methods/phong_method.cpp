@@ -103,6 +103,14 @@ class PhongDeformer final : public CageDeformer {
     return W;
   }
 
+  std::shared_ptr<const VolumeMesh> volumeMesh() const override { return mesh_; }
+  Eigen::MatrixXd posedVolumeMesh(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const override {
+    SOMICAGE_ASSERT(posedVertices.rows() == rest_.numVertices() && posedVertices.cols() == dim(),
+                    "the posed cage has the rest cage's vertex count and dimension");
+    validatePhongParams(params);
+    return meshPositions(posedVertices, params.nu);
+  }
+
   // d/dX_b of the row above: column (v_k, 0): g_k[b]; column (v_k, 1 + a): 1/2 (g_k[b] (X - X_v_k)_a + l_k delta_ab).
   std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                     const ProgressCallback&) const override {

@@ -92,8 +92,8 @@ TEST(EditorWorker, PrecomputesEveryRequestedMethod) {
   // translates them (partition of unity).
   const Scene& scene = *r.scene;
   const double diameter = cageDiameter(scene.restCage.vertices);
-  for (Method m : r.methods) {
-    SCOPED_TRACE(methodName(m));
+  for (const DeformerKey& m : r.methods) {
+    SCOPED_TRACE(methodName(m.method));
     ASSERT_EQ(out->deformers.count(m), 1u);
     const CageDeformer& deformer = *out->deformers.at(m);
     ASSERT_EQ(deformer.numPoints(), scene.meshVertices.rows());

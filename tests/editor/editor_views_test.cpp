@@ -26,12 +26,12 @@ using namespace somicage::editor;
 
 namespace {
 
-ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}}; }
+ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}, {}}; }
 
 // The 3D demo with views: Somigliana at nu 0, Somigliana at nu 0.45, Somigliana with the panel's nu; bent.
 void loadTwoNu(AppState& state) {
   state.compare = true;
-  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}}};
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}, {}}};
   state.params.nu = 0.2;
   openDemoScene(state, 3);
   ASSERT_EQ(state.deformers.size(), 1u);  // one precompute: nu never re-integrates
@@ -209,8 +209,8 @@ TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
                                            "somigliana:nu=0.45:gamma=2:variant=local:traction=off", "--view", "mvc"});
   ASSERT_EQ(o.views.size(), 3u);
   EXPECT_TRUE(o.views[0] == somiglianaAt(0.0));
-  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false}));
-  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false, {}}));
+  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}));
   EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:nu=-inf", "--view", "green"}).views[0] ==
               somiglianaAt(-std::numeric_limits<double>::infinity()));
   // --compare is the list of views without their own values.
@@ -246,8 +246,8 @@ TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   a.compare = true;
   a.compareViews = {
       somiglianaAt(1.0 / 3.0),
-      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true},
-      ViewSpec{methods::green(), {}, {}, {}, {}}};
+      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true, {}},
+      ViewSpec{methods::green(), {}, {}, {}, {}, {}}};
   const Session b = sessionFromJson(sessionToJson(a), "s.json");
   ASSERT_EQ(b.compareViews.size(), 3u);
   for (std::size_t v = 0; v < 3; ++v) EXPECT_TRUE(b.compareViews[v] == a.compareViews[v]) << "view " << v;
@@ -308,14 +308,14 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   state.compare = true;
   setCompareViews(state, {somiglianaAt(0.0)});  // one: refused
   EXPECT_TRUE(state.compareViews == viewsOf(defaultCompareMethods()));
-  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}}});
+  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}});
   ASSERT_EQ(state.views().size(), 3u);
   state.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
   removeCompareView(state, 1);
   ASSERT_EQ(state.views().size(), 2u);
-  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}));
   EXPECT_EQ(state.quantities.show.view(1).quantity, quantityIndex("detj", "test"));  // its Show choice moved with it
   removeCompareView(state, 0);                                                       // two stay
   EXPECT_EQ(state.views().size(), 2u);
-  EXPECT_EQ(state.deformerMethods().size(), 2u);
+  EXPECT_EQ(state.deformerKeys().size(), 2u);
 }
