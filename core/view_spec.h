@@ -35,6 +35,7 @@ inline bool operator!=(const ViewSpec& a, const ViewSpec& b) { return !(a == b);
 // What a deformer is made from besides the scene: views with equal keys share one.
 struct DeformerKey {
   DeformerKey(Method m, MethodOptions o = {}) : method(m), options(std::move(o)) {}  // NOLINT: a method, no options
+  DeformerKey(const MethodDescriptor& m) : method(m) {}                               // NOLINT: as Method
   Method method;
   MethodOptions options;
 };

@@ -346,9 +346,49 @@ def cache_follows_the_object():
     assert not addon_binding._deformers, "a deleted object's deformer is still in the cache"
 
 
+def u_block(name="UBlock"):
+    """A U extruded along z (arms up, gap between them): not star-shaped from its centroid, which lies in the gap."""
+    outline = [(0, 0), (3, 0), (3, 3), (2, 3), (2, 1), (1, 1), (1, 3), (0, 3)]
+    def make(bm):
+        bottom = [bm.verts.new((x - 1.5, y - 1.5, -0.5)) for x, y in outline]
+        top = [bm.verts.new((x - 1.5, y - 1.5, 0.5)) for x, y in outline]
+        bm.faces.new(list(reversed(bottom)))
+        bm.faces.new(top)
+        for k in range(len(outline)):
+            bm.faces.new((bottom[k], bottom[(k + 1) % len(outline)], top[(k + 1) % len(outline)], top[k]))
+    return add_mesh(name, make)
+
+
+def phong_binds_a_star_shaped_cage():
+    """Phong (James 2020, the paper's Fig. 8) from the method menu: on a box (star-shaped: the engine's star of its
+    faces is the tetrahedral mesh) it reproduces an affine pose of the cage exactly (a closed form: the mesh moves by
+    the same map). The add-on has no tetrahedral mesh option: a cage that is not star-shaped from its centroid is
+    refused with the engine's reason."""
+    mesh_object, cage = ball(radius=0.4), box()
+    original = local(mesh_object.data)
+    prepare(mesh_object, cage)
+    mesh_object.somicage.method = "phong"
+    assert bpy.ops.somicage.bind() == {"FINISHED"}
+    check_follows_translation(mesh_object, cage, original, "phong")
+    A = np.array([[1.2, 0.3, 0.0], [-0.1, 0.8, 0.2], [0.1, 0.0, 1.1]])
+    rest = local(cage.data)
+    cage.data.vertices.foreach_set("co", (rest @ A.T).astype(np.float32).ravel())
+    cage.data.update()
+    bpy.context.view_layer.update()
+    check_close("phong, an affine pose", shown(mesh_object), original @ A.T)
+    clear()
+    mesh_object, cage = ball(radius=0.3), u_block()
+    original = local(mesh_object.data)
+    prepare(mesh_object, cage)
+    mesh_object.somicage.method = "phong"
+    message = bind_error(mesh_object)
+    check_untouched(mesh_object, original)
+    assert "cannot bind 'Ball' to cage 'UBlock'" in message and "not star-shaped" in message, message
+
+
 CASES = (module_not_found, failed_binds_change_nothing, modifier_cages_bind, warnings_name_the_objects,
          rebake_replaces_keys, live_and_keys_do_not_fight, unbind_keeps_or_removes_keys, failed_bake_changes_nothing,
-         cache_follows_the_object)
+         cache_follows_the_object, phong_binds_a_star_shaped_cage)
 failed = []
 for case in CASES:
     clear()

@@ -338,6 +338,27 @@ TEST(PhongMethod, ReproducesAffinePosesWithGivenAndGeneratedMeshes) {
   }
 }
 
+// What the editor draws as the tetrahedra's wireframe: the deformer's own mesh, posed as a frame poses it (the cage's
+// vertices, then the Steiner vertices where the dense reference solve puts them); methods without a mesh have none.
+TEST(PhongMethod, PosedVolumeMeshIsTheCageThenTheSteinerVerticesOfTheFrame) {
+  const VolumeMesh mesh = heldOutCubeMesh();
+  const Cage cube = test::makeCube();
+  const auto deformer = makeDeformer(methods::phong(), cube, test::randomBoxPoints(20, 3, -0.9, 0.9, 5), withMesh(mesh));
+  ASSERT_TRUE(deformer->volumeMesh());
+  EXPECT_EQ(deformer->volumeMesh()->vertices, mesh.vertices);
+  EXPECT_EQ(deformer->volumeMesh()->simplices, mesh.simplices);
+  Eigen::MatrixXd x = mesh.vertices;
+  x.topRows(8) = bentCube(cube.vertices);
+  for (double nu : {0.0, 0.45}) {
+    const Eigen::MatrixXd posed = deformer->posedVolumeMesh(x.topRows(8), atNu(nu));
+    EXPECT_LE((posed - refSteiner(mesh, x, {8, 9}, nu)).cwiseAbs().maxCoeff(), 1e-12) << "nu " << nu;
+  }
+  EXPECT_THROW(deformer->posedVolumeMesh(x.topRows(8), atNu(INFINITY)), InputError);
+  const auto green = makeDeformer(methods::green(), cube, test::randomBoxPoints(5, 3, -0.9, 0.9, 5));
+  EXPECT_FALSE(green->volumeMesh());
+  EXPECT_EQ(green->posedVolumeMesh(cube.vertices, {}).rows(), 0);
+}
+
 // Across an interior face the positions agree (both sides interpolate the same x_i and F_i) while J jumps.
 TEST(PhongMethod, IsContinuousAcrossInteriorFacesWhileItsJacobianJumps) {
   const Cage cube = test::makeCube();

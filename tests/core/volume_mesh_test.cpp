@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <utility>
 
 #include "core/test_shapes.h"
 #include "core/volume_mesh_checks.h"
@@ -22,6 +24,26 @@ TEST(VolumeMesh, StarOfAStarShapedCageFillsIt) {
     VolumeMesh copy = *star;
     EXPECT_EQ(checkVolumeMesh(copy, cage, {"star", {}, {}}), 0);
   }
+}
+
+// The cube's star: its 18 cage edges (12 sides, 6 face diagonals) and 8 spokes to the centre, each once; the
+// L's polygon fan (2D): its 8 sides and 8 spokes.
+TEST(VolumeMesh, EdgesAreTheCagesAndTheSpokesEachOnce) {
+  const Cage cube = test::makeCube();
+  const Eigen::MatrixXi edges = volumeMeshEdges(*starVolumeMesh(cube));
+  ASSERT_EQ(edges.rows(), 26);
+  std::set<std::pair<int, int>> expected;
+  for (int j = 0; j < cube.numFaces(); ++j)
+    for (int k = 0; k < 3; ++k)
+      expected.insert(std::minmax(cube.faces(j, k), cube.faces(j, (k + 1) % 3)));
+  for (int v = 0; v < 8; ++v) expected.insert({v, 8});
+  std::set<std::pair<int, int>> got;
+  for (int e = 0; e < edges.rows(); ++e) {
+    EXPECT_LT(edges(e, 0), edges(e, 1));
+    got.insert({edges(e, 0), edges(e, 1)});
+  }
+  EXPECT_EQ(got, expected);
+  EXPECT_EQ(volumeMeshEdges(*starVolumeMesh(makePolygonCage(test::lLoop()))).rows(), 2 * test::lLoop().rows());
 }
 
 TEST(VolumeMesh, NoStarForACageNotStarShapedFromItsCentroid) {

@@ -96,7 +96,7 @@ TEST(EditorViews, TwoViewsOfOneMethodDeformAtTheirOwnNuAndTheOthersFollowThePane
 }
 
 TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
-  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false};
+  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false, {}};
   DeformParams shared;
   shared.nu = 0.3;
   shared.blend = 0.25;
@@ -213,6 +213,11 @@ TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
   EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}));
   EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:nu=-inf", "--view", "green"}).views[0] ==
               somiglianaAt(-std::numeric_limits<double>::infinity()));
+  // A method's own options (method.h): views of Phong with their own tetrahedral mesh level.
+  const EditorOptions t = parseEditorArgs({"--view", "phong:tet-level=2:nu=0.3", "--view", "phong"});
+  EXPECT_EQ(t.views[0].options, (MethodOptions{{"tet-level", "2"}}));
+  EXPECT_EQ(t.views[0].nu, 0.3);
+  EXPECT_TRUE(t.views[1].options.empty());
   // --compare is the list of views without their own values.
   const EditorOptions c = parseEditorArgs({"--compare", "somigliana,green"});
   EXPECT_TRUE(c.views == viewsOf({methods::somigliana(), methods::green()}));
@@ -228,6 +233,9 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
       {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},
       {{"--view", "somigliana:color=red", "--view", "green"}, "unknown key 'color'"},
+      {{"--view", "somigliana:tet-level=2", "--view", "green"}, "unknown key 'tet-level'"},
+      {{"--view", "phong:level=2", "--view", "green"}, "(expected nu, gamma, variant or traction, or tets, tet-level)"},
+      {{"--view", "phong:tet-level=1:tet-level=2", "--view", "green"}, "'tet-level' given twice"},
       {{"--view", "harmonic", "--view", "green"}, "unknown method 'harmonic'"},
       {{"--view", "green:nu=0.3", "--view", "somigliana"}, "green does not read nu"},
       {{"--view", "bem:nu=0.5", "--view", "somigliana"}, "bem nu: the boundary element method cannot use nu = 0.5"},
@@ -247,7 +255,7 @@ TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   a.compareViews = {
       somiglianaAt(1.0 / 3.0),
       ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true, {}},
-      ViewSpec{methods::green(), {}, {}, {}, {}, {}}};
+      ViewSpec{methods::phong(), {}, {}, {}, {}, {{"tet-level", "2"}, {"tets", "a \"b\".mesh"}}}};
   const Session b = sessionFromJson(sessionToJson(a), "s.json");
   ASSERT_EQ(b.compareViews.size(), 3u);
   for (std::size_t v = 0; v < 3; ++v) EXPECT_TRUE(b.compareViews[v] == a.compareViews[v]) << "view " << v;
@@ -257,7 +265,7 @@ TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   for (const auto& [key, value] : old.members())
     if (key != "views") withoutViews.set(key, value);
   const Session c = sessionFromJson(withoutViews.dump(2), "s.json");
-  EXPECT_TRUE(c.compareViews == viewsOf({methods::somigliana(), methods::somigliana(), methods::green()}));
+  EXPECT_TRUE(c.compareViews == viewsOf({methods::somigliana(), methods::somigliana(), methods::phong()}));
   // The state takes them over and gives them back.
   AppState state;
   state.compareViews = b.compareViews;
@@ -276,6 +284,9 @@ TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
       {"{\"method\": \"somigliana\", \"nu\": \"x\"}", "\"views\" entry 1: field \"nu\" must be a number"},
       {"{\"method\": \"somigliana\", \"variant\": \"mid\"}", "\"views\" entry 1: field \"variant\" must be"},
       {"{\"method\": \"somigliana\", \"colour\": 1}", "\"views\" entry 1 has an unknown field \"colour\""},
+      {"{\"method\": \"phong\", \"options\": 2}", "\"views\" entry 1: field \"options\" must be an object"},
+      {"{\"method\": \"phong\", \"options\": {\"tet-level\": 2}}", "\"tet-level\" is not one"},
+      {"{\"method\": \"green\", \"options\": {\"tet-level\": \"2\"}}", "green has no option tet-level"},
       {"{\"nu\": 0}", "\"views\" entry 1 needs \"method\""},
       {"{\"method\": \"harmonic\"}", "unknown method \"harmonic\""},
       {"3", "\"views\" entry 1 must be an object"},
@@ -318,4 +329,33 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   removeCompareView(state, 0);                                                       // two stay
   EXPECT_EQ(state.views().size(), 2u);
   EXPECT_EQ(state.deformerKeys().size(), 2u);
+}
+
+// Views that differ in a method option (the Fig. 8 demo's coarse and finer tetrahedra) have deformers of their own,
+// each made with its options: the star (no tet-level, one Steiner vertex) and CGAL's level 1; views with equal
+// options share one.
+TEST(EditorViews, ViewsWithTheirOwnMethodOptionsHaveTheirOwnDeformers) {
+  AppState state;
+  ViewSpec star{methods::phong(), {}, {}, {}, {}, {}}, level1 = star, level1AtNu = star;
+  level1.options["tet-level"] = "1";
+  level1AtNu.options["tet-level"] = "1";
+  level1AtNu.nu = 0.3;
+  state.compare = true;
+  state.compareViews = {star, level1, level1AtNu};
+  openDemoScene(state, 3);
+  ASSERT_EQ(state.deformers.size(), 2u);
+  const CageDeformer& a = *state.deformers.at(DeformerKey(methods::phong()));
+  const CageDeformer& b = *state.deformers.at(deformerKey(level1));
+  EXPECT_EQ(a.volumeMesh()->numVertices(), state.scene->restCage.numVertices() + 1) << "the star";
+  EXPECT_GT(b.volumeMesh()->numVertices(), a.volumeMesh()->numVertices()) << "CGAL's mesh";
+  EXPECT_EQ(deformerKey(level1), deformerKey(level1AtNu));
+  EXPECT_NE(viewLabel(state, 1).find("tet-level 1 (own)"), std::string::npos) << viewLabel(state, 1);
+  // The panes show what their own deformers give.
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i) pose(i, 1) += 0.3 * pose(i, 0) * pose(i, 0);
+  setPose(state, pose);
+  ASSERT_TRUE(updateDeformation(state));
+  EXPECT_LE(maxDifference(state.deformed[0], a.deform(pose, state.viewParams(0))), 1e-12);
+  EXPECT_LE(maxDifference(state.deformed[1], b.deform(pose, state.viewParams(1))), 1e-12);
+  EXPECT_GT(maxDifference(state.deformed[0], state.deformed[1]), 1e-3) << "two meshes, two deformations";
 }

@@ -251,7 +251,7 @@ TEST(GuiInput, MakeCageAcceptAndUndoReplaceTheCageAndGiveItBack) {
       dir,
       "start\nxdotool mousemove 150 690; settle; shot before.png\n"
       "xdotool mousemove 18 9 click 1; sleep 0.5; shot menu.png\n"
-      "xdotool mousemove 60 159 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
+      "xdotool mousemove 60 176 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
       "waitfor 'cage candidate' 1 60 || exit 4\nsettle; shot dialog.png\n"
       "xdotool mousemove 760 76; xdotool keydown ctrl click 1 keyup ctrl; sleep 0.3\n"
       "xdotool key ctrl+a; xdotool type --delay 20 '60'; xdotool key Return\n"
@@ -355,7 +355,7 @@ TEST(GuiInput, FinishedWorkIsDrawnWithoutMovingTheMouse) {
                   "xdotool mousemove 33 193 click 1; sleep 1.5; xdotool mousemove 75 193 click 1; sleep 1.5\n"
                   "xdotool mousemove 60 268 click 1; waitfor 'job precompute' $((n + 1)) 120 || exit 4; still bem\n"
                   "xdotool mousemove 18 9 click 1; sleep 1.5\n"
-                  "xdotool mousemove 60 159 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
+                  "xdotool mousemove 60 176 click 1; waitfor 'dialog Make cage' 1 10 || exit 4\n"
                   "waitfor 'cage candidate' 1 120 || exit 4; still cage\n"
                   "xdotool key ctrl+q; settle; alive && xdotool key d; finish\n");
   const ViewRect window{0, 0, kWidth, kHeight - 26};  // all but the status bar
