@@ -57,6 +57,12 @@ TEST(EditorOptions, DemoByDefault) {
   EXPECT_TRUE(o.meshPath.empty());
   EXPECT_EQ(o.demoDim, 3);
   EXPECT_EQ(parseEditorArgs({"--demo", "2d"}).demoDim, 2);
+  EXPECT_FALSE(o.demoFig8);
+  EXPECT_FALSE(o.showTets);
+  const EditorOptions fig8 = parseEditorArgs({"--demo", "fig8", "--show-tets"});
+  EXPECT_TRUE(fig8.demoFig8);
+  EXPECT_EQ(fig8.demoDim, 3);
+  EXPECT_TRUE(fig8.showTets);
 }
 
 // A mesh alone opens with a generated cage (scene.h): no cage path.
@@ -88,6 +94,7 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--method"}), "--method");
   EXPECT_EQ(sourceOf({"--show", "volume"}), "--show");
   EXPECT_EQ(sourceOf({"--show"}), "--show");
+  EXPECT_EQ(sourceOf({"--demo", "fig9"}), "--demo");
 }
 
 TEST(EditorOptions, ShowNamesAQuantityDescriptor) {

@@ -15,6 +15,7 @@
 #include "editor_options.h"
 #include "editor_test_support.h"
 #include "errors.h"
+#include "fig8_demo.h"
 #include "json.h"
 #include "methods/method_descriptors.h"
 #include "quantity_overlay.h"
@@ -358,4 +359,34 @@ TEST(EditorViews, ViewsWithTheirOwnMethodOptionsHaveTheirOwnDeformers) {
   EXPECT_LE(maxDifference(state.deformed[0], a.deform(pose, state.viewParams(0))), 1e-12);
   EXPECT_LE(maxDifference(state.deformed[1], b.deform(pose, state.viewParams(1))), 1e-12);
   EXPECT_GT(maxDifference(state.deformed[0], state.deformed[1]), 1e-3) << "two meshes, two deformations";
+}
+
+// The Fig. 8 demo opens posed (the opened state: nothing to undo, nothing unsaved) with its three panes and three
+// deformers; its pose is a twist about x (x and the distance to the arched axis kept) plus the arch.
+TEST(EditorViews, TheFig8DemoOpensTwistedWithPhongOnTwoMeshesBesideSomigliana) {
+  AppState state;
+  requestFig8Demo(state);
+  installNextOutcome(state);
+  ASSERT_TRUE(state.scene) << (state.errors.empty() ? "no scene" : state.errors.front());
+  EXPECT_TRUE(state.compare);
+  EXPECT_TRUE(state.views() == fig8Views());
+  EXPECT_EQ(state.deformers.size(), 3u);
+  EXPECT_FALSE(state.history.canUndo());
+  EXPECT_FALSE(hasUnsavedChanges(state));
+  const Eigen::MatrixXd& rest = state.scene->restCage.vertices;
+  ASSERT_EQ(state.pose.rows(), rest.rows());
+  const double half = rest.col(0).cwiseAbs().maxCoeff();
+  double largestTurn = 0;
+  for (Eigen::Index v = 0; v < rest.rows(); ++v) {
+    const double t = rest(v, 0) / half, arch = kFig8ArchHeight * (1 - t * t);
+    EXPECT_EQ(state.pose(v, 0), rest(v, 0));
+    const Eigen::Vector2d before(rest(v, 1), rest(v, 2)), after(state.pose(v, 1) - arch, state.pose(v, 2));
+    EXPECT_NEAR(after.norm(), before.norm(), 1e-12);
+    const double turn = std::atan2(before.x() * after.y() - before.y() * after.x(), before.dot(after));
+    EXPECT_NEAR(turn, kFig8TwistRadians * t, 1e-12) << "vertex " << v;
+    largestTurn = std::max(largestTurn, std::abs(turn));
+  }
+  EXPECT_NEAR(largestTurn, kFig8TwistRadians, 1e-12);
+  // The opened session keeps the panes' options.
+  EXPECT_TRUE(sessionFromJson(sessionToJson(makeSession(state)), "s.json").compareViews == fig8Views());
 }
