@@ -45,6 +45,8 @@ JsonValue viewToJson(const ViewSpec& view) {
   if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
   if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
   if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
+  for (const auto& [name, value] : view.choices)
+    out.set(name, JsonValue::string(findChoiceParameter(name)->values[static_cast<std::size_t>(value)].name));
   if (!view.options.empty()) {
     JsonValue options = JsonValue::object();
     for (const auto& [key, value] : view.options) options.set(key, JsonValue::string(value));
@@ -139,19 +141,21 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
-  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection", "options" (the method's
-  // own, as text: {"tet-level": "2"})}; nothing else.
+  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection", the named choices
+  // ("bulging", "normals") and "options" (the method's own, as text: {"tet-level": "2"}); nothing else.
   ViewSpec view(const JsonValue& v, std::size_t i) const {
     const std::string where = "\"views\" entry " + std::to_string(i);
     if (!v.isObject()) fail(where + " must be an object with \"method\"");
     for (const auto& [key, value] : v.members())
       if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection" &&
-          key != "options")
-        fail(where + " has an unknown field \"" + key +
-             "\" (expected method, nu, gamma, variant, tractionCorrection, options)");
+          key != "options" && !findChoiceParameter(key)) {
+        std::string keys = "method, nu, gamma, variant, tractionCorrection";
+        for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
+        fail(where + " has an unknown field \"" + key + "\" (expected " + keys + ", options)");
+      }
     const JsonValue* name = v.find("method");
     if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
-    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}};
+    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}, {}};
     try {
       if (v.find("nu")) view.nu = number(v, "nu", true);
       if (v.find("gamma")) view.gamma = number(v, "gamma");
@@ -160,6 +164,8 @@ struct Reader {
         view.variant = findViewVariant(string(v, "variant"));
         if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
       }
+      for (const ChoiceParameter& choice : choiceParameters())
+        if (const std::optional<int> value = readChoice(v, choice, source)) view.choices[choice.name] = *value;
       if (const JsonValue* options = v.find("options")) {
         if (!options->isObject()) fail("field \"options\" must be an object of texts");
         for (const auto& [key, value] : options->members()) {
@@ -284,7 +290,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}});
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}, {}});
     }
   }
   if (const JsonValue* cameraField = root.find("camera")) {

@@ -5,11 +5,13 @@
 // Pure, no GL.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "deform_choices.h"
 #include "deformer.h"
 
 namespace somicage {
@@ -21,13 +23,15 @@ struct ViewSpec {
   std::optional<double> nu, gamma;  // absent: the panel's
   std::optional<Variant> variant;
   std::optional<bool> tractionCorrection;
+  // Its own values of the named choices (deform_choices.h): ChoiceParameter::name -> the value's index.
+  std::map<std::string, int> choices;
   // The method's own precompute options (MethodDescriptor::options), e.g. Phong's {"tet-level": "2"}: views that
   // differ here have deformers of their own (the Fig. 8 demo's coarse and finer tetrahedra).
   MethodOptions options;
 
   // The parameters this view deforms with: `shared` with this view's own values in place.
   DeformParams params(const DeformParams& shared) const;
-  bool overrides() const { return nu || gamma || variant || tractionCorrection; }
+  bool overrides() const { return nu || gamma || variant || tractionCorrection || !choices.empty(); }
 };
 bool operator==(const ViewSpec& a, const ViewSpec& b);  // exact (bitwise numbers)
 inline bool operator!=(const ViewSpec& a, const ViewSpec& b) { return !(a == b); }
@@ -54,12 +58,15 @@ ViewSpec withMethod(ViewSpec view, Method m);
 // option that is not the method's (an option's value is checked where it is used: the precompute).
 void validateViewSpec(const ViewSpec& view, const std::string& option);
 
-// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off][:OPTION=VALUE]" (--view; OPTION
-// one of the method's own, e.g. phong:tet-level=2). Throws InputError(option, ...) naming what is wrong: an unknown
+// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off][:bulging=B][:normals=N]
+// [:OPTION=VALUE]" (--view; every named choice of deform_choices.h is a key, and so is each of the method's own
+// options, e.g. phong:tet-level=2). Throws InputError(option, ...) naming what is wrong: an unknown
 // method or key, a repeated key, a bad value.
 ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 
 const char* variantName(Variant variant);  // "global", "local", "affine", "stable"
+// The choice parameter of that name (deform_choices.h), or null.
+const ChoiceParameter* findChoiceParameter(const std::string& name);
 std::optional<Variant> findViewVariant(const std::string& name);
 
 }  // namespace somicage

@@ -8,10 +8,10 @@
 namespace somicage::editor {
 
 std::vector<ViewSpec> fig8Views() {
-  ViewSpec coarse{methods::phong(), {}, {}, {}, {}, {}};
+  ViewSpec coarse{methods::phong(), {}, {}, {}, {}, {}, {}};
   ViewSpec fine = coarse;
   fine.options["tet-level"] = kFig8FineTetLevel;
-  const ViewSpec somigliana{methods::somigliana(), 0.0, {}, Variant::Local, {}, {}};
+  const ViewSpec somigliana{methods::somigliana(), 0.0, {}, Variant::Local, {}, {}, {}};
   return {coarse, fine, somigliana};
 }
 
