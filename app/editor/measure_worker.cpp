@@ -42,8 +42,9 @@ void requireGradientMemory(const MeasureRequest& request, const std::vector<cons
   MemoryEstimate estimate;
   estimate.points = static_cast<std::size_t>(scene.meshVertices.rows());
   for (const CageDeformer* d : missing)
-    estimate.gradients += estimateGradientBytes(d->method(), scene.dim(), scene.restCage.numVertices(),
-                                                scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
+    estimate.gradients +=
+        estimateGradientBytes(d->method(), scene.dim(), layoutVertices(d->method(), scene.restCage, d->volumeMesh().get()),
+                              scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
   requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
                 "show shading only, or fewer compare views");
 }
