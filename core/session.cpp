@@ -45,6 +45,8 @@ JsonValue viewToJson(const ViewSpec& view) {
   if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
   if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
   if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
+  for (const auto& [name, value] : view.choices)
+    out.set(name, JsonValue::string(findChoiceParameter(name)->values[static_cast<std::size_t>(value)].name));
   return out;
 }
 
@@ -154,16 +156,21 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
-  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection"}; nothing else.
+  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection" and the named choices
+  // ("bulging", "normals"); nothing else.
   ViewSpec view(const JsonValue& v, std::size_t i) const {
     const std::string where = "\"views\" entry " + std::to_string(i);
     if (!v.isObject()) fail(where + " must be an object with \"method\"");
     for (const auto& [key, value] : v.members())
-      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection")
-        fail(where + " has an unknown field \"" + key + "\" (expected method, nu, gamma, variant, tractionCorrection)");
+      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection" &&
+          !findChoiceParameter(key)) {
+        std::string keys = "method, nu, gamma, variant, tractionCorrection";
+        for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
+        fail(where + " has an unknown field \"" + key + "\" (expected " + keys + ")");
+      }
     const JsonValue* name = v.find("method");
     if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
-    ViewSpec view{method(name->asString()), {}, {}, {}, {}};
+    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}};
     try {
       if (v.find("nu")) view.nu = number(v, "nu", true);
       if (v.find("gamma")) view.gamma = number(v, "gamma");
@@ -172,6 +179,8 @@ struct Reader {
         view.variant = findViewVariant(string(v, "variant"));
         if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
       }
+      for (const ChoiceParameter& choice : choiceParameters())
+        if (const std::optional<int> value = readChoice(v, choice, source)) view.choices[choice.name] = *value;
       validateViewSpec(view, source);
     } catch (const InputError& e) {
       fail(where + ": " + e.problem());
@@ -295,7 +304,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}});
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}});
     }
   }
   if (const JsonValue* cameraField = root.find("camera")) {

@@ -44,8 +44,9 @@ struct Session {
 // JSON text with "format": "somicage-session", "version": 3 (version 2 adds "poses" and "timeline",
 // core/pose_timeline_json.h; version 3 adds "restCage": {"vertices": [[x, y, z], ...], "faces": [[a, b, c], ...]},
 // 0-based, when the cage has no file; and "views": [{"method": "somigliana", "nu": 0.45, "gamma": 1, "variant":
-// "local", "tractionCorrection": false}, ...], each parameter only when the view has its own; and "methodOptions":
-// {"tets": "T.mesh", "tet-level": "2"}, the method's own options as text, when it has any). Versions 1 and 2
+// "local", "tractionCorrection": false, "bulging": "reference", "normals": "angle"}, ...], each parameter only when
+// the view has its own; and "methodOptions": {"tets": "T.mesh", "tet-level": "2"}, the method's own options as
+// text, when it has any). Versions 1 and 2
 // load with an empty library and timeline and no inline cage; a session without "views" compares the methods of
 // "compareMethods" (still written, for older builds) with the shared parameters.
 // nu = +-infinity is written as "inf" / "-inf"; every number as the shortest text that reads back to the same double

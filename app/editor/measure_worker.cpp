@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "cage.h"
+#include "deform_choices.h"
 #include "deformation_quantities.h"
 #include "errors.h"
 #include "memory_estimate.h"
@@ -148,8 +149,25 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
     if (sweep) {
       context.setStage("nu sweep");
       const MeasureView& view = request.views[static_cast<std::size_t>(request.sweepView)];
-      out.sweep = sweepNu(*caches.gradients[view.deformer.get()].gradients, scene.meshVertices, faces, request.pose,
-                          view.params, request.sweepNus, context.span(0.8, 1.0));
+      const DeformationGradients& gradients = *caches.gradients[view.deformer.get()].gradients;
+      // The view's own parameters first (its volume line), then each variant's: nu never re-integrates, so a line
+      // costs 25 evaluations of the same gradients; the view's own variant is not evaluated twice.
+      const std::vector<VariantChoice>& variants = variantChoices();
+      const double runs = request.sweepVariants ? 1.0 + static_cast<double>(variants.size()) : 1.0;
+      out.sweep = sweepNu(gradients, scene.meshVertices, faces, request.pose, view.params, request.sweepNus,
+                          context.span(0.8, 0.8 + 0.2 / runs));
+      for (std::size_t k = 0; request.sweepVariants && k < variants.size(); ++k) {
+        DeformParams params = view.params;
+        params.kind = static_cast<VariantKind>(variants[k].kind);
+        params.blend = variants[k].blend;
+        context.setStage(std::string("nu sweep: ") + variants[k].name);
+        const double at = 0.8 + 0.2 * static_cast<double>(k + 1) / runs;
+        out.variantSweeps.push_back(
+            {variants[k].name, params == view.params
+                                   ? out.sweep
+                                   : sweepNu(gradients, scene.meshVertices, faces, request.pose, params,
+                                             request.sweepNus, context.span(at, at + 0.2 / runs))});
+      }
     } else {
       for (std::size_t v = 0; v < request.views.size(); ++v) {
         const MeasureView& view = request.views[v];
@@ -220,6 +238,7 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
   if (out.cancelled || !out.error.empty()) {
     out.views.assign(request.views.size(), std::nullopt);
     out.sweep.clear();
+    out.variantSweeps.clear();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
