@@ -201,7 +201,10 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
             << "; fold-over vertices (det J <= 0): " << a.points.foldovers << "\n"
             << "  conformal distortion: median " << formatNumber(quantile(a.points.distortion, 0.5)) << ", p95 "
             << formatNumber(quantile(a.points.distortion, 0.95)) << "\n";
-  if (seams)
+  if (seams && seams->crossings().edges.empty())
+    std::cout << "  seam jump: no mesh edge crosses a face between " << (cage.dim() == 3 ? "tetrahedra" : "triangles")
+              << "\n";
+  else if (seams)
     std::cout << "  seam jump |J+ - J-| / |J| across " << (cage.dim() == 3 ? "tetrahedra" : "triangles") << " ("
               << seams->crossings().edges.size() << " crossing edges): median "
               << formatNumber(analysis.seamJump[0].second) << ", p95 " << formatNumber(analysis.seamJump[1].second)

@@ -80,7 +80,6 @@ class PhongDeformer final : public CageDeformer {
 
   Method method() const override { return methods::phong(); }
   int dim() const override { return rest_.dim(); }
-  std::shared_ptr<const VolumeMesh> volumeMesh() const override { return mesh_; }
 
   FrameWeights frameWeights(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const override {
     SOMICAGE_ASSERT(posedVertices.rows() == rest_.numVertices() && posedVertices.cols() == dim(),
@@ -103,6 +102,8 @@ class PhongDeformer final : public CageDeformer {
     W.tail.row(d) = fit.translation.transpose();
     return W;
   }
+
+  std::shared_ptr<const VolumeMesh> volumeMesh() const override { return mesh_; }
 
   // d/dX_b of the row above: column (v_k, 0): g_k[b]; column (v_k, 1 + a): 1/2 (g_k[b] (X - X_v_k)_a + l_k delta_ab).
   std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
