@@ -6,7 +6,7 @@
 #include <optional>
 #include <string>
 
-#include "deformer.h"
+#include "method.h"
 
 namespace somicage {
 

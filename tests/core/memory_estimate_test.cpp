@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "deformer.h"
 #include "errors.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
