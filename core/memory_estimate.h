@@ -7,6 +7,7 @@
 #include <string>
 
 #include "method.h"
+#include "volume_mesh.h"
 
 namespace somicage {
 
