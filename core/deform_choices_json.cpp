@@ -19,15 +19,18 @@ void readChoices(const JsonValue& object, DeformParams& params, const std::strin
                        "fix or remove the key (default: the paper's, by \"blend\")");
     params.kind = choice ? static_cast<VariantKind>(choice->kind) : VariantKind::Blend;
   }
-  for (const ChoiceParameter& choice : choiceParameters()) {
-    const JsonValue* value = object.find(choice.name);
-    if (!value) continue;
-    const std::optional<int> k = value->isString() ? findChoice(choice, value->asString()) : std::nullopt;
-    if (!k)
-      throw InputError(source, -1, "\"" + std::string(choice.name) + "\" must be " + choiceNameList(choice),
-                       "fix or remove the key (default " + std::string(choice.values.front().name) + ")");
-    choice.set(params, *k);
-  }
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (const std::optional<int> k = readChoice(object, choice, source)) choice.set(params, *k);
+}
+
+std::optional<int> readChoice(const JsonValue& object, const ChoiceParameter& choice, const std::string& source) {
+  const JsonValue* value = object.find(choice.name);
+  if (!value) return std::nullopt;
+  const std::optional<int> k = value->isString() ? findChoice(choice, value->asString()) : std::nullopt;
+  if (!k)
+    throw InputError(source, -1, "\"" + std::string(choice.name) + "\" must be " + choiceNameList(choice),
+                     "fix or remove the key (default " + std::string(choice.values.front().name) + ")");
+  return k;
 }
 
 }  // namespace somicage

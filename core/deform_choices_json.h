@@ -2,6 +2,7 @@
 // editor's sessions and `somicage animate`.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "deformer.h"
@@ -16,5 +17,8 @@ void writeChoices(const DeformParams& params, JsonValue& object);
 // Reads the choice keys present in object into params (an absent key, as in sessions saved before the choice
 // existed, keeps params' value). Throws InputError(source, ...) naming the key and its values on a bad value.
 void readChoices(const JsonValue& object, DeformParams& params, const std::string& source);
+// One choice key of object: its value's index, none when absent; throws as readChoices on a bad value (the
+// session's "views" entries read their own choices with it).
+std::optional<int> readChoice(const JsonValue& object, const ChoiceParameter& choice, const std::string& source);
 
 }  // namespace somicage

@@ -45,6 +45,8 @@ JsonValue viewToJson(const ViewSpec& view) {
   if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
   if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
   if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
+  for (const auto& [name, value] : view.choices)
+    out.set(name, JsonValue::string(findChoiceParameter(name)->values[static_cast<std::size_t>(value)].name));
   return out;
 }
 
@@ -92,6 +94,26 @@ struct Reader {
       fail("unknown method \"" + name + "\" (expected " + methodNameList() + ")");
     }
   }
+  // {"KEY": "VALUE", ...}: options of `method` (MethodDescriptor::options), as text; their values are checked where
+  // they are used (the precompute: a tets file's errors name the file and line).
+  MethodOptions methodOptions(const JsonValue& v, Method method) const {
+    if (!v.isObject()) fail("\"methodOptions\" must be an object of texts, e.g. {\"tet-level\": \"2\"}");
+    MethodOptions options;
+    for (const auto& [key, value] : v.members()) {
+      std::string known;
+      bool found = false;
+      for (const MethodOptionSpec& o : method->options) {
+        known += (known.empty() ? "" : ", ") + std::string(o.key);
+        found = found || key == o.key;
+      }
+      if (!found)
+        fail("\"methodOptions\" has \"" + key + "\", which " + methodName(method) + " does not have (" +
+             (known.empty() ? std::string("it has none") : "it has " + known) + ")");
+      if (!value.isString()) fail("\"methodOptions\" \"" + key + "\" must be a text");
+      options[key] = value.asString();
+    }
+    return options;
+  }
   // An array of rows of 2 or 3 numbers each, all of the first row's length; may be empty (0 by 0).
   Eigen::MatrixXd rows(const JsonValue& v, const std::string& name) const {
     if (!v.isArray()) fail(name + " must be an array of rows");
@@ -134,16 +156,21 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
-  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection"}; nothing else.
+  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection" and the named choices
+  // ("bulging", "normals"); nothing else.
   ViewSpec view(const JsonValue& v, std::size_t i) const {
     const std::string where = "\"views\" entry " + std::to_string(i);
     if (!v.isObject()) fail(where + " must be an object with \"method\"");
     for (const auto& [key, value] : v.members())
-      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection")
-        fail(where + " has an unknown field \"" + key + "\" (expected method, nu, gamma, variant, tractionCorrection)");
+      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection" &&
+          !findChoiceParameter(key)) {
+        std::string keys = "method, nu, gamma, variant, tractionCorrection";
+        for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
+        fail(where + " has an unknown field \"" + key + "\" (expected " + keys + ")");
+      }
     const JsonValue* name = v.find("method");
     if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
-    ViewSpec view{method(name->asString()), {}, {}, {}, {}};
+    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}};
     try {
       if (v.find("nu")) view.nu = number(v, "nu", true);
       if (v.find("gamma")) view.gamma = number(v, "gamma");
@@ -152,6 +179,8 @@ struct Reader {
         view.variant = findViewVariant(string(v, "variant"));
         if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
       }
+      for (const ChoiceParameter& choice : choiceParameters())
+        if (const std::optional<int> value = readChoice(v, choice, source)) view.choices[choice.name] = *value;
       validateViewSpec(view, source);
     } catch (const InputError& e) {
       fail(where + ": " + e.problem());
@@ -187,6 +216,11 @@ std::string sessionToJson(const Session& s) {
   }
   root.set("pose", rows(s.pose));
   root.set("method", JsonValue::string(methodName(s.method)));
+  if (!s.methodOptions.empty()) {
+    JsonValue options = JsonValue::object();
+    for (const auto& [key, value] : s.methodOptions) options.set(key, JsonValue::string(value));
+    root.set("methodOptions", std::move(options));
+  }
   JsonValue params = JsonValue::object();
   params.set("blend", JsonValue::number(s.params.blend));
   params.set("nu", numberOrInfinity(s.params.nu));
@@ -244,6 +278,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
            std::to_string(s.restCage.numVertices()) + " vertices of " + std::to_string(s.restCage.dim()) +
            " coordinates");
   s.method = r.method(r.string(root, "method"));
+  if (const JsonValue* options = root.find("methodOptions")) s.methodOptions = r.methodOptions(*options, s.method);
   const JsonValue& params = r.get(root, "params");
   s.params.blend = r.number(params, "blend");
   s.params.nu = r.number(params, "nu", true);
@@ -269,7 +304,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}});
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}});
     }
   }
   if (const JsonValue* cameraField = root.find("camera")) {

@@ -9,7 +9,8 @@ namespace somicage {
 
 namespace {
 
-const char* const kViewHint = "e.g. --view somigliana:nu=0.45:gamma=1:variant=local:traction=off";
+const char* const kViewHint =
+    "e.g. --view somigliana:nu=0.45:gamma=1:variant=local:traction=off:bulging=reference:normals=angle";
 
 bool sameNumber(const std::optional<double>& a, const std::optional<double>& b) {
   return a.has_value() == b.has_value() && (!a || *a == *b);
@@ -27,17 +28,18 @@ DeformParams ViewSpec::params(const DeformParams& shared) const {
     p.blend = v.blend;
   }
   if (tractionCorrection) p.tractionCorrection = *tractionCorrection;
+  for (const auto& [name, value] : choices) findChoiceParameter(name)->set(p, value);
   return p;
 }
 
 bool operator==(const ViewSpec& a, const ViewSpec& b) {
   return a.method == b.method && sameNumber(a.nu, b.nu) && sameNumber(a.gamma, b.gamma) && a.variant == b.variant &&
-         a.tractionCorrection == b.tractionCorrection;
+         a.tractionCorrection == b.tractionCorrection && a.choices == b.choices;
 }
 
 std::vector<ViewSpec> viewsOf(const std::vector<Method>& methods) {
   std::vector<ViewSpec> views;
-  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}});
+  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}, {}});
   return views;
 }
 
@@ -47,10 +49,18 @@ ViewSpec withMethod(ViewSpec view, Method m) {
   if (!readsParameter(m, kParamGamma)) view.gamma.reset();
   if (!readsParameter(m, kParamBlend)) view.variant.reset();
   if (!readsParameter(m, kParamTractionFix)) view.tractionCorrection.reset();
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (!readsParameter(m, choice.parameter)) view.choices.erase(choice.name);
   return view;
 }
 
 const char* variantName(Variant variant) { return variantChoices()[static_cast<std::size_t>(variant)].name; }
+
+const ChoiceParameter* findChoiceParameter(const std::string& name) {
+  for (const ChoiceParameter& choice : choiceParameters())
+    if (name == choice.name) return &choice;
+  return nullptr;
+}
 
 std::optional<Variant> findViewVariant(const std::string& name) {
   if (const VariantChoice* v = findVariant(name))
@@ -67,10 +77,19 @@ void validateViewSpec(const ViewSpec& view, const std::string& option) {
              {view.gamma.has_value(), kParamGamma, "gamma"},
              {view.variant.has_value(), kParamBlend, "variant"},
              {view.tractionCorrection.has_value(), kParamTractionFix, "traction"}};
+  auto require = [&](DeformParameter parameter, const std::string& name) {
+    if (!readsParameter(view.method, parameter))
+      throw InputError(option, -1, methodName(view.method) + " does not read " + name,
+                       "give " + name + " to a view of " + methodsReading(parameter));
+  };
   for (const auto& p : own)
-    if (p.set && !readsParameter(view.method, p.parameter))
-      throw InputError(option, -1, methodName(view.method) + " does not read " + p.name,
-                       "give " + std::string(p.name) + " to a view of " + methodsReading(p.parameter));
+    if (p.set) require(p.parameter, p.name);
+  for (const auto& [name, value] : view.choices) {
+    const ChoiceParameter* choice = findChoiceParameter(name);
+    if (!choice || value < 0 || value >= static_cast<int>(choice->values.size()))
+      throw InputError(option, -1, "no choice " + name + " = " + std::to_string(value), kViewHint);
+    require(choice->parameter, name);
+  }
   // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
   DeformParams p;
   if (view.nu) p.nu = *view.nu;
@@ -94,7 +113,7 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
   if (!method)
     throw InputError(option, -1, "unknown method '" + parts.front() + "' in '" + text + "'",
                      "start with one of " + methodNameList() + ", " + kViewHint);
-  ViewSpec view{*method, {}, {}, {}, {}};
+  ViewSpec view{*method, {}, {}, {}, {}, {}};
   for (std::size_t i = 1; i < parts.size(); ++i) {
     const std::string& part = parts[i];
     const std::size_t eq = part.find('=');
@@ -120,12 +139,16 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
       if (value != "on" && value != "off")
         throw InputError(option, -1, "traction must be on or off, got '" + value + "'", kViewHint);
       view.tractionCorrection = value == "on";
+    } else if (const ChoiceParameter* choice = findChoiceParameter(key)) {
+      once(view.choices.count(key) > 0);
+      const std::optional<int> index = findChoice(*choice, value);
+      if (!index)
+        throw InputError(option, -1, key + " must be " + choiceNameList(*choice) + ", got '" + value + "'", kViewHint);
+      view.choices[key] = *index;
     } else {
-      throw InputError(option, -1,
-                       "unknown key '" + key + "' in '" + text +
-                           "' (expected nu, gamma, variant or "
-                           "traction)",
-                       kViewHint);
+      std::string keys = "nu, gamma, variant, traction";
+      for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
+      throw InputError(option, -1, "unknown key '" + key + "' in '" + text + "' (expected " + keys + ")", kViewHint);
     }
   }
   validateViewSpec(view, option);

@@ -4,10 +4,12 @@
 // precompute per method); the deformed points and the quantities are per view (AppState). Pure, no GL.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "deform_choices.h"
 #include "deformer.h"
 
 namespace somicage {
@@ -19,10 +21,12 @@ struct ViewSpec {
   std::optional<double> nu, gamma;  // absent: the panel's
   std::optional<Variant> variant;
   std::optional<bool> tractionCorrection;
+  // Its own values of the named choices (deform_choices.h): ChoiceParameter::name -> the value's index.
+  std::map<std::string, int> choices;
 
   // The parameters this view deforms with: `shared` with this view's own values in place.
   DeformParams params(const DeformParams& shared) const;
-  bool overrides() const { return nu || gamma || variant || tractionCorrection; }
+  bool overrides() const { return nu || gamma || variant || tractionCorrection || !choices.empty(); }
 };
 bool operator==(const ViewSpec& a, const ViewSpec& b);  // exact (bitwise numbers)
 inline bool operator!=(const ViewSpec& a, const ViewSpec& b) { return !(a == b); }
@@ -37,11 +41,14 @@ ViewSpec withMethod(ViewSpec view, Method m);
 // resolved parameters) or the view sets a parameter its method does not read ("green does not read nu").
 void validateViewSpec(const ViewSpec& view, const std::string& option);
 
-// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]" (--view). Throws InputError(option, ...)
-// naming what is wrong: an unknown method or key, a repeated key, a bad value.
+// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off][:bulging=B][:normals=N]" (--view;
+// every named choice of deform_choices.h is a key). Throws InputError(option, ...) naming what is wrong: an unknown
+// method or key, a repeated key, a bad value.
 ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 
 const char* variantName(Variant variant);  // "global", "local", "affine", "stable"
+// The choice parameter of that name (deform_choices.h), or null.
+const ChoiceParameter* findChoiceParameter(const std::string& name);
 std::optional<Variant> findViewVariant(const std::string& name);
 
 }  // namespace somicage

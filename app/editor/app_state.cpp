@@ -20,7 +20,7 @@ namespace somicage::editor {
 
 std::vector<ViewSpec> AppState::views() const {
   if (compare && compareViews.size() >= 2) return compareViews;
-  return {ViewSpec{method, {}, {}, {}, {}}};
+  return {ViewSpec{method, {}, {}, {}, {}, {}}};
 }
 
 std::vector<Method> AppState::deformerMethods() const {
@@ -51,17 +51,24 @@ std::string viewLabel(const AppState& state, std::size_t v) {
     label += buf;
   }
   if (readsParameter(method, kParamBlend)) {
-    const double blend = params.blend;
-    if (blend <= 0.0 || blend >= 1.0) {
-      label += blend <= 0.0 ? "  global" : "  local";
+    const std::string variant = variantName(params);  // "blend" between the paper's two
+    if (variant != "blend") {
+      label += "  " + variant;
     } else {
-      std::snprintf(buf, sizeof buf, "  blend %.2f", blend);
+      std::snprintf(buf, sizeof buf, "  blend %.2f", params.blend);
       label += buf;
     }
     if (view.variant) label += " (own)";
   }
   if (readsParameter(method, kParamTractionFix) && !params.tractionCorrection)
     label += view.tractionCorrection ? "  no traction fix (own)" : "  no traction fix";
+  for (const ChoiceParameter& choice : choiceParameters()) {  // a named choice when not the paper's, or the view's
+    const int value = choice.get(params);
+    const bool own = view.choices.count(choice.name) > 0;
+    if (readsParameter(method, choice.parameter) && (value != 0 || own))
+      label += "  " + std::string(choice.name) + " " + choice.values[static_cast<std::size_t>(value)].name +
+               (own ? " (own)" : "");
+  }
   if (readsParameter(method, kParamCorotational) && params.corotational) label += "  corotational";
   if (!hasDeformer(state, method)) label += "  (precomputing...)";
   return label;

@@ -209,9 +209,11 @@ std::string editorUsage() {
          choicesUsage() +
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
          "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]\n"
+         "         [:bulging=B][:normals=N]\n"
          "                            one side-by-side view with its own parameters (the others follow --nu\n"
          "                            etc.); give it 2 or 3 times, e.g. --view somigliana:nu=0\n"
-         "                            --view somigliana:nu=0.45 (paper Fig. 3)\n"
+         "                            --view somigliana:nu=0.45 (paper Fig. 3), or --view somigliana\n"
+         "                            --view somigliana:bulging=reference (the bulging conventions side by side)\n"
          "  --screenshot OUT.png      render one frame, write it and exit (works under xvfb-run)\n"
          "  --size WxH                window size (default 1600x900)\n"
          "  --hide-ui                 viewports only, no panels\n"

@@ -8,7 +8,10 @@
 #include <tuple>
 
 #include "cage.h"
+#include "cage_tetrahedralization.h"
+#include "deform_choices.h"
 #include "deformation_quantities.h"
+#include "engine.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
@@ -42,8 +45,9 @@ void requireGradientMemory(const MeasureRequest& request, const std::vector<cons
   MemoryEstimate estimate;
   estimate.points = static_cast<std::size_t>(scene.meshVertices.rows());
   for (const CageDeformer* d : missing)
-    estimate.gradients += estimateGradientBytes(d->method(), scene.dim(), scene.restCage.numVertices(),
-                                                scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
+    estimate.gradients +=
+        estimateGradientBytes(d->method(), scene.dim(), layoutVertices(d->method(), scene.restCage, d->volumeMesh().get()),
+                              scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
   requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
                 "show shading only, or fewer compare views");
 }
@@ -104,7 +108,8 @@ void MeasureWorker::release() {
 std::size_t MeasureWorker::heldBytes() const {
   if (job_.busy()) return 0;
   std::size_t bytes = 0;
-  for (const auto& [key, g] : caches_->gradients) bytes += g.gradients ? g.gradients->bytes() : 0;
+  for (const auto& [key, g] : caches_->gradients)
+    bytes += (g.gradients ? g.gradients->bytes() : 0) + (g.seams ? g.seams->bytes() : 0);
   if (caches_->field)
     bytes += static_cast<std::size_t>(caches_->field->terms.size() + caches_->field->winding.size()) * sizeof(double);
   return bytes;
@@ -147,8 +152,25 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
     if (sweep) {
       context.setStage("nu sweep");
       const MeasureView& view = request.views[static_cast<std::size_t>(request.sweepView)];
-      out.sweep = sweepNu(*caches.gradients[view.deformer.get()].gradients, scene.meshVertices, faces, request.pose,
-                          view.params, request.sweepNus, context.span(0.8, 1.0));
+      const DeformationGradients& gradients = *caches.gradients[view.deformer.get()].gradients;
+      // The view's own parameters first (its volume line), then each variant's: nu never re-integrates, so a line
+      // costs 25 evaluations of the same gradients; the view's own variant is not evaluated twice.
+      const std::vector<VariantChoice>& variants = variantChoices();
+      const double runs = request.sweepVariants ? 1.0 + static_cast<double>(variants.size()) : 1.0;
+      out.sweep = sweepNu(gradients, scene.meshVertices, faces, request.pose, view.params, request.sweepNus,
+                          context.span(0.8, 0.8 + 0.2 / runs));
+      for (std::size_t k = 0; request.sweepVariants && k < variants.size(); ++k) {
+        DeformParams params = view.params;
+        params.kind = static_cast<VariantKind>(variants[k].kind);
+        params.blend = variants[k].blend;
+        context.setStage(std::string("nu sweep: ") + variants[k].name);
+        const double at = 0.8 + 0.2 * static_cast<double>(k + 1) / runs;
+        out.variantSweeps.push_back(
+            {variants[k].name, params == view.params
+                                   ? out.sweep
+                                   : sweepNu(gradients, scene.meshVertices, faces, request.pose, params,
+                                             request.sweepNus, context.span(at, at + 0.2 / runs))});
+      }
     } else {
       for (std::size_t v = 0; v < request.views.size(); ++v) {
         const MeasureView& view = request.views[v];
@@ -158,8 +180,18 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
             throw Cancelled();
         }
         if (usesGradients(view)) {
-          const DeformationAnalysis a = analyzeDeformation(*caches.gradients[view.deformer.get()].gradients,
-                                                           scene.meshVertices, faces, request.pose, view.params);
+          Caches::Gradients& g = caches.gradients[view.deformer.get()];
+          if (quantityDescriptor(view.quantity).seams && !g.seams) {  // a second deformer at the crossings
+            context.setStage("seams of view " + std::to_string(v + 1));
+            PrecomputeOptions options;  // a smooth method's: the tetrahedra a Phong view of the scene would get
+            options.volumeMesher = tetrahedralizeCageWithOptions;
+            g.seams = prepareSeamJumps(*g.deformer, scene.restCage, scene.meshVertices, faces, options,
+                                       scene.isDemo() ? scene.name : scene.meshPath);
+          }
+          const DeformationAnalysis a = analyzeDeformation(*g.gradients, scene.meshVertices, faces, request.pose,
+                                                           view.params,
+                                                           quantityDescriptor(view.quantity).seams ? g.seams.get()
+                                                                                                   : nullptr);
           out.views[v] = jacobianMeasurement(a, scene.meshTriangles, view.quantity);
         } else if (measuresDifference(view)) {  // both views deformed here, at their own parameters
           ViewMeasurement m;
@@ -219,6 +251,7 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
   if (out.cancelled || !out.error.empty()) {
     out.views.assign(request.views.size(), std::nullopt);
     out.sweep.clear();
+    out.variantSweeps.clear();
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;

@@ -44,6 +44,7 @@ struct MeasureRequest {
   std::uint64_t poseGeneration = 0;  // names the pose and parameters (AppState::deformGeneration)
   std::vector<double> sweepNus;      // non-empty: the nu sweep of views[sweepView] instead of the views
   int sweepView = 0;
+  bool sweepVariants = false;  // the sweep also runs each Somigliana variant (variantChoices()) at those nu
 };
 
 // What a request is of: two requests with equal keys measure the same thing.
@@ -61,10 +62,17 @@ MeasureKey measureKey(const MeasureRequest& request);
 // Whether a request has anything for the worker (a J-based, difference or field view, or a sweep).
 bool needsWorker(const MeasureRequest& request);
 
+// One variant's fold-over line of the nu sweep (the view's parameters with that variant's kind and blend).
+struct VariantSweep {
+  std::string variant;  // variantChoices()' name
+  std::vector<NuSweepEntry> entries;
+};
+
 struct MeasureOutcome {
   MeasureKey key;
   std::vector<std::optional<ViewMeasurement>> views;  // per view of the request (empty: not measured here)
   std::vector<NuSweepEntry> sweep;                    // a sweep request's entries
+  std::vector<VariantSweep> variantSweeps;            // and, with sweepVariants, one line per variant
   double seconds = 0;
   bool cancelled = false;
   std::string error;
@@ -94,6 +102,7 @@ class MeasureWorker {
     struct Gradients {
       std::shared_ptr<const CageDeformer> deformer;  // keeps the deformer the gradients refer to alive
       std::unique_ptr<DeformationGradients> gradients;
+      std::unique_ptr<SeamJumpEvaluator> seams;  // while a view shows the seams (seam_jumps.h)
     };
     std::map<const CageDeformer*, Gradients> gradients;
     const Scene* fieldScene = nullptr;

@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 
+#include "deform_choices.h"
 #include "mesh_renderer.h"
 #include "panels.h"  // tooltip
 #include "selection.h"
@@ -96,6 +98,7 @@ void measureViews(AppState& state) {
       state.statusMessage = "measuring cancelled";
     } else if (outcome->key.sweep) {
       q.nuSweep = std::move(outcome->sweep);
+      q.nuSweepVariants = std::move(outcome->variantSweeps);
       const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
       const bool current = outcome->key.poseGeneration == state.deformGeneration && deformer;
       q.nuSweepPose = current ? state.pose : Eigen::MatrixXd();
@@ -122,6 +125,7 @@ void measureViews(AppState& state) {
       sweep.views.assign(1, view);
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
+      sweep.sweepVariants = readsParameter(state.method, kParamBlend);  // BEM reads nu, not the variant
       q.worker.start(std::move(sweep));
       return;
     }
@@ -460,30 +464,59 @@ void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
 bool nuSweepCurrent(const AppState& state) {
   const ViewQuantities& q = state.quantities;
   const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
-  const DeformParams &a = q.nuSweepParams, &b = state.params;
+  DeformParams swept = q.nuSweepParams;
+  swept.nu = state.params.nu;  // what it sweeps
   return !q.nuSweep.empty() && deformer && q.nuSweepDeformer.lock() == *deformer &&
          q.nuSweepPose.rows() == state.pose.rows() && q.nuSweepPose.cols() == state.pose.cols() &&
-         q.nuSweepPose == state.pose && a.gamma == b.gamma && a.blend == b.blend &&
-         a.tractionCorrection == b.tractionCorrection && a.corotational == b.corotational;
+         q.nuSweepPose == state.pose && swept == state.params;
 }
+
+namespace {
+
+// The fold-over lines of the nu plot: each variant's (Somigliana), else the current parameters' alone (BEM).
+struct FoldLine {
+  std::string name;
+  const std::vector<NuSweepEntry>* entries;
+  ImU32 color;
+  bool current;  // the panel's variant: drawn thicker
+};
+
+std::vector<FoldLine> foldLines(const AppState& state) {
+  const ViewQuantities& q = state.quantities;
+  if (q.nuSweepVariants.empty()) return {{"fold-overs", &q.nuSweep, toImColor(render::kFoldoverColor), true}};
+  // One colour per variant, in variantChoices()' order (global, local, affine, stable); none is the current nu's
+  // yellow or the volume line's.
+  const ImU32 colors[] = {IM_COL32(90, 170, 255, 255), IM_COL32(255, 80, 200, 255), IM_COL32(110, 220, 110, 255),
+                          IM_COL32(255, 150, 60, 255)};
+  const std::string current = variantName(q.nuSweepParams);
+  std::vector<FoldLine> lines;
+  for (std::size_t k = 0; k < q.nuSweepVariants.size(); ++k) {
+    const VariantSweep& v = q.nuSweepVariants[k];
+    lines.push_back({v.variant, &v.entries, colors[k % std::size(colors)], v.variant == current});
+  }
+  return lines;
+}
+
+}  // namespace
 
 void drawNuPlot(AppState& state) {
   if (!nuSweepDeformer(state)) return;
   if (ImGui::Button("Sweep nu")) sweepNuNow(state);
   tooltip(
       "Deform the current pose at 25 values of nu in (-0.95, 0.49) and plot the volume change and the fold-over\n"
-      "count against nu (on the measuring worker); a click on the plot sets nu.");
+      "count against nu, one fold-over line per Somigliana variant (global, local, affine, stable), on the\n"
+      "measuring worker; a click on the plot sets nu.");
   const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
   ImGui::SameLine();
   ImGui::TextDisabled(sweep.empty() || nuSweepCurrent(state) ? "volume change vs nu"
                                                              : "(the pose changed: sweep again)");
   if (sweep.empty()) return;
+  const std::vector<FoldLine> lines = foldLines(state);
   std::vector<float> change;
-  int folds = 0;
-  for (const NuSweepEntry& e : sweep) {
-    change.push_back(static_cast<float>(100 * e.volumeChange));
-    folds = std::max(folds, e.foldovers);
-  }
+  int folds = 0;  // the fold-over axis' top: the largest count of any line
+  for (const NuSweepEntry& e : sweep) change.push_back(static_cast<float>(100 * e.volumeChange));
+  for (const FoldLine& line : lines)
+    for (const NuSweepEntry& e : *line.entries) folds = std::max(folds, e.foldovers);
   const auto [lo, hi] = std::minmax_element(change.begin(), change.end());
   const float pad = std::max(0.5f, 0.1f * (*hi - *lo));
   char overlay[64];
@@ -492,16 +525,18 @@ void drawNuPlot(AppState& state) {
                    ImVec2(ImGui::GetContentRegionAvail().x, 80));
   const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
   ImDrawList* draw = ImGui::GetWindowDrawList();
-  const ImU32 foldColor = toImColor(render::kFoldoverColor);
-  // The fold-over count on its own axis, 0 at the bottom and the sweep's largest count at the top.
+  // The fold-over counts on their own axis, 0 at the bottom and the sweep's largest count at the top.
   const double nu0 = sweep.front().nu, nu1 = sweep.back().nu;
   auto xOf = [&](double nu) { return a.x + static_cast<float>((nu - nu0) / (nu1 - nu0)) * (b.x - a.x); };
   auto yOfFolds = [&](int f) {
     return b.y - 3 - (folds > 0 ? static_cast<float>(f) / static_cast<float>(folds) : 0.0f) * (b.y - a.y - 6);
   };
-  for (std::size_t k = 1; k < sweep.size(); ++k)
-    draw->AddLine(ImVec2(xOf(sweep[k - 1].nu), yOfFolds(sweep[k - 1].foldovers)),
-                  ImVec2(xOf(sweep[k].nu), yOfFolds(sweep[k].foldovers)), foldColor, 1.5f);
+  for (const FoldLine& line : lines) {
+    const std::vector<NuSweepEntry>& e = *line.entries;
+    for (std::size_t k = 1; k < e.size(); ++k)
+      draw->AddLine(ImVec2(xOf(e[k - 1].nu), yOfFolds(e[k - 1].foldovers)), ImVec2(xOf(e[k].nu), yOfFolds(e[k].foldovers)),
+                    line.color, line.current ? 2.5f : 1.5f);
+  }
   if (std::isfinite(state.params.nu)) {  // the current nu
     const float x = xOf(state.params.nu);
     draw->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
@@ -518,13 +553,28 @@ void drawNuPlot(AppState& state) {
     ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight()));
   }
   ImGui::TextColored(ImGui::GetStyleColorVec4(ImGuiCol_PlotLines), "- volume change %% (left scale)");
-  ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(foldColor), "- fold-overs (0 .. %d)", folds);
+  if (lines.size() == 1) {
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(lines.front().color), "- fold-overs (0 .. %d)", folds);
+  } else {  // the legend: the axis, then one entry per variant on the next line, the panel's marked
+    ImGui::TextDisabled("fold-overs (0 .. %d), per variant:", folds);
+    tooltip("Fold-over vertices (det J <= 0) against nu for each variant at the panel's other parameters;\n"
+            "* marks the panel's variant (the volume change is its).");
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+      if (k > 0) ImGui::SameLine();
+      ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(lines[k].color), "- %s%s", lines[k].name.c_str(),
+                         lines[k].current ? "*" : "");
+    }
+  }
   if (ImGui::IsMouseHoveringRect(a, b)) {
     const double f = std::clamp((ImGui::GetIO().MousePos.x - a.x) / (b.x - a.x), 0.0f, 1.0f);
     const double nu = nu0 + f * (nu1 - nu0);
     const std::size_t k = static_cast<std::size_t>(std::lround(f * static_cast<double>(sweep.size() - 1)));
-    ImGui::SetTooltip("nu %.3f: volume %+.2f%%, %d fold-overs (click: set nu)", sweep[k].nu,
-                      100 * sweep[k].volumeChange, sweep[k].foldovers);
+    std::string folded;
+    for (const FoldLine& line : lines)
+      if (k < line.entries->size())
+        folded += "\n  " + line.name + ": " + std::to_string((*line.entries)[k].foldovers) + " fold-overs";
+    ImGui::SetTooltip("nu %.3f: volume %+.2f%% (click: set nu)%s", sweep[k].nu, 100 * sweep[k].volumeChange,
+                      folded.c_str());
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
       DeformParams p = state.params;
       p.nu = std::clamp(nu, -0.99, 0.49);

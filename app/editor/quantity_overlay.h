@@ -36,12 +36,14 @@ void logHoverReadout(AppState& state, const HoverReadout& hover);
 // The Show choices of the control panel (one per view in the compare view), the range, the worker's progress and
 // Cancel.
 void drawShowChoice(AppState& state);
-// Asks the worker for the nu sweep over (-0.95, 0.49) in 25 steps for the current pose of the Somigliana view.
+// Asks the worker for the nu sweep over (-0.95, 0.49) in 25 steps for the current pose of the panel's method
+// (Somigliana: each variant's too).
 void sweepNuNow(AppState& state);
-// Whether the plotted sweep is of the current pose, method and parameters (nu aside: the sweep covers it).
+// Whether the plotted sweep is of the current pose, method and parameters (every one but nu, which it sweeps).
 bool nuSweepCurrent(const AppState& state);
-// Somigliana: a "Sweep nu" button and the plot of volume change (and fold-over count) against nu for the current
-// pose, the current nu marked; a click on the plot sets nu (one undo step), hovering shows the values there.
+// A "Sweep nu" button and the plot of volume change and fold-over count against nu for the current pose, one
+// fold-over line per Somigliana variant with a legend, the current nu marked; a click on the plot sets nu (one
+// undo step), hovering shows the values there.
 void drawNuPlot(AppState& state);
 
 }  // namespace somicage::editor

@@ -21,7 +21,8 @@ struct ViewQuantities {
   std::uint64_t generation = 0;                          // bumps when `measured` changes (the renderer re-uploads)
   int droppedStale = 0;                                  // outcomes dropped because their key was no longer current
 
-  std::vector<NuSweepEntry> nuSweep;
+  std::vector<NuSweepEntry> nuSweep;              // the current parameters' (the volume line, the click)
+  std::vector<VariantSweep> nuSweepVariants;       // Somigliana: each variant's fold-overs at the same nu
   // What the sweep was made of, nu aside (nu is what it sweeps): the pose, the method's deformer and its other
   // parameters. An empty pose: it was made of a pose already gone when it arrived.
   Eigen::MatrixXd nuSweepPose;
@@ -32,6 +33,7 @@ struct ViewQuantities {
   // Drops the plot (another scene or cage, compare turned on or off).
   void clearSweep() {
     nuSweep.clear();
+    nuSweepVariants.clear();
     nuSweepPose.resize(0, 0);
     nuSweepDeformer.reset();
   }

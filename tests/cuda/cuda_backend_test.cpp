@@ -113,21 +113,23 @@ TEST(CudaBackend, PrecomputeMatchesTheReferenceQuadrature) {
   SKIP_WITHOUT_DEVICE();
   const Cage cage = test::makeBumpySphere(1);
   const Eigen::MatrixXd points = randomPointsIn(cage, 40, 0.45, 6);
-  const int columns = 10 * cage.numVertices() + 4 * cage.numFaces();
+  const int columns = 10 * cage.numVertices() + 4 * cage.numFaces() + 18;  // and the 18 affine terms (issue 26)
   std::vector<std::vector<double>> rows(points.rows());
   std::vector<double> winding(points.rows());
   integrateSomiglianaCoordinatesCuda(cage, points, noProgress, [&](int p, const double* row, double w) {
     rows[p].assign(row, row + columns);
     winding[p] = w;
   });
-  double worst = 0, worstWinding = 0;
+  double worst = 0, worstWinding = 0, worstAffine = 0;
   for (int p = 0; p < points.rows(); ++p) {
     const reference::RowComparison c =
         reference::compareRowWithReference(cage, points.row(p).transpose(), rows[p].data(), 1, winding[p]);
     worst = std::max(worst, c.coordinates), worstWinding = std::max(worstWinding, c.winding);
+    worstAffine = std::max(worstAffine, c.affine);
   }
   EXPECT_LE(worst, 1e-10) << "largest relative difference of T_i, K_j n_j";
   EXPECT_LE(worstWinding, 1e-10);
+  EXPECT_LE(worstAffine, 1e-10) << "largest relative difference of the affine terms' sum_j K_j sigma n_j";
 }
 
 }  // namespace

@@ -26,12 +26,12 @@ using namespace somicage::editor;
 
 namespace {
 
-ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}}; }
+ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}, {}}; }
 
 // The 3D demo with views: Somigliana at nu 0, Somigliana at nu 0.45, Somigliana with the panel's nu; bent.
 void loadTwoNu(AppState& state) {
   state.compare = true;
-  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}}};
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}, {}}};
   state.params.nu = 0.2;
   openDemoScene(state, 3);
   ASSERT_EQ(state.deformers.size(), 1u);  // one precompute: nu never re-integrates
@@ -96,7 +96,7 @@ TEST(EditorViews, TwoViewsOfOneMethodDeformAtTheirOwnNuAndTheOthersFollowThePane
 }
 
 TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
-  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false};
+  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false, {}};
   DeformParams shared;
   shared.nu = 0.3;
   shared.blend = 0.25;
@@ -105,10 +105,46 @@ TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
   EXPECT_EQ(p.gamma, 1.5);
   EXPECT_EQ(p.blend, 1.0);
   EXPECT_FALSE(p.tractionCorrection);
+  EXPECT_EQ(p.bulging, Bulging::SolidAngle);  // the panel's, as the view has none of its own
+  // The named choices (bulging, normals) are a view's own as the numbers are.
+  view.choices = {{"bulging", static_cast<int>(Bulging::SweptVolume)}, {"normals", static_cast<int>(NormalWeights::Angle)}};
+  const DeformParams q = view.params(shared);
+  EXPECT_EQ(q.bulging, Bulging::SweptVolume);
+  EXPECT_EQ(q.normals, NormalWeights::Angle);
+  EXPECT_EQ(q.gamma, 1.5);
   // Another method keeps only what it reads: Green reads none of them.
   const ViewSpec green = withMethod(view, methods::green());
   EXPECT_FALSE(green.overrides());
   EXPECT_NO_THROW(validateViewSpec(green, "test"));
+}
+
+// Issue 26: views compare the bulging conventions and normal weights side by side. Each pane's points are the
+// deformer's at the panel's parameters with that pane's choice (deformed here, outside the editor), and the two
+// conventions differ visibly at gamma = 2 on the bent demo.
+TEST(EditorViews, TwoViewsOfOneMethodDeformWithTheirOwnBulgingAndNormals) {
+  AppState state;
+  state.compare = true;
+  state.compareViews = parseEditorArgs({"--view", "somigliana", "--view",
+                                        "somigliana:bulging=reference:normals=angle"}).views;
+  state.params.gamma = 2.0;
+  openDemoScene(state, 3);
+  Eigen::MatrixXd pose = state.pose;
+  for (Eigen::Index i = 0; i < pose.rows(); ++i)
+    if (pose(i, 0) > 2.0) pose(i, 1) += 0.8;  // lift the right end: the cage bends, its normals turn
+  setPose(state, pose);
+  ASSERT_TRUE(updateDeformation(state));
+  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
+  DeformParams own = state.params;
+  own.bulging = Bulging::Reference;
+  own.normals = NormalWeights::Angle;
+  EXPECT_LE(maxDifference(displayedPoints(state, 0), deformer.deform(state.pose, state.params)), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 1), deformer.deform(state.pose, own)), 1e-12);
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // gamma^2 = 4 shows
+  EXPECT_NE(viewLabel(state, 1).find("bulging reference (own)  normals angle (own)"), std::string::npos)
+      << viewLabel(state, 1);
+  EXPECT_EQ(viewLabel(state, 0).find("bulging"), std::string::npos) << viewLabel(state, 0);
+  // The session keeps them.
+  EXPECT_TRUE(sessionFromJson(sessionToJson(makeSession(state)), "s.json").compareViews == state.compareViews);
 }
 
 // det J and the volume change under each pane are those of its own nu: det J against the exact J evaluated here at
@@ -209,8 +245,10 @@ TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
                                            "somigliana:nu=0.45:gamma=2:variant=local:traction=off", "--view", "mvc"});
   ASSERT_EQ(o.views.size(), 3u);
   EXPECT_TRUE(o.views[0] == somiglianaAt(0.0));
-  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false}));
-  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false, {}}));
+  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}));
+  EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:normals=angle:bulging=swept-volume", "--view", "green"}).views[0] ==
+              (ViewSpec{methods::somigliana(), {}, {}, {}, {}, {{"bulging", 2}, {"normals", 1}}}));
   EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:nu=-inf", "--view", "green"}).views[0] ==
               somiglianaAt(-std::numeric_limits<double>::infinity()));
   // --compare is the list of views without their own values.
@@ -227,7 +265,12 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "somigliana:traction=yes", "--view", "green"}, "traction must be on or off"},
       {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
       {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},
-      {{"--view", "somigliana:color=red", "--view", "green"}, "unknown key 'color'"},
+      {{"--view", "somigliana:color=red", "--view", "green"},
+       "unknown key 'color' in 'somigliana:color=red' (expected nu, gamma, variant, traction, bulging, normals)"},
+      {{"--view", "somigliana:bulging=squared", "--view", "green"},
+       "bulging must be solid-angle, reference or swept-volume, got 'squared'"},
+      {{"--view", "somigliana:normals=angle:normals=area", "--view", "green"}, "'normals' given twice"},
+      {{"--view", "green:normals=angle", "--view", "somigliana"}, "green does not read normals"},
       {{"--view", "harmonic", "--view", "green"}, "unknown method 'harmonic'"},
       {{"--view", "green:nu=0.3", "--view", "somigliana"}, "green does not read nu"},
       {{"--view", "bem:nu=0.5", "--view", "somigliana"}, "bem nu: the boundary element method cannot use nu = 0.5"},
@@ -246,8 +289,9 @@ TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   a.compare = true;
   a.compareViews = {
       somiglianaAt(1.0 / 3.0),
-      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true},
-      ViewSpec{methods::green(), {}, {}, {}, {}}};
+      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true,
+               {{"bulging", 1}, {"normals", 1}}},
+      ViewSpec{methods::green(), {}, {}, {}, {}, {}}};
   const Session b = sessionFromJson(sessionToJson(a), "s.json");
   ASSERT_EQ(b.compareViews.size(), 3u);
   for (std::size_t v = 0; v < 3; ++v) EXPECT_TRUE(b.compareViews[v] == a.compareViews[v]) << "view " << v;
@@ -276,6 +320,9 @@ TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
       {"{\"method\": \"somigliana\", \"nu\": \"x\"}", "\"views\" entry 1: field \"nu\" must be a number"},
       {"{\"method\": \"somigliana\", \"variant\": \"mid\"}", "\"views\" entry 1: field \"variant\" must be"},
       {"{\"method\": \"somigliana\", \"colour\": 1}", "\"views\" entry 1 has an unknown field \"colour\""},
+      {"{\"method\": \"somigliana\", \"bulging\": \"squared\"}",
+       "\"views\" entry 1: \"bulging\" must be solid-angle, reference or swept-volume"},
+      {"{\"method\": \"green\", \"normals\": \"angle\"}", "\"views\" entry 1: green does not read normals"},
       {"{\"nu\": 0}", "\"views\" entry 1 needs \"method\""},
       {"{\"method\": \"harmonic\"}", "unknown method \"harmonic\""},
       {"3", "\"views\" entry 1 must be an object"},
@@ -308,12 +355,12 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   state.compare = true;
   setCompareViews(state, {somiglianaAt(0.0)});  // one: refused
   EXPECT_TRUE(state.compareViews == viewsOf(defaultCompareMethods()));
-  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}}});
+  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}});
   ASSERT_EQ(state.views().size(), 3u);
   state.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
   removeCompareView(state, 1);
   ASSERT_EQ(state.views().size(), 2u);
-  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}}));
+  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}}));
   EXPECT_EQ(state.quantities.show.view(1).quantity, quantityIndex("detj", "test"));  // its Show choice moved with it
   removeCompareView(state, 0);                                                       // two stay
   EXPECT_EQ(state.views().size(), 2u);
