@@ -196,9 +196,10 @@ def view_options(view, editor=False):
     return args
 
 
-def analyze(scene, view):
+def analyze(scene, view, extra=()):
     mesh, cage, posed = scene
     args = [EXE, "analyze", "--cage", cage, "--posed", posed, "--mesh", mesh, "--json"] + view_options(view)
+    args += list(extra)
     a = json.loads(run(args))
     change = a["volume_change"] if a["volume_change"] is not None else a.get("volume_change_capped")
     return {"view": view, "volume_change": change, "capped": a["volume_change"] is None,
@@ -453,10 +454,12 @@ def fig08(out):  # paper Fig. 8: Phong over a coarse and a finer tetrahedral mes
         commands.append(shot([deformed, box, box], ["mvc"], image, size=(PANE_SIZE[0], 2 * PANE_SIZE[1]),
                              labels=[labels[k]]))  # tall panes: the bishop is tall
         images.append(image)
-        panes.append(("bishop", analyze(scene, view)))
+        panes.append(("bishop", analyze(scene, view, ["--seams"])))  # J's jumps across the view's tetrahedra
     # More colours than the others: a few shades of one material band like creases, which are what this shows.
     save_png(images, os.path.join(out.dir, "fig08.png"), vertical=False, colors=80)
-    seams = ["`%s`: seam_jump %s" % (p["view"], p["seam_jump"]) for _, p in panes if p.get("seam_jump") is not None]
+    seams = ["Jumps of J where mesh edges cross tetrahedra (`analyze --seams`, seam_jump p50 / p95 / max):", ""]
+    seams += ["- `%s`: %.3g / %.3g / %.3g" % (p["view"], p["seam_jump"]["p50"], p["seam_jump"]["p95"],
+                                            p["seam_jump"]["max"]) for _, p in panes]
     write_numbers(os.path.join(out.dir, "fig08.md"),
                   "Fig. 8: Phong (the cage's star | --tet-level 2) | Somigliana local, nu = 0 (CHESSBISHOP), shaded",
                   commands, panes, seams)
