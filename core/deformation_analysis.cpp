@@ -8,12 +8,13 @@ namespace somicage {
 
 DeformationAnalysis analyzeDeformation(const DeformationGradients& gradients, const Eigen::MatrixXd& restPoints,
                                        const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& posedVertices,
-                                       const DeformParams& params) {
+                                       const DeformParams& params, const SeamJumpEvaluator* seams) {
   DeformationAnalysis a;
   gradients.evaluate(posedVertices, params, a.positions, a.jacobians);
   a.points = pointQuantities(a.jacobians, gradients.dim());
   a.faces = faceQuantities(faces, restPoints, a.positions);
   a.volume = enclosedMeasure(faces, restPoints, a.positions);
+  if (seams) a.seams = seams->evaluate(posedVertices, params);
   return a;
 }
 

@@ -8,6 +8,7 @@
 
 #include "deformation_quantities.h"
 #include "jacobian.h"
+#include "seam_jumps.h"
 
 namespace somicage {
 
@@ -17,12 +18,14 @@ struct DeformationAnalysis {
   PointQuantities points;
   FaceQuantities faces;
   EnclosedMeasure volume;  // area in 2D
+  SeamJumps seams;         // the jumps of J across a volume mesh's faces (seam_jumps.h); empty when not measured
 };
 
-// restPoints: the points the gradients were made for (#P by d); faces: the mesh's faces over them (may be empty).
+// restPoints: the points the gradients were made for (#P by d); faces: the mesh's faces over them (may be empty);
+// seams: the same mesh's seam evaluator (null: not measured).
 DeformationAnalysis analyzeDeformation(const DeformationGradients& gradients, const Eigen::MatrixXd& restPoints,
                                        const std::vector<std::vector<int>>& faces, const Eigen::MatrixXd& posedVertices,
-                                       const DeformParams& params);
+                                       const DeformParams& params, const SeamJumpEvaluator* seams = nullptr);
 
 struct NuSweepEntry {
   double nu = 0;

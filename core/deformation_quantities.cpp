@@ -203,6 +203,12 @@ EnclosedMeasure enclosedMeasure(const std::vector<std::vector<int>>& faces, cons
   return m;
 }
 
+double gradientJump(const Eigen::Ref<const Eigen::RowVectorXd>& a, const Eigen::Ref<const Eigen::RowVectorXd>& b) {
+  const double scale = 0.5 * (a.norm() + b.norm());
+  if (!a.allFinite() || !b.allFinite() || !(scale > 0)) return std::numeric_limits<double>::quiet_NaN();
+  return (a - b).norm() / scale;
+}
+
 double quantile(const Eigen::VectorXd& values, double q) {
   std::vector<double> finite;
   finite.reserve(static_cast<std::size_t>(values.size()));

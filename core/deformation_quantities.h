@@ -46,6 +46,10 @@ std::vector<int> boundaryVertices(const std::vector<std::vector<int>>& faces);
 // Whether every undirected edge of the faces is used exactly twice, in opposite directions.
 bool isClosedMesh(const std::vector<std::vector<int>>& faces);
 
+// The jump of J across a face between two evaluations of it (seam_jumps.h), a and b row-major d*d (jacobian.h):
+// |a - b|_F / (1/2 (|a|_F + |b|_F)), Frobenius norms; NaN when either is not finite or both are zero.
+double gradientJump(const Eigen::Ref<const Eigen::RowVectorXd>& a, const Eigen::Ref<const Eigen::RowVectorXd>& b);
+
 // The q-quantile (q in [0, 1], linear interpolation between order statistics) of the finite values; NaN if none.
 double quantile(const Eigen::VectorXd& values, double q);
 

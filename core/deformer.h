@@ -80,6 +80,11 @@ struct PrecomputeOptions {
   // "tets" file, else volumeMesher, else the star of the cage's faces).
   std::shared_ptr<const VolumeMesh> volumeMesh;
   VolumeMesher volumeMesher;
+  // For a volume method: point p is evaluated in simplex pointSimplices[p] of the volume mesh (>= 0, one that holds
+  // it) instead of the one it is located in: a point on a face between two simplices seen from either side
+  // (seam_jumps.h). Empty: every point is located. Methods without a volume mesh ignore it (their rows are one
+  // function of the point).
+  std::vector<int> pointSimplices;
 };
 
 // A volume method's mesh: options.volumeMesh; else the MEDIT file methodOptions["tets"] (checkVolumeMesh: *reoriented
@@ -120,6 +125,9 @@ class CageDeformer {
   // quantity is in use. points: the points the deformer was made for.
   virtual std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                             const ProgressCallback& progress) const = 0;
+
+  // The volume mesh a volume method interpolates over (MethodDescriptor::needsVolumeMesh); null for the others.
+  virtual std::shared_ptr<const VolumeMesh> volumeMesh() const { return nullptr; }
 
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }

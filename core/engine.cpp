@@ -77,10 +77,7 @@ void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& o
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& source,
                                        const std::string& hint, bool withGradients) {
-  // A volume method's columns are per vertex of its volume mesh (the cage's star until the mesh is known).
-  const int vertices = !method->needsVolumeMesh ? cage.numVertices()
-                       : options.volumeMesh     ? options.volumeMesh->numVertices()
-                                                : cage.numVertices() + 1;
+  const int vertices = layoutVertices(method, cage, options.volumeMesh.get());
   MemoryEstimate estimate = estimatePrecomputeMemory(method, cage.dim(), vertices, cage.numFaces(), points,
                                                      options.floatStorage, options.threads);
   if (withGradients)
@@ -174,16 +171,36 @@ void requireFaceIndices(const std::vector<std::vector<int>>& faces, Eigen::Index
 
 }  // namespace
 
+bool measuresSeamsByDefault(Method method) { return method->needsVolumeMesh; }
+
+std::unique_ptr<SeamJumpEvaluator> prepareSeamJumps(const CageDeformer& deformer, const Cage& restCage,
+                                                    const Eigen::MatrixXd& restPoints,
+                                                    const std::vector<std::vector<int>>& faces,
+                                                    const PrecomputeOptions& options, const std::string& facesSource,
+                                                    const ProgressCallback& progress) {
+  requireFaceIndices(faces, restPoints.rows(), facesSource);
+  std::shared_ptr<const VolumeMesh> mesh = deformer.volumeMesh();
+  if (!mesh) mesh = options.volumeMesh ? options.volumeMesh : volumeMeshFor(restCage, options);
+  SeamCrossings crossings = findSeamCrossings(*mesh, faces, restPoints);
+  PrecomputeOptions prepared = options;
+  prepared.volumeMesh = mesh;
+  requirePrecomputeMemory(deformer.method(), restCage, 2 * static_cast<std::size_t>(crossings.points.rows()), prepared,
+                          facesSource, memoryHint(false), true);
+  return std::make_unique<SeamJumpEvaluator>(deformer.method(), restCage, std::move(mesh), std::move(crossings),
+                                             std::move(prepared), progress);
+}
+
 PoseAnalysis analyzePose(const CageDeformer& deformer, const DeformationGradients& gradients, const Cage& restCage,
                          const Eigen::MatrixXd& restPoints, const std::vector<std::vector<int>>& faces,
                          const Eigen::MatrixXd& posed, const DeformParams& params, const std::vector<double>& nus,
                          const std::string& posedSource, const std::string& facesSource,
-                         const ProgressCallback& progress) {
+                         const ProgressCallback& progress, const SeamJumpEvaluator* seams) {
   requirePosedVertices(restCage, posed, posedSource);
   deformer.method()->validateParams(params);
   requireFaceIndices(faces, restPoints.rows(), facesSource);
   PoseAnalysis a;
-  a.fields = analyzeDeformation(gradients, restPoints, faces, posed, params);
+  a.fields = analyzeDeformation(gradients, restPoints, faces, posed, params, seams);
+  if (seams) a.seamJump = quantiles(a.fields.seams.edges, {"p50", "p95", "max"});
   a.jacobianDet = quantiles(a.fields.points.detJ, {"min", "p05", "p50", "p95", "max"});
   a.conformalDistortion = quantiles(a.fields.points.distortion, {"p50", "p95", "max"});
   a.areaRatio = quantiles(a.fields.faces.areaRatio, {"p05", "p50", "p95", "max"});

@@ -62,8 +62,8 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
 void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices);
 
 // The memory a precompute of `points` points will take (memory_estimate.h), with the deformation gradient's
-// (jacobian.h) when withGradients; throws InputError naming `source`, with `hint`, when it would not fit in the
-// free memory.
+// (jacobian.h) when withGradients; a volume method's counts the columns of options.volumeMesh (prepareVolumeMesh
+// first). Throws InputError naming `source`, with `hint`, when it would not fit in the free memory.
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,
                                        const PrecomputeOptions& options, const std::string& source,
                                        const std::string& hint, bool withGradients = false);
@@ -109,17 +109,33 @@ struct PoseAnalysis {
   NamedNumbers jacobianDet;           // min, p05, p50, p95, max of det J over the points with a J
   NamedNumbers conformalDistortion;   // p50, p95, max of sigma_max / sigma_min
   NamedNumbers areaRatio;             // p05, p50, p95, max of the faces' deformed / rest area
+  NamedNumbers seamJump;              // p50, p95, max over the crossing edges (seam_jumps.h); empty: not measured
   std::vector<NuSweepEntry> nuSweep;  // one entry per nu of the sweep asked for
 };
 
+// Whether analyze measures the seams (seam_jumps.h) by default: for a method on a volume mesh (Phong), whose J
+// jumps; a smooth method's are 0 and cost a tetrahedralization and a second precompute, so they are asked for.
+bool measuresSeamsByDefault(Method method);
+
+// The seam evaluator of the deformer's points (restPoints, #P by d) with faces over them (indices checked, naming
+// facesSource): over the deformer's volume mesh, else the one its method would get for the cage (volumeMeshFor with
+// `options`, the deformer's precompute options: InputError naming --tets when there is none). The memory of its
+// precompute and gradients is checked first (requirePrecomputeMemory, naming facesSource).
+std::unique_ptr<SeamJumpEvaluator> prepareSeamJumps(const CageDeformer& deformer, const Cage& restCage,
+                                                    const Eigen::MatrixXd& restPoints,
+                                                    const std::vector<std::vector<int>>& faces,
+                                                    const PrecomputeOptions& options, const std::string& facesSource,
+                                                    const ProgressCallback& progress = noProgress);
+
 // For the deformer the gradients were made of: the pose and the parameters checked as deformPoints checks them
 // (InputError naming posedSource or the parameter) and the faces' indices (naming facesSource); then
-// analyzeDeformation (deformation_analysis.h) of the deformer's points (restPoints) with faces over them, its
-// quantiles, and sweepNu over nus (none: no sweep; progress is the sweep's).
+// analyzeDeformation (deformation_analysis.h) of the deformer's points (restPoints) with faces over them (and the
+// seams when `seams` is given: prepareSeamJumps of the same points and faces), its quantiles, and sweepNu over nus
+// (none: no sweep; progress is the sweep's).
 PoseAnalysis analyzePose(const CageDeformer& deformer, const DeformationGradients& gradients, const Cage& restCage,
                          const Eigen::MatrixXd& restPoints, const std::vector<std::vector<int>>& faces,
                          const Eigen::MatrixXd& posed, const DeformParams& params, const std::vector<double>& nus,
                          const std::string& posedSource, const std::string& facesSource,
-                         const ProgressCallback& progress = noProgress);
+                         const ProgressCallback& progress = noProgress, const SeamJumpEvaluator* seams = nullptr);
 
 }  // namespace somicage

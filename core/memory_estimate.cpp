@@ -52,9 +52,15 @@ std::optional<std::size_t> cgroupHeadroom() {
 
 }  // namespace
 
-std::size_t estimateCoordinateBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+int layoutVertices(Method method, const Cage& cage, const VolumeMesh* mesh) {
+  if (!method->needsVolumeMesh) return cage.numVertices();
+  SOMICAGE_ASSERT(mesh, "a volume method's mesh is made before its memory is estimated (engine.h: prepareVolumeMesh)");
+  return mesh->numVertices();
+}
+
+std::size_t estimateCoordinateBytes(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                     bool floatStorage) {
-  return method->layout(dim, cageVertices, cageFaces).bytes(points, floatStorage);
+  return method->layout(dim, vertices, cageFaces).bytes(points, floatStorage);
 }
 
 MemoryEstimate& MemoryEstimate::operator+=(const MemoryEstimate& other) {
@@ -65,9 +71,9 @@ MemoryEstimate& MemoryEstimate::operator+=(const MemoryEstimate& other) {
   return *this;
 }
 
-MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                         bool floatStorage, int threads) {
-  const CoordinateLayout layout = method->layout(dim, cageVertices, cageFaces);
+  const CoordinateLayout layout = method->layout(dim, vertices, cageFaces);
   MemoryEstimate e;
   e.points = points;
   e.coordinates = layout.bytes(points, floatStorage);
@@ -76,11 +82,11 @@ MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices
   return e;
 }
 
-std::size_t estimateGradientBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+std::size_t estimateGradientBytes(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                   bool floatStorage) {
   const std::size_t d = static_cast<std::size_t>(dim), outputs = d * d + d;
   const std::size_t perFrame = points * (d * d + (d + 1) * outputs) * sizeof(double) + points;  // + defined flags
-  return d * estimateCoordinateBytes(method, dim, cageVertices, cageFaces, points, floatStorage) + perFrame;
+  return d * estimateCoordinateBytes(method, dim, vertices, cageFaces, points, floatStorage) + perFrame;
 }
 
 std::optional<std::size_t> availableMemoryBytes() {

@@ -10,10 +10,14 @@
 
 namespace somicage {
 
+// `vertices` below: the vertices the method's layout has columns for (coordinate_layout.h): the cage's, or for a
+// method on a volume mesh (MethodDescriptor::needsVolumeMesh) the mesh's (layoutVertices).
+int layoutVertices(Method method, const Cage& cage, const VolumeMesh* mesh);
+
 // Bytes of the coordinate matrix C (frame_evaluation.h) that makeDeformer(method, ...) stores for `points` points:
 // #P rows of the method's layout (coordinate_layout.h), in float or double. Equals deformer->frameCoordinates().bytes()
 // for P points. Should a deformer store extra rows for points outside the cage, this is a lower bound by those rows.
-std::size_t estimateCoordinateBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+std::size_t estimateCoordinateBytes(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                     bool floatStorage);
 
 // The peak memory of one makeDeformer() call plus one deform() output, in bytes.
@@ -31,13 +35,13 @@ struct MemoryEstimate {
 };
 
 // threads: the precompute's OpenMP threads (0 = the OpenMP default), each with its own row buffer.
-MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+MemoryEstimate estimatePrecomputeMemory(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                         bool floatStorage, int threads = 0);
 
 // What DeformationGradients (jacobian.h) adds for `points` points on top of the precompute: d times the point rows
 // of C (at most d = 3 times the coordinates' bytes) plus one frame's J (#P by d^2) and raw outputs (d + 1 times
 // #P by d^2 + d), in double.
-std::size_t estimateGradientBytes(Method method, int dim, int cageVertices, int cageFaces, std::size_t points,
+std::size_t estimateGradientBytes(Method method, int dim, int vertices, int cageFaces, std::size_t points,
                                   bool floatStorage);
 
 // The environment variable that replaces the free memory (a number of bytes), so tests can trigger a refusal.

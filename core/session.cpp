@@ -94,6 +94,26 @@ struct Reader {
       fail("unknown method \"" + name + "\" (expected " + methodNameList() + ")");
     }
   }
+  // {"KEY": "VALUE", ...}: options of `method` (MethodDescriptor::options), as text; their values are checked where
+  // they are used (the precompute: a tets file's errors name the file and line).
+  MethodOptions methodOptions(const JsonValue& v, Method method) const {
+    if (!v.isObject()) fail("\"methodOptions\" must be an object of texts, e.g. {\"tet-level\": \"2\"}");
+    MethodOptions options;
+    for (const auto& [key, value] : v.members()) {
+      std::string known;
+      bool found = false;
+      for (const MethodOptionSpec& o : method->options) {
+        known += (known.empty() ? "" : ", ") + std::string(o.key);
+        found = found || key == o.key;
+      }
+      if (!found)
+        fail("\"methodOptions\" has \"" + key + "\", which " + methodName(method) + " does not have (" +
+             (known.empty() ? std::string("it has none") : "it has " + known) + ")");
+      if (!value.isString()) fail("\"methodOptions\" \"" + key + "\" must be a text");
+      options[key] = value.asString();
+    }
+    return options;
+  }
   // An array of rows of 2 or 3 numbers each, all of the first row's length; may be empty (0 by 0).
   Eigen::MatrixXd rows(const JsonValue& v, const std::string& name) const {
     if (!v.isArray()) fail(name + " must be an array of rows");
@@ -196,6 +216,11 @@ std::string sessionToJson(const Session& s) {
   }
   root.set("pose", rows(s.pose));
   root.set("method", JsonValue::string(methodName(s.method)));
+  if (!s.methodOptions.empty()) {
+    JsonValue options = JsonValue::object();
+    for (const auto& [key, value] : s.methodOptions) options.set(key, JsonValue::string(value));
+    root.set("methodOptions", std::move(options));
+  }
   JsonValue params = JsonValue::object();
   params.set("blend", JsonValue::number(s.params.blend));
   params.set("nu", numberOrInfinity(s.params.nu));
@@ -253,6 +278,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
            std::to_string(s.restCage.numVertices()) + " vertices of " + std::to_string(s.restCage.dim()) +
            " coordinates");
   s.method = r.method(r.string(root, "method"));
+  if (const JsonValue* options = root.find("methodOptions")) s.methodOptions = r.methodOptions(*options, s.method);
   const JsonValue& params = r.get(root, "params");
   s.params.blend = r.number(params, "blend");
   s.params.nu = r.number(params, "nu", true);

@@ -30,6 +30,9 @@ struct Session {
   std::vector<Notice> cageNotices;
   Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
   Method method;         // the registry's first (method.h)
+  // The method's own precompute options (MethodDescriptor::options), e.g. Phong's {"tets": "T.mesh", "tet-level":
+  // "2"}; a relative "tets" file is looked up like the mesh (resolveSessionPath).
+  MethodOptions methodOptions;
   DeformParams params;
   bool compare = false;
   std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the compare view's panes
@@ -42,14 +45,16 @@ struct Session {
 // core/pose_timeline_json.h; version 3 adds "restCage": {"vertices": [[x, y, z], ...], "faces": [[a, b, c], ...]},
 // 0-based, when the cage has no file; and "views": [{"method": "somigliana", "nu": 0.45, "gamma": 1, "variant":
 // "local", "tractionCorrection": false, "bulging": "reference", "normals": "angle"}, ...], each parameter only when
-// the view has its own). Versions 1 and 2
+// the view has its own; and "methodOptions": {"tets": "T.mesh", "tet-level": "2"}, the method's own options as
+// text, when it has any). Versions 1 and 2
 // load with an empty library and timeline and no inline cage; a session without "views" compares the methods of
 // "compareMethods" (still written, for older builds) with the shared parameters.
 // nu = +-infinity is written as "inf" / "-inf"; every number as the shortest text that reads back to the same double
 // (json.h). What only the editor's view needs ("demoDim", "pose", "compare", "compareMethods", "camera") may be
 // absent: a new session's values then.
 std::string sessionToJson(const Session& session);
-// Throws InputError naming `source` on a syntax error, a missing or mistyped field, an unknown method, or an inline
+// Throws InputError naming `source` on a syntax error, a missing or mistyped field, an unknown method or method
+// option (one the method does not have), or an inline
 // cage that is malformed or that a cage file with the same content would be refused for (prepareCage, engine.h).
 Session sessionFromJson(const std::string& text, const std::string& source);
 

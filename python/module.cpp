@@ -178,20 +178,22 @@ void defineDeformer(py::module_& module) {
           [](const PythonDeformer& deformer, const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
              double nu, double gamma, const std::string& variant, std::optional<double> blend, bool tractionFix,
              bool corotational, const std::optional<std::tuple<double, double, int>>& nuSweep,
-             const ProgressArgument& progress, const std::string& bulging, const std::string& normals) {
+             const ProgressArgument& progress, const std::string& bulging, const std::string& normals,
+             std::optional<bool> seams) {
             return deformer.analyze(posed, faces,
                                     {nu, gamma, variant, blend, tractionFix, corotational, {bulging, normals}}, nuSweep,
-                                    progress);
+                                    progress, seams);
           },
           py::arg("posed"), py::arg("faces") = std::vector<std::vector<int>>{}, py::kw_only(), py::arg("nu") = 0.0,
           py::arg("gamma") = 0.0, py::arg("variant") = "global", py::arg("blend") = py::none(),
           py::arg("traction_fix") = true, py::arg("corotational") = false, py::arg("nu_sweep") = py::none(),
           py::arg("progress") = py::none(),
-          py::arg("bulging") = "solid-angle", py::arg("normals") = "area",
+          py::arg("bulging") = "solid-angle", py::arg("normals") = "area", py::arg("seams") = py::none(),
           "The numbers of `somicage analyze --json` for the cage's vertices moved to posed, as a dict with its keys: "
           "volume change of the mesh faces (0-based index lists over the points; None when open, "
           "volume_change_capped then), det J, conformal distortion and area ratio quantiles, fold-overs; "
-          "nu_sweep=(from, to, count) adds the sweep. The exact J is integrated on the first call (GIL released) "
+          "nu_sweep=(from, to, count) adds the sweep; seams=True adds seam_jump (as analyze --seams; phong: "
+          "unless seams=False), over the Deformer's tetrahedra (tets=, else the cage's star). The exact J is integrated on the first call (GIL released) "
           "and kept; progress(fraction) as for Deformer (0 to 1 for that integration, then for the sweep): False "
           "cancels (somicage.Cancelled), Ctrl-C raises KeyboardInterrupt.")
       .def_property_readonly("method", [](const PythonDeformer& d) { return methodName(d.engine().method()); })

@@ -76,6 +76,7 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& poin
   } catch (const InputError& e) {  // the keyword, not the command line's option
     throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
   }
+  options_ = options;
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;
@@ -101,7 +102,7 @@ Eigen::MatrixXd PythonDeformer::deform(const ArrayArgument& posed, const PythonD
 py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
                                  const PythonDeformOptions& options,
                                  const std::optional<std::tuple<double, double, int>>& nuSweep,
-                                 const ProgressArgument& progress) const {
+                                 const ProgressArgument& progress, std::optional<bool> seams) const {
   const Eigen::MatrixXd pose = posedVertices(posed);
   const DeformParams params = deformParams(options);
   std::vector<double> nus;
@@ -118,8 +119,16 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
     py::gil_scoped_release release;
     const std::lock_guard<std::mutex> lock(gradientsMutex_);
     if (!gradients_) gradients_ = std::make_unique<DeformationGradients>(*deformer_, points_, bridge.callback());
+    std::unique_ptr<SeamJumpEvaluator> seamJumps;
+    if (seams.value_or(measuresSeamsByDefault(deformer_->method()))) {
+      try {
+        seamJumps = prepareSeamJumps(*deformer_, restCage_, points_, faces, options_, "faces", bridge.callback());
+      } catch (const InputError& e) {  // the keyword, not the command line's option
+        throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+      }
+    }
     a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces",
-                    bridge.callback());
+                    bridge.callback(), seamJumps.get());
   } catch (const Cancelled&) {
     bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it
     throw;
@@ -147,6 +156,7 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
   result["conformal_distortion"] = namedNumbers(a.conformalDistortion);
   result["foldover_vertices"] = a.fields.points.foldovers;
   result["area_ratio"] = namedNumbers(a.areaRatio);
+  if (!a.seamJump.empty()) result["seam_jump"] = namedNumbers(a.seamJump);
   result["outside_points"] = a.fields.points.undefined;
   if (nuSweep) {
     py::list sweep;

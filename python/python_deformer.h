@@ -46,11 +46,12 @@ class PythonDeformer {
   // The numbers of `somicage analyze --json` for that pose, as a dict with its keys; faces: lists of 0-based indices
   // of the points (none: no volume or area ratios); nuSweep: (from, to, count) as --nu-sweep FROM:TO:N. The
   // deformation gradients are integrated on the first call and kept; progress covers that integration and the sweep
-  // (and stops them, as in the constructor).
+  // (and stops them, as in the constructor). seams: measure seam_jump (seam_jumps.h; nullopt: as analyze does,
+  // for a volume method), over the tetrahedral mesh the method has or Phong would use (tets=, else the cage's star).
   pybind11::dict analyze(const ArrayArgument& posed, const std::vector<std::vector<int>>& faces,
                          const PythonDeformOptions& options,
                          const std::optional<std::tuple<double, double, int>>& nuSweep,
-                         const ProgressArgument& progress) const;
+                         const ProgressArgument& progress, std::optional<bool> seams = std::nullopt) const;
 
   const CageDeformer& engine() const { return *deformer_; }
   int dim() const { return deformer_->dim(); }
@@ -61,6 +62,7 @@ class PythonDeformer {
   std::unique_ptr<CageDeformer> deformer_;
   Cage restCage_;           // for the pose's vertex count and order checks
   Eigen::MatrixXd points_;  // the deformer's points, for analyze
+  PrecomputeOptions options_;  // the precompute's (its volume mesh, tets=), for the seams' mesh
   mutable std::mutex gradientsMutex_;
   mutable std::unique_ptr<DeformationGradients> gradients_;  // analyze's J, made on its first call
 };

@@ -78,6 +78,8 @@ py::dict loadSessionForPython(const std::string& path) {
   out["cage_path"] = cagePath;
   out["cage"] = cage;
   out["method"] = methodName(session.method);
+  const auto tets = session.methodOptions.find("tets");  // Deformer's tets=, next to the session as animate finds it
+  out["tets"] = tets == session.methodOptions.end() ? std::string() : resolveSessionPath(path, tets->second);
   out["params"] = deformKeywords(session.params);
   out["pose"] = session.pose.size() > 0 ? py::cast(session.pose) : py::object(py::none());
   out["poses"] = poses;

@@ -15,7 +15,7 @@ packages=(
   clang libclang-rt-dev libomp-dev  # the libFuzzer targets: clang, its fuzzer/sanitizer runtimes, OpenMP for clang
   pybind11-dev python3-dev python3-numpy python3-pytest python3-hypothesis python3-setuptools  # the Python module and its tests
   python3-pip python3-venv python3-wheel  # `pip install --no-build-isolation .` (docs/python.md)
-  python3-matplotlib  # tools/figures.sh: the gallery's plots (it brings python3-pil, which stitches the images)
+  python3-matplotlib python3-pil  # tools/figures.sh: the gallery's plots; stitching, labelling and palette-quantising its images
   qemu-user  # the portable build's test on an emulated CPU without AVX (qemu-x86_64 -cpu Nehalem)
   blender  # headless tests: the add-on (~55 MB download with blender-data; Debian's 3.4 runs /usr/bin/python3) and the GLB import
 )

@@ -24,8 +24,17 @@ from PIL import Image
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.environ.get("SOMICAGE", os.path.join(ROOT, "build", "app", "somicage"))
 MODELS = os.path.normpath(os.environ.get("SOMICAGE_MODELS", os.path.join(ROOT, "..", "shared", "models")))
-PANE_SIZE = (420, 420)  # one pane of a figure; a shot of n panes is n * 420 wide
-COLORS = 160            # palette colours of the written PNGs (keeps the gallery a few hundred KB)
+PANE_SIZE = (340, 340)  # one pane of a figure; a shot of n panes is n * 340 wide
+# The written PNGs have COLORS palette colours (docs/gallery stays under the budget tests/docs checks), among them
+# the colours a median cut would merge into the greys because they cover few pixels, when the image has them: the
+# colour maps' stops (render/color_maps.cpp: cool-warm, viridis), which the legends show, and the fold-over magenta
+# (render/mesh_renderer.h, kFoldoverColor).
+COLORS = 32
+KEEP = [(59, 76, 192), (98, 130, 234), (141, 176, 254), (184, 208, 249), (221, 221, 221), (245, 196, 173),
+        (244, 154, 123), (222, 96, 77), (180, 4, 38),
+        (68, 1, 84), (71, 44, 122), (59, 82, 139), (44, 114, 142), (33, 145, 140), (40, 174, 128), (94, 201, 98),
+        (173, 220, 48), (253, 231, 37),
+        (230, 0, 230)]
 
 # Shared models: (mesh, rest cage, posed cage) under MODELS.
 MODEL_FILES = {
@@ -38,6 +47,8 @@ MODEL_FILES = {
                "cactus/cactus_cages_triangulated_deformed.obj"),
     "botijo": ("botijo/botijo.obj", "botijo/botijo_cages_triangulated.obj",
                "botijo/botijo_cages_triangulated_deformed.obj"),
+    "chessbishop": ("chessbishop/chessBishop.obj", "chessbishop/bishop_cages_triangulated.obj",
+                    "chessbishop/bishop_cages_triangulated_deformed.obj"),
     "wiresphere": ("wiresphere/wireSphere.obj", "wiresphere/wireSphere_cages_triangulated.obj",
                    "wiresphere/wireSphere_cages_triangulated_deformed.obj"),
 }
@@ -180,22 +191,27 @@ def view_options(view, editor=False):
         args += ["--gamma", values["gamma"]]
     if "variant" in values:
         args += ["--" + values["variant"]] if editor else ["--variant", values["variant"]]
+    if "tet-level" in values:
+        args += ["--tet-level", values["tet-level"]]
     return args
 
 
-def analyze(scene, view):
+def analyze(scene, view, extra=()):
     mesh, cage, posed = scene
     args = [EXE, "analyze", "--cage", cage, "--posed", posed, "--mesh", mesh, "--json"] + view_options(view)
+    args += list(extra)
     a = json.loads(run(args))
     change = a["volume_change"] if a["volume_change"] is not None else a.get("volume_change_capped")
     return {"view": view, "volume_change": change, "capped": a["volume_change"] is None,
             "foldover_vertices": a["foldover_vertices"], "jacobian_det": a["jacobian_det"],
-            "conformal_distortion_p95": a["conformal_distortion"]["p95"], "command": shown(args)}
+            "conformal_distortion_p95": a["conformal_distortion"]["p95"], "seam_jump": a.get("seam_jump"),
+            "command": shown(args)}
 
 
-def shot(scene, views, out, extra=(), size=None, ui=False):
+def shot(scene, views, out, extra=(), size=None, ui=False, labels=None):
     """One editor screenshot of the scene with 1-3 panes; returns its command line. Without the panel (ui=False) a
-    shared 3D model is drawn without its cage, at twice the size, and each pane zoomed onto its mesh (zoom_panes)."""
+    shared 3D model is drawn without its cage, at twice the size, and each pane zoomed onto its mesh (zoom_panes),
+    and each pane is labelled (labels, default the views)."""
     width, height = size or (PANE_SIZE[0] * len(views), PANE_SIZE[1])
     zoom = 1 if ui or "/scenes/" in scene[0] else 2
     args = [EXE] + list(scene)
@@ -213,7 +229,7 @@ def shot(scene, views, out, extra=(), size=None, ui=False):
     if zoom > 1:
         zoom_panes(out, len(views), zoom)
     if not ui:  # --hide-ui hides the panes' titles: write each view's name over its pane
-        label_panes(out, views)
+        label_panes(out, labels or views)
     return shown(args)
 
 
@@ -264,29 +280,62 @@ def label_panes(path, views):
     draw = ImageDraw.Draw(image)
     for k, view in enumerate(views):
         text = view.replace(":", "  ").replace("somigliana", "Somigliana").replace("green", "Green") \
-                   .replace("mvc", "MVC").replace("bem", "BEM").replace("nu=", "ν=").replace("gamma=", "γ=")
+                   .replace("mvc", "MVC").replace("bem", "BEM").replace("phong", "Phong") \
+                   .replace("nu=", "ν=").replace("gamma=", "γ=")
         x = k * image.width // len(views) + 8
         draw.rectangle(draw.textbbox((x, 6), text, font=font), fill=(30, 32, 38))
         draw.text((x, 6), text, fill=(235, 235, 235), font=font)
     image.save(path)
 
 
-def save_png(images, path, vertical=True):
+def save_png(images, path, vertical=True, colors=COLORS):
     """Stacks the shots (rows, or columns when not vertical) and writes them as a small palette PNG."""
+    quantized(stitched(images, vertical), colors).save(path, optimize=True)
+
+
+def stitched(images, vertical=True):
+    """The images (files) stacked top to bottom, or left to right when not vertical, on the editor's background."""
     images = [Image.open(i).convert("RGB") for i in images]
     if vertical:
-        canvas = Image.new("RGB", (max(i.width for i in images), sum(i.height for i in images)), (46, 49, 56))
-        y = 0
-        for i in images:
-            canvas.paste(i, (0, y))
-            y += i.height
+        size = (max(i.width for i in images), sum(i.height for i in images))
     else:
-        canvas = Image.new("RGB", (sum(i.width for i in images), max(i.height for i in images)), (46, 49, 56))
-        x = 0
-        for i in images:
-            canvas.paste(i, (x, 0))
-            x += i.width
-    canvas.quantize(colors=COLORS, method=Image.Quantize.MEDIANCUT).save(path, optimize=True)
+        size = (sum(i.width for i in images), max(i.height for i in images))
+    canvas, at = Image.new("RGB", size, (46, 49, 56)), 0
+    for i in images:
+        canvas.paste(i, (0, at) if vertical else (at, 0))
+        at += i.height if vertical else i.width
+    return canvas
+
+
+def quantized(image, colors=COLORS):
+    """The image in `colors` palette colours, without dithering (it would cost more bytes than it saves colours):
+    the KEEP colours the image has (a pixel within 8 of it), the rest a median cut."""
+    pixels = np.asarray(image).reshape(-1, 3).astype(np.int16)
+    keep = [c for c in KEEP if (np.abs(pixels - c).max(axis=1) <= 8).any()]
+    palette = image.quantize(colors=colors - len(keep), method=Image.Quantize.MEDIANCUT).getpalette()
+    palette = palette[:3 * (colors - len(keep))] + [c for rgb in keep for c in rgb]
+    target = Image.new("P", (1, 1))
+    target.putpalette(palette + palette[:3] * (256 - len(palette) // 3))  # the spare entries repeat colour 0
+    return image.quantize(palette=target, dither=Image.Dither.NONE)
+
+
+def pyplot():
+    import matplotlib
+    matplotlib.use("Agg")  # no display: the plots are written to files
+    import matplotlib.pyplot as plt
+    return plt
+
+
+def save_plot(out, name, fig, axes):
+    """Finishes a plot (the legend on the first axes, a light grid on all) and writes it as DIR/NAME.png."""
+    axes[0].legend(fontsize=7)
+    for ax in axes:
+        ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    plot = os.path.join(out.work, name + "_plot.png")
+    fig.savefig(plot)
+    pyplot().close(fig)
+    save_png([plot], os.path.join(out.dir, name + ".png"))
 
 
 def percent(x):
@@ -352,7 +401,7 @@ def fig03(out):  # paper Fig. 3: the 2D kernels at two nu (the built-in 2D demo)
     commands = []
     image = os.path.join(out.work, "fig03_0.png")
     args = [EXE, "--demo", "2d", "--view", "somigliana:nu=0", "--view", "somigliana:nu=0.45", "--show", "field:0",
-            "--hide-ui", "--size", "840x420", "--screenshot", image]
+            "--hide-ui", "--size", "%dx%d" % (2 * PANE_SIZE[0], PANE_SIZE[1]), "--screenshot", image]
     run(args)
     commands.append(shown(args))
     save_png([image], os.path.join(out.dir, "fig03.png"))
@@ -383,12 +432,47 @@ def fig07(out):  # paper Fig. 7: nu = inf against Green, 2D (equal) and OGRE (no
            extra=["--show", "detj,difference"], vertical=False)
 
 
-def fig08(out):  # paper Fig. 8: Phong against Somigliana (local, nu = 0), once --method phong exists
-    if "phong" not in run([EXE, "analyze", "--help"]):
-        raise Skip("this build has no --method phong (issue 25)")
-    figure(out, "fig08", "Fig. 8: Phong | Somigliana (local, nu = 0)",
-           [("firehydrant", model("firehydrant"), ["phong", "somigliana:nu=0:variant=local"])],
-           extra=DETJ)
+def fig08(out):  # paper Fig. 8: Phong over a coarse and a finer tetrahedral mesh against Somigliana local, nu = 0
+    """Shading, as the paper shows it: each method's deformed mesh (`somicage deform`) is drawn by the editor at rest
+    in a box (MVC reproduces it there), so the creases where Phong's J jumps across tetrahedra show in the light.
+    The numbers are `analyze`'s for the method itself."""
+    scene = model("chessbishop")
+    views = ["phong", "phong:tet-level=2", "somigliana:nu=0:variant=local"]
+    labels = ["Phong, the cage's star (coarse)", "Phong, --tet-level 2 (finer)", "Somigliana local, ν=0"]
+    folder = os.path.join(out.work, "fig08")
+    os.makedirs(folder, exist_ok=True)
+    commands, panes, images = [], [], []
+    for k, view in enumerate(views):
+        deformed = os.path.join(folder, "fig08_%d.obj" % k)
+        args = [EXE, "deform", "--cage", scene[1], "--posed", scene[2], "--mesh", scene[0], "--out", deformed,
+                "--quiet"] + view_options(view)
+        run(args)
+        commands.append(shown(args))
+        box = os.path.join(folder, "fig08_%d_box.obj" % k)
+        write_box(box, read_vertices(deformed))
+        image = os.path.join(folder, "fig08_%d.png" % k)
+        commands.append(shot([deformed, box, box], ["mvc"], image, size=(PANE_SIZE[0], 2 * PANE_SIZE[1]),
+                             labels=[labels[k]]))  # tall panes: the bishop is tall
+        images.append(image)
+        panes.append(("bishop", analyze(scene, view, ["--seams"])))  # J's jumps across the view's tetrahedra
+    # More colours than the others: a few shades of one material band like creases, which are what this shows.
+    save_png(images, os.path.join(out.dir, "fig08.png"), vertical=False, colors=80)
+    seams = ["Jumps of J where mesh edges cross tetrahedra (`analyze --seams`, seam_jump p50 / p95 / max):", ""]
+    seams += ["- `%s`: %.3g / %.3g / %.3g" % (p["view"], p["seam_jump"]["p50"], p["seam_jump"]["p95"],
+                                            p["seam_jump"]["max"]) for _, p in panes]
+    write_numbers(os.path.join(out.dir, "fig08.md"),
+                  "Fig. 8: Phong (the cage's star | --tet-level 2) | Somigliana local, nu = 0 (CHESSBISHOP), shaded",
+                  commands, panes, seams)
+
+
+def write_box(path, points):
+    """A box 5 % larger than the points' bounding box, as a closed triangle cage."""
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    center, half = (lo + hi) / 2, (hi - lo) / 2 * 1.05
+    corners = [center + half * np.array([1 if i & 1 else -1, 1 if i & 2 else -1, 1 if i & 4 else -1])
+               for i in range(8)]
+    quads = [(0, 2, 3, 1), (4, 5, 7, 6), (0, 1, 5, 4), (2, 6, 7, 3), (0, 4, 6, 2), (1, 3, 7, 5)]  # outward
+    write_obj(path, corners, [t for q in quads for t in ((q[0], q[1], q[2]), (q[0], q[2], q[3]))])
 
 
 def fig10(out):  # paper Fig. 10: 2D hexagon and L, MVC | GC | Somigliana global | local, gamma = 2, nu = 0.1
@@ -407,11 +491,7 @@ def fig10(out):  # paper Fig. 10: 2D hexagon and L, MVC | GC | Somigliana global
     strips = []
     for r in range(0, 4, 2):  # one strip per shape: MVC | GC | global | local
         strip = os.path.join(out.work, "fig10_strip%d.png" % r)
-        a, b = Image.open(images[r]), Image.open(images[r + 1])
-        canvas = Image.new("RGB", (a.width + b.width, a.height))
-        canvas.paste(a, (0, 0))
-        canvas.paste(b, (a.width, 0))
-        canvas.save(strip)
+        stitched(images[r:r + 2], vertical=False).save(strip)
         strips.append(strip)
     save_png(strips, os.path.join(out.dir, "fig10.png"))
     write_numbers(os.path.join(out.dir, "fig10.md"),
@@ -437,9 +517,6 @@ def scaled_pose(work, scene, a):
 
 
 def fig09(out):  # paper Fig. 9: distance to BEM against the pose's amplitude (global, nu = 0, gamma = 2)
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     amplitudes = [1, 0.3, 0.1, 0.03, 0.01]
     methods = {"Somigliana": ["--method", "somigliana", "--nu", "0", "--gamma", "2"], "MVC": ["--method", "mvc"]}
     scenes = [("star (2D)", scene_2d(out.work, "star"))]
@@ -468,6 +545,7 @@ def fig09(out):  # paper Fig. 9: distance to BEM against the pose's amplitude (g
             for m in methods:
                 distance = np.linalg.norm(result[m] - result["BEM"], axis=1).max() / diameter
                 rows.append((label, m, a, distance, displacement))
+    plt = pyplot()
     fig, (left, right) = plt.subplots(1, 2, figsize=(9, 3.4), dpi=80)
     for k, (label, _) in enumerate(scenes):
         for m, style in (("Somigliana", "-o"), ("MVC", "--s")):
@@ -479,14 +557,7 @@ def fig09(out):  # paper Fig. 9: distance to BEM against the pose's amplitude (g
              title="distance to BEM (nu = 0)")
     right.set(xlabel="amplitude a of the pose", ylabel="max distance / max BEM displacement",
               title="relative to the displacement", ylim=(0, None))
-    left.legend(fontsize=7)
-    for ax in (left, right):
-        ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    plot = os.path.join(out.work, "fig09_plot.png")
-    fig.savefig(plot)
-    plt.close(fig)
-    save_png([plot], os.path.join(out.dir, "fig09.png"))
+    save_plot(out, "fig09", fig, [left, right])
     table = ["| scene | method | amplitude a | max distance to BEM (diameters) | max BEM displacement | ratio |",
              "|---|---|---|---|---|---|"]
     table += ["| %s | %s | %g | %.3g | %.3g | %.3f |" % (r[0], r[1], r[2], r[3], r[4], r[3] / r[4]) for r in rows]
@@ -501,9 +572,6 @@ def fig09(out):  # paper Fig. 9: distance to BEM against the pose's amplitude (g
 
 
 def fig06(out):  # paper Fig. 6: partition-of-unity error against the quadrature points per triangle
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
     mesh, cage, posed = model("firehydrant")
     rows, commands, exact = [], [], []
     for n in (2, 4, 8, 16, 32, 50):
@@ -513,19 +581,14 @@ def fig06(out):  # paper Fig. 6: partition-of-unity error against the quadrature
         commands.append(shown(args))
         rows.append((3 * n * n, b["baseline_pou_max"], b["baseline_speedup"]))
         exact.append(b["pou_max"])
+    plt = pyplot()
     fig, ax = plt.subplots(figsize=(6, 3.4), dpi=80)
     ax.loglog([r[0] for r in rows], [r[1] for r in rows], "-o", label="paper's Gauss rule (3 N² points)")
     ax.axhline(max(exact), color="C2", label="SomiCage's closed form (max %.1e)" % max(exact))
     ax.axhline(1e-2, color="0.5", ls=":", label="paper: no visible artifacts below 1e-2")
     ax.set(xlabel="quadrature points per cage triangle", ylabel="max |Σ T_i − I| (300 points)",
            title="FIREHYDRANT: partition of unity")
-    ax.legend(fontsize=7)
-    ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    plot = os.path.join(out.work, "fig06_plot.png")
-    fig.savefig(plot)
-    plt.close(fig)
-    save_png([plot], os.path.join(out.dir, "fig06.png"))
+    save_plot(out, "fig06", fig, [ax])
     table = ["| points per triangle | max partition-of-unity error | Gauss time / closed-form time |", "|---|---|---|"]
     table += ["| %d | %.3g | %.0f× |" % r for r in rows]
     table += ["", "Closed form on all 39,028 vertices: max %.3g." % max(exact)]

@@ -35,6 +35,9 @@ ArgParser analyzeOptions() {
           withScriptOptions({
               {"--nu-sweep", "FROM:TO:N", "volume change and fold-overs at N values of nu from FROM to TO"},
               {"--fields", "OUT.csv", "write det J, distortion and J per mesh vertex"},
+              {"--seams", "",
+               "measure the jumps of J where mesh edges cross tetrahedra's faces (seam_jump; phong: always), over the "
+               "tetrahedral mesh phong would use (--tets, --tet-level)"},
               {"--json", "", "print one JSON object"},
               weldOptionSpec(),
               threadsOptionSpec(),
@@ -83,7 +86,9 @@ std::string analyzeUsage() {
       << "J = df/dx at every vertex (docs/engine.md, \"Quantities\"): the enclosed volume before and after (a closed\n"
       << "mesh; the area in 2D), det J (local volume ratio), the conformal distortion sigma_max/sigma_min of J,\n"
       << "fold-overs (det J <= 0) and the face area ratios. Vertices outside the cage follow the exterior rule and\n"
-      << "have no J (outside_points; nan in the CSV).\n\n"
+      << "have no J (outside_points; nan in the CSV). With --seams (always for phong): where mesh edges cross faces\n"
+      << "between tetrahedra of the cage, the jump of J across them, |J+ - J-|_F / mean(|J+|_F, |J-|_F) (seam_jump;\n"
+      << "0 up to round-off for the smooth methods, whose J is one function).\n\n"
       << "options:\n"
       << analyzeOptions().optionHelp() << "\n"
       << methodsHelp();
@@ -110,7 +115,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const Eigen::MatrixXd posed = loadPosedVertices(args.text("--posed"), cage, read);
   const PolygonMesh mesh = loadAnyMesh(meshPath, read);
   const Eigen::MatrixXd points = meshPointsFor(cage, mesh.vertices, meshPath, args.text("--cage"), log.sink());
-  noteIgnoredParameters(log, args, method);
+  noteIgnoredParameters(log, args, method, args.has("--seams"));  // the seams' tetrahedra read --tets, --tet-level
 
   PrecomputeOptions options = precomputeOptions(threads);
   applyMethodOptions(args, method, cage, options, log.sink());
@@ -125,13 +130,18 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
     ProgressReporter progress = log.progress("integrating their gradients");
     gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
   }
+  std::unique_ptr<SeamJumpEvaluator> seams;
+  if (args.has("--seams") || measuresSeamsByDefault(method)) {
+    ProgressReporter progress = log.progress("measuring the seams across tetrahedra");
+    seams = prepareSeamJumps(*deformer, cage, points, mesh.faces, options, meshPath, progress.callback());
+  }
   if (!nus.empty() && !readsParameter(method, kParamNu))
     log.note(methodName(method) + " does not depend on nu; the sweep is flat");
   PoseAnalysis analysis;
   {
     ProgressReporter progress = log.progress("sweeping nu");  // the only part that reports: a sweep takes a while
     analysis = analyzePose(*deformer, *gradients, cage, points, mesh.faces, posed, params, nus, args.text("--posed"),
-                           meshPath, progress.callback());
+                           meshPath, progress.callback(), seams.get());
   }
   const DeformationAnalysis& a = analysis.fields;
   if (args.has("--fields")) saveTextFile(args.text("--fields"), fieldsCsv(a, cage.dim()));
@@ -164,6 +174,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
     out.field("conformal_distortion", analysis.conformalDistortion);
     out.field("foldover_vertices", a.points.foldovers);
     out.field("area_ratio", analysis.areaRatio);
+    if (seams) out.field("seam_jump", analysis.seamJump);
     out.field("outside_points", a.points.undefined);
     if (!nus.empty()) {
       std::vector<JsonObjectWriter::NumberObject> entries;
@@ -190,6 +201,14 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
             << "; fold-over vertices (det J <= 0): " << a.points.foldovers << "\n"
             << "  conformal distortion: median " << formatNumber(quantile(a.points.distortion, 0.5)) << ", p95 "
             << formatNumber(quantile(a.points.distortion, 0.95)) << "\n";
+  if (seams && seams->crossings().edges.empty())
+    std::cout << "  seam jump: no mesh edge crosses a face between " << (cage.dim() == 3 ? "tetrahedra" : "triangles")
+              << "\n";
+  else if (seams)
+    std::cout << "  seam jump |J+ - J-| / |J| across " << (cage.dim() == 3 ? "tetrahedra" : "triangles") << " ("
+              << seams->crossings().edges.size() << " crossing edges): median "
+              << formatNumber(analysis.seamJump[0].second) << ", p95 " << formatNumber(analysis.seamJump[1].second)
+              << ", max " << formatNumber(analysis.seamJump[2].second) << "\n";
   for (const NuSweepEntry& e : analysis.nuSweep)
     std::cout << "  nu " << formatNumber(e.nu) << ": " << measure << " change " << formatNumber(100 * e.volumeChange, 4)
               << " %, fold-overs " << e.foldovers << "\n";

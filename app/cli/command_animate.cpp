@@ -31,7 +31,7 @@ ArgParser animateOptions() {
        "OBJ sequence: recompute the normals from the deformed faces instead of carrying them by J"},
       threadsOptionSpec(),
   });
-  const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // the session's method's own (--tets)
+  const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // over the session's "methodOptions"
   options.insert(options.end(), methodOptions.begin(), methodOptions.end());
   return ArgParser(kCommand, options);
 }
@@ -61,7 +61,9 @@ std::string animateUsage() {
       << "frame_N, animated at F frames per second (Blender imports them as shape keys); a folder OUT (ending in '/',\n"
       << "or without an extension) becomes a new folder of NAME_0001.obj ... files (numbered by frame), each keeping\n"
       << "everything of the OBJ mesh but its positions. Any other OUT (a.obj) is refused before any work. Nothing\n"
-      << "is left half-written on failure.\n\n"
+      << "is left half-written on failure. The session's method deforms with its parameters and its own options\n"
+      << "(\"methodOptions\": phong's tets file, next to the session or as given, and tet-level); --tets and\n"
+      << "--tet-level replace them.\n\n"
       << "options:\n"
       << animateOptions().optionHelp();
   return out.str();
@@ -114,6 +116,9 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   }
   const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cageSource, notices);
   PrecomputeOptions options = precomputeOptions(threads);
+  options.methodOptions = session.methodOptions;  // the session's, then the command line's (--tets) over them
+  if (const auto tets = options.methodOptions.find("tets"); tets != options.methodOptions.end())
+    tets->second = resolveSessionPath(sessionPath, tets->second);
   applyMethodOptions(args, session.method, cage, options, notices);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient =

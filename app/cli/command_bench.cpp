@@ -44,6 +44,9 @@ ArgParser benchOptions() {
       weldOptionSpec(),
       threadsOptionSpec(),
       {"--json", "", "print one JSON object"},
+      {"--method", "NAME",
+       "time only this method's frame (deform_ms.cpu_NAME; phong: and phong_factor_ms) besides Somigliana's, "
+       "which every run times (default: every method)"},
   };
   const std::vector<OptionSpec> methodOptions = methodOptionSpecs();  // Phong's --tets, --tet-level
   options.insert(options.end(), methodOptions.begin(), methodOptions.end());
@@ -140,6 +143,9 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const int baselinePoints = options.integer("--baseline-points", 2000, 0, 1 << 30);
   const int threads = threadsOption(options);
   const bool json = options.has("--json");
+  // --method: that method's frame only (checked before any work), besides Somigliana's.
+  const bool everyMethod = !options.has("--method");
+  const Method only = methodOption(options);
 
   const ReadOptions read = readOptions(options);
   const Cage cage = loadUsableCage(options.text("--cage"), log.sink(), read);
@@ -281,7 +287,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   deformer.reset();
   std::vector<std::pair<std::string, double>> volumeFactorMs;
   for (Method method : allMethods()) {
-    if (method == somigliana) continue;
+    if (method == somigliana || (!everyMethod && method != only)) continue;
     PrecomputeOptions methodOptions = precompute;
     if (method->needsVolumeMesh) {
       ProgressReporter progress("volume mesh for " + methodName(method));

@@ -162,7 +162,7 @@ DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   return params;
 }
 
-void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method) {
+void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method, bool volumeMeshUsed) {
   std::string ignored;
   const auto note = [&](const std::string& option, DeformParameter parameter) {
     if (args.has(option) && !readsParameter(method, parameter))
@@ -172,7 +172,7 @@ void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method 
   for (const ChoiceParameter& choice : choiceParameters()) note(std::string("--") + choice.name, choice.parameter);
   for (Method m : allMethods())
     for (const MethodOptionSpec& o : m->options)
-      if (m != method && args.has(std::string("--") + o.key))
+      if (m != method && !(volumeMeshUsed && m->needsVolumeMesh) && args.has(std::string("--") + o.key))
         ignored += (ignored.empty() ? "" : ", ") + std::string("--") + o.key + " (" + m->name + " only)";
   if (!ignored.empty()) log.note(methodName(method) + " ignores " + ignored);
 }

@@ -39,8 +39,9 @@ std::string methodsHelp();
 // (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
 
-// Notes (log.note) the options given to a method that ignores them (MethodDescriptor::parameters).
-void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method);
+// Notes (log.note) the options given to a method that ignores them (MethodDescriptor::parameters, ::options).
+// volumeMeshUsed: the command builds a volume mesh for any method (analyze --seams), so its options are read.
+void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method method, bool volumeMeshUsed = false);
 
 // Sets the OpenMP thread count for everything that follows; 0 keeps the OpenMP default.
 void setThreadCount(int threads);

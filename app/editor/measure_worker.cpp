@@ -8,8 +8,10 @@
 #include <tuple>
 
 #include "cage.h"
+#include "cage_tetrahedralization.h"
 #include "deform_choices.h"
 #include "deformation_quantities.h"
+#include "engine.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
@@ -43,8 +45,9 @@ void requireGradientMemory(const MeasureRequest& request, const std::vector<cons
   MemoryEstimate estimate;
   estimate.points = static_cast<std::size_t>(scene.meshVertices.rows());
   for (const CageDeformer* d : missing)
-    estimate.gradients += estimateGradientBytes(d->method(), scene.dim(), scene.restCage.numVertices(),
-                                                scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
+    estimate.gradients +=
+        estimateGradientBytes(d->method(), scene.dim(), layoutVertices(d->method(), scene.restCage, d->volumeMesh().get()),
+                              scene.restCage.numFaces(), estimate.points, /*floatStorage=*/true);
   requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
                 "show shading only, or fewer compare views");
 }
@@ -105,7 +108,8 @@ void MeasureWorker::release() {
 std::size_t MeasureWorker::heldBytes() const {
   if (job_.busy()) return 0;
   std::size_t bytes = 0;
-  for (const auto& [key, g] : caches_->gradients) bytes += g.gradients ? g.gradients->bytes() : 0;
+  for (const auto& [key, g] : caches_->gradients)
+    bytes += (g.gradients ? g.gradients->bytes() : 0) + (g.seams ? g.seams->bytes() : 0);
   if (caches_->field)
     bytes += static_cast<std::size_t>(caches_->field->terms.size() + caches_->field->winding.size()) * sizeof(double);
   return bytes;
@@ -176,8 +180,18 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
             throw Cancelled();
         }
         if (usesGradients(view)) {
-          const DeformationAnalysis a = analyzeDeformation(*caches.gradients[view.deformer.get()].gradients,
-                                                           scene.meshVertices, faces, request.pose, view.params);
+          Caches::Gradients& g = caches.gradients[view.deformer.get()];
+          if (quantityDescriptor(view.quantity).seams && !g.seams) {  // a second deformer at the crossings
+            context.setStage("seams of view " + std::to_string(v + 1));
+            PrecomputeOptions options;  // a smooth method's: the tetrahedra a Phong view of the scene would get
+            options.volumeMesher = tetrahedralizeCageWithOptions;
+            g.seams = prepareSeamJumps(*g.deformer, scene.restCage, scene.meshVertices, faces, options,
+                                       scene.isDemo() ? scene.name : scene.meshPath);
+          }
+          const DeformationAnalysis a = analyzeDeformation(*g.gradients, scene.meshVertices, faces, request.pose,
+                                                           view.params,
+                                                           quantityDescriptor(view.quantity).seams ? g.seams.get()
+                                                                                                   : nullptr);
           out.views[v] = jacobianMeasurement(a, scene.meshTriangles, view.quantity);
         } else if (measuresDifference(view)) {  // both views deformed here, at their own parameters
           ViewMeasurement m;

@@ -102,6 +102,7 @@ class MeasureWorker {
     struct Gradients {
       std::shared_ptr<const CageDeformer> deformer;  // keeps the deformer the gradients refer to alive
       std::unique_ptr<DeformationGradients> gradients;
+      std::unique_ptr<SeamJumpEvaluator> seams;  // while a view shows the seams (seam_jumps.h)
     };
     std::map<const CageDeformer*, Gradients> gradients;
     const Scene* fieldScene = nullptr;

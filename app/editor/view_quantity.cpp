@@ -36,18 +36,25 @@ Eigen::VectorXd foldovers(const DeformationAnalysis& a, const Eigen::MatrixXi&) 
   return a.points.detJ.unaryExpr([](double d) { return d > 0 ? 1.0 : d; });
 }
 
+// Per vertex, the largest jump of J over its edges that cross a face between tetrahedra (0 where none does).
+Eigen::VectorXd seamJumps(const DeformationAnalysis& a, const Eigen::MatrixXi&) {
+  if (a.seams.vertices.size() == a.points.detJ.size()) return a.seams.vertices;
+  return Eigen::VectorXd::Constant(a.points.detJ.size(), std::numeric_limits<double>::quiet_NaN());
+}
+
 }  // namespace
 
 const std::vector<QuantityDescriptor>& quantityDescriptors() {
   using S = QuantitySource;
   static const std::vector<QuantityDescriptor> descriptors{
-      {"shading", "shading only", ColorScale::Viridis, S::None, 0, nullptr},
-      {"detj", "det J", ColorScale::LogDiverging, S::Jacobian, 1, detJ},
-      {"distortion", "conformal distortion", ColorScale::Viridis, S::Jacobian, 1, distortion},
-      {"foldover", "fold-overs", ColorScale::LogDiverging, S::Jacobian, 1, foldovers},
-      {"area", "area ratio", ColorScale::LogDiverging, S::Jacobian, 1, vertexAreaRatio},
-      {"difference", "difference (cage diameters)", ColorScale::Viridis, S::Difference, 0, nullptr},
-      {"field", "coordinate field |T n|", ColorScale::Viridis, S::Field, 0, nullptr},
+      {"shading", "shading only", ColorScale::Viridis, S::None, 0, nullptr, false},
+      {"detj", "det J", ColorScale::LogDiverging, S::Jacobian, 1, detJ, false},
+      {"distortion", "conformal distortion", ColorScale::Viridis, S::Jacobian, 1, distortion, false},
+      {"foldover", "fold-overs", ColorScale::LogDiverging, S::Jacobian, 1, foldovers, false},
+      {"area", "area ratio", ColorScale::LogDiverging, S::Jacobian, 1, vertexAreaRatio, false},
+      {"seams", "seam jump |J+ - J-| / |J| (tetrahedra)", ColorScale::Viridis, S::Jacobian, 0, seamJumps, true},
+      {"difference", "difference (cage diameters)", ColorScale::Viridis, S::Difference, 0, nullptr, false},
+      {"field", "coordinate field |T n|", ColorScale::Viridis, S::Field, 0, nullptr, false},
   };
   return descriptors;
 }

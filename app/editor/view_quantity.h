@@ -34,6 +34,8 @@ struct QuantityDescriptor {
   double autoLow;  // Viridis: the low end of the automatic range (1 for distortion, 0 for magnitudes)
   // Jacobian: the per-vertex scalars of a measured pose (#V); null otherwise.
   Eigen::VectorXd (*values)(const DeformationAnalysis& analysis, const Eigen::MatrixXi& triangles);
+  // Jacobian: the analysis measures the seams too (core/seam_jumps.h: J's jumps across a volume mesh's faces).
+  bool seams;
 };
 
 // The "Show" choices; index 0 is shading only. Add a quantity by adding a descriptor (and its values) in

@@ -103,6 +103,8 @@ class PhongDeformer final : public CageDeformer {
     return W;
   }
 
+  std::shared_ptr<const VolumeMesh> volumeMesh() const override { return mesh_; }
+
   // d/dX_b of the row above: column (v_k, 0): g_k[b]; column (v_k, 1 + a): 1/2 (g_k[b] (X - X_v_k)_a + l_k delta_ab).
   std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                     const ProgressCallback&) const override {
@@ -168,10 +170,15 @@ class PhongDeformer final : public CageDeformer {
     pointSimplex_.assign(static_cast<std::size_t>(numPoints), -1);
     diagnostics_.regions.assign(static_cast<std::size_t>(numPoints), PointRegion::Outside);
     diagnostics_.winding = Eigen::VectorXd::Zero(numPoints);
+    const std::vector<int>& given = options.pointSimplices;
+    SOMICAGE_ASSERT(given.empty() || given.size() == static_cast<std::size_t>(numPoints),
+                    "a simplex per point, or none");
     for (int p = 0; p < numPoints; ++p) {
-      const SimplexLocator::Location at = locator_.locate(points.row(p).transpose());
-      pointSimplex_[static_cast<std::size_t>(p)] = at.simplex;
-      if (at.simplex >= 0) {
+      const int simplex = given.empty() ? locator_.locate(points.row(p).transpose()).simplex
+                                        : given[static_cast<std::size_t>(p)];
+      SOMICAGE_ASSERT(simplex < mesh_->numSimplices(), "a given simplex is one of the mesh's");
+      pointSimplex_[static_cast<std::size_t>(p)] = simplex;
+      if (simplex >= 0) {
         diagnostics_.regions[static_cast<std::size_t>(p)] = PointRegion::Inside;
         diagnostics_.winding(p) = 1;
       }
@@ -195,31 +202,32 @@ class PhongDeformer final : public CageDeformer {
   template <typename Scalar>
   void writeRows(const Eigen::MatrixXd& points, ExteriorPlan& plan, CoordinateMatrix<Scalar>& C) const {
     const int numPoints = static_cast<int>(points.rows()), d = dim(), columns = layout_.columns();
-    const auto writeRow = [&](const Eigen::VectorXd& X, int row) {  // false: X is in no simplex
-      const SimplexLocator::Location at = locator_.locate(X);
-      if (at.simplex < 0) {
+    // X in simplex s (-1: the one holding X); false: X is in no simplex.
+    const auto writeRow = [&](const Eigen::VectorXd& X, int row, int s) {
+      if (s < 0) s = locator_.locate(X).simplex;
+      if (s < 0) {
         writeSimilarityRow(X.transpose(), 0, C.row(row).data(), columns);
         return false;
       }
+      const Eigen::VectorXd l = locator_.barycentric(s, X);
       for (int k = 0; k <= d; ++k) {
-        const int v = mesh_->simplices(at.simplex, k);
-        C(row, layout_.vertexColumn(v, 0)) = static_cast<Scalar>(at.barycentric(k));
+        const int v = mesh_->simplices(s, k);
+        C(row, layout_.vertexColumn(v, 0)) = static_cast<Scalar>(l(k));
         for (int a = 0; a < d; ++a)
-          C(row, layout_.vertexColumn(v, 1 + a)) =
-              static_cast<Scalar>(0.5 * at.barycentric(k) * (X(a) - mesh_->vertices(v, a)));
+          C(row, layout_.vertexColumn(v, 1 + a)) = static_cast<Scalar>(0.5 * l(k) * (X(a) - mesh_->vertices(v, a)));
       }
       return true;
     };
     for (int p = 0; p < numPoints; ++p) {
       if (diagnostics_.regions[static_cast<std::size_t>(p)] == PointRegion::Inside)
-        writeRow(points.row(p).transpose(), p);
+        writeRow(points.row(p).transpose(), p, pointSimplex_[static_cast<std::size_t>(p)]);
       else
         writeSimilarityRow(points, p, C.row(p).data(), columns);
     }
     integrateProxies(rest_, plan, [&](const Eigen::MatrixXd& proxies, const std::vector<int>& which) {
       std::vector<bool> located(which.size());
       for (std::size_t k = 0; k < which.size(); ++k)
-        located[k] = writeRow(proxies.row(static_cast<Eigen::Index>(k)).transpose(), numPoints + 2 * which[k]);
+        located[k] = writeRow(proxies.row(static_cast<Eigen::Index>(k)).transpose(), numPoints + 2 * which[k], -1);
       return located;
     });
     for (std::size_t e = 0; e < plan.blends.size(); ++e)

@@ -65,9 +65,10 @@ class Deformer:
                 variant: str = "global", blend: Optional[float] = None, traction_fix: bool = True,
                 corotational: bool = False, nu_sweep: Optional[tuple[float, float, int]] = None,
                 progress: Optional[Progress] = None, bulging: str = "solid-angle",
-                normals: str = "area") -> dict[str, object]:
+                normals: str = "area", seams: Optional[bool] = None) -> dict[str, object]:
         """The keys and numbers of `somicage analyze --json`: volume change (faces: index lists over the points),
-        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked.
+        det J, distortion and area ratio quantiles, fold-overs, and the nu sweep (from, to, count) when asked;
+        seam_jump (the jumps of J across the tetrahedra) for phong, or any method with seams=True (as --seams).
         progress: as for Deformer (False cancels, Ctrl-C raises KeyboardInterrupt)."""
     @property
     def method(self) -> str: ...
@@ -96,7 +97,8 @@ def save_obj(path: Path, vertices: ArrayLike, faces: Sequence[Sequence[int]] = .
     """The path must end in .obj (InputError otherwise, nothing written)."""
 def load_posed(path: Path, cage: Cage, *, weld: bool = False) -> npt.NDArray[np.float64]: ...
 def load_session(path: str) -> dict[str, object]:
-    """source, mesh, cage_path, cage (Cage or None), method, params (deform's keywords), pose, poses, timeline and
-    frames: [(posed cage (V, d), params)] per whole frame of the timeline, as the editor plays it."""
+    """source, mesh, cage_path, cage (Cage or None), method, tets (the session's tetrahedra file, resolved; "" when
+    none), params (deform's keywords), pose, poses, timeline and frames: [(posed cage (V, d), params)] per whole
+    frame of the timeline, as the editor plays it."""
 def check(cage: Union[Path, ArrayLike], faces: Optional[ArrayLike] = None) -> dict[str, object]:
     """The cage keys of `somicage check --json`, with the same values."""

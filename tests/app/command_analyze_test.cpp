@@ -155,6 +155,30 @@ TEST(CliAnalyze, JsonNamesTheChosenOptions) {
       << bad;
 }
 
+// seam_jump: Phong's J jumps across the cube's tetrahedra (its star) where the pyramid's edges cross them, and is
+// measured without asking; Somigliana's is one function (0), measured with --seams only; at rest nothing jumps.
+TEST(CliAnalyze, SeamJumpIsPhongsAndZeroForASmoothMethod) {
+  ScratchDir dir;
+  const std::string posed = writeSquashedCube(dir, 0.5);
+  const RunResult phong = runSomicage(analyzeArgs(posed, {"--method", "phong", "--nu", "0.3"}));
+  ASSERT_EQ(phong.exitCode, 0) << phong;
+  const std::string seams = phong.out.substr(phong.out.find("\"seam_jump\""));
+  EXPECT_GT(jsonNumber(seams, "max"), 1e-2) << phong.out;
+  EXPECT_GE(jsonNumber(seams, "max"), jsonNumber(seams, "p50")) << phong.out;
+  const RunResult still = runSomicage(analyzeArgs(dataFile("cube_cage.obj"), {"--method", "phong"}));
+  ASSERT_EQ(still.exitCode, 0) << still;
+  EXPECT_LE(jsonNumber(still.out.substr(still.out.find("\"seam_jump\"")), "max"), 1e-12) << still.out;
+
+  const RunResult plain = runSomicage(analyzeArgs(posed, {"--nu", "0.3"}));
+  ASSERT_EQ(plain.exitCode, 0) << plain;
+  EXPECT_EQ(plain.out.find("seam_jump"), std::string::npos) << "asked for with a smooth method";
+  const RunResult smooth = runSomicage(analyzeArgs(posed, {"--nu", "0.3", "--seams", "--tet-level", "0"}));
+  ASSERT_EQ(smooth.exitCode, 0) << smooth;
+  EXPECT_EQ(smooth.err.find("ignores"), std::string::npos) << "--seams reads --tet-level\n" << smooth.err;
+  ASSERT_NE(smooth.out.find("\"seam_jump\""), std::string::npos) << smooth.out;
+  EXPECT_LE(jsonNumber(smooth.out.substr(smooth.out.find("\"seam_jump\"")), "max"), 1e-12) << smooth.out;
+}
+
 TEST(CliAnalyze, TwoDimensionalAreasAndCsvHeader) {
   ScratchDir dir;
   const std::string csv = dir.file("j.csv");

@@ -434,8 +434,9 @@ class AnimateSettings : public ::testing::Test {
     }
   }
 
-  // The session, with the cage inline ("cage": "") or as the cube's file.
-  std::string session(const std::string& method, const std::string& params, bool inlineCage) {
+  // The session, with the cage inline ("cage": "") or as the cube's file, and `extra` fields ("KEY": VALUE, ).
+  std::string session(const std::string& method, const std::string& params, bool inlineCage,
+                      const std::string& extra = "") {
     const PolygonMesh cage = loadMesh(dataFile("cube_cage.obj"));
     Eigen::MatrixXd faces(static_cast<Eigen::Index>(cage.faces.size()), 3);
     for (size_t f = 0; f < cage.faces.size(); ++f)
@@ -444,7 +445,7 @@ class AnimateSettings : public ::testing::Test {
                        R"(", "cage": ")" + (inlineCage ? "" : dataFile("cube_cage.obj")) + "\", ";
     if (inlineCage)
       text += R"("restCage": {"vertices": )" + exactRowsJson(rest) + R"(, "faces": )" + exactRowsJson(faces) + "}, ";
-    text += R"("demoDim": 3, "pose": [], "method": ")" + method + R"(", "params": )" + params + R"(,
+    text += extra + R"("demoDim": 3, "pose": [], "method": ")" + method + R"(", "params": )" + params + R"(,
       "compare": false, "compareMethods": [], "camera": {"target": [0, 0, 0], "distance": 5, "yaw": 0, "pitch": 0},
       "poses": [{"name": "rest", "vertices": )" +
             exactRowsJson(rest) + R"(}, {"name": "twist", "vertices": )" + exactRowsJson(posed) + R"(}],
@@ -504,6 +505,25 @@ TEST_F(AnimateSettings, SomiglianaLocalWithGamma) {
       session("somigliana",
               R"({"blend": 1, "nu": 0.2, "gamma": 0.5, "tractionCorrection": true, "corotational": false})", false);
   expectFramesEqualDeform(path, {"--variant", "local", "--nu", "0.2", "--gamma", "0.5"}, {"--nu", "0.2"});
+}
+
+// A Phong session keeps its tetrahedra: "methodOptions" names a MEDIT file next to the session (the cube coned from
+// an off-centre point, not the cube's star from its centre that Phong uses by default), and animate deforms as
+// `deform --method phong --tets` does.
+TEST_F(AnimateSettings, PhongWithTheSessionsTetrahedra) {
+  std::string medit = "MeshVersionFormatted 2\nDimension 3\nVertices\n9\n";
+  for (Eigen::Index i = 0; i < rest.rows(); ++i)
+    medit += std::to_string(rest(i, 0)) + " " + std::to_string(rest(i, 1)) + " " + std::to_string(rest(i, 2)) + " 0\n";
+  medit += "0.3 -0.2 0.1 0\nTetrahedra\n12\n";
+  for (const std::vector<int>& f : loadMesh(dataFile("cube_cage.obj")).faces)  // outward faces: positive with 9 last
+    medit += std::to_string(f[0] + 1) + " " + std::to_string(f[2] + 1) + " " + std::to_string(f[1] + 1) + " 9 0\n";
+  medit += "End\n";
+  std::ofstream(dir.file("cube.mesh")) << medit;
+  const std::string path =
+      session("phong", R"({"blend": 0, "nu": 0.3, "gamma": 0, "tractionCorrection": true})", false,
+              R"("methodOptions": {"tets": "cube.mesh"}, )");
+  expectFramesEqualDeform(path, {"--method", "phong", "--nu", "0.3", "--tets", dir.file("cube.mesh")},
+                          {"--method", "phong", "--nu", "0.3"});
 }
 
 TEST(DeformLossless, TexturedObjAtRestKeepsEveryRecord) {

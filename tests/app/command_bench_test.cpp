@@ -54,6 +54,29 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_GE(json["gradient_bytes"].number, 3 * json["coord_bytes"].number);
 }
 
+// --method phong times Phong's frame and factorisation (the deform_ms.cpu_phong and phong_factor_ms) and no
+// other method's besides Somigliana's; an unknown name is refused before any work.
+TEST(CliBench, MethodPhongReportsItsFrameAndFactorisationOnly) {
+  const RunResult r = runSomicage({"bench", "--mesh", dataFile("pyramid_mesh.obj"), "--cage", dataFile("cube_cage.obj"),
+                                   "--method", "phong", "--frames", "2", "--repeat", "1", "--baseline-quadrature", "4",
+                                   "--baseline-points", "2", "--threads", "1", "--json"});
+  ASSERT_EQ(r.exitCode, 0) << r;
+  const Json json = JsonParser::parse(r.out);
+  EXPECT_TRUE(json["deform_ms"].has("cpu_phong")) << r.out;
+  EXPECT_GT(json["deform_ms"]["cpu_phong"].number, 0) << r.out;
+  EXPECT_GT(json["phong_factor_ms"].number, 0) << r.out;
+  for (const char* other : {"cpu_green", "cpu_mvc", "cpu_bem"}) EXPECT_FALSE(json["deform_ms"].has(other)) << other;
+  const RunResult green = runSomicage({"bench", "--mesh", dataFile("pyramid_mesh.obj"), "--cage",
+                                       dataFile("cube_cage.obj"), "--method", "green", "--frames", "2", "--repeat",
+                                       "1", "--baseline-quadrature", "4", "--baseline-points", "2", "--json"});
+  ASSERT_EQ(green.exitCode, 0) << green;
+  EXPECT_EQ(green.out.find("phong"), std::string::npos) << "no volume mesh without phong\n" << green.out;
+  const RunResult bad = runSomicage({"bench", "--mesh", dataFile("pyramid_mesh.obj"), "--cage",
+                                     dataFile("cube_cage.obj"), "--method", "fong"});
+  EXPECT_EQ(bad.exitCode, 2) << bad;
+  EXPECT_NE(bad.err.find("--method"), std::string::npos) << bad;
+}
+
 TEST(CliBench, MissingMeshIsBadInput) {
   const RunResult r = runSomicage({"bench", "--cage", dataFile("cube_cage.obj")});
   EXPECT_EQ(r.exitCode, 2) << r;

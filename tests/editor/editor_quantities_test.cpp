@@ -14,6 +14,7 @@
 #include "background_job.h"
 #include "coordinate_fields.h"
 #include "editor_test_support.h"
+#include "engine.h"
 #include "errors.h"
 #include "methods/method_descriptors.h"
 #include "quantity_overlay.h"
@@ -388,4 +389,44 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
   requestDemo(state, 3);
   installNextOutcome(state);
   EXPECT_TRUE(state.quantities.nuSweep.empty()) << "another scene";
+}
+
+// The seams view (Fig. 8): per vertex the largest jump of J across the tetrahedra's faces on its edges. Phong's J jumps
+// there; Somigliana's is one function, so its view is 0 wherever defined; the shared legend spans Phong's jumps, and
+// they are what analyze measures (prepareSeamJumps) for the same pose.
+TEST(EditorQuantities, SeamsViewShowsPhongsJumpsAndNoneForSomigliana) {
+  AppState state;
+  state.compareViews = viewsOf({methods::somigliana(), methods::phong()});
+  loadDemo(state, 3, true);
+  bend(state, 0.6);
+  state.quantities.show.setAll(quantity("seams"));
+  measureViews(state);
+  waitForMeasurements(state);
+  const ViewMeasurement* smooth = state.quantities.measurement(0);
+  const ViewMeasurement* phong = state.quantities.measurement(1);
+  ASSERT_TRUE(smooth && phong);
+  double smoothMax = 0, phongMax = 0;
+  for (Eigen::Index i = 0; i < smooth->values.size(); ++i)
+    if (std::isfinite(smooth->values[i])) smoothMax = std::max(smoothMax, smooth->values[i]);
+  for (Eigen::Index i = 0; i < phong->values.size(); ++i)
+    if (std::isfinite(phong->values[i])) phongMax = std::max(phongMax, phong->values[i]);
+  EXPECT_LE(smoothMax, 1e-12);
+  EXPECT_GT(phongMax, 1e-2);
+  const ColorRange range = sharedRange({smooth, phong}, quantityDescriptor(quantity("seams")));
+  EXPECT_EQ(range.lo, 0);
+  EXPECT_EQ(range.hi, phongMax);
+
+  const Scene& scene = *state.scene;
+  std::vector<std::vector<int>> faces;
+  for (Eigen::Index f = 0; f < scene.meshTriangles.rows(); ++f)
+    faces.push_back({scene.meshTriangles(f, 0), scene.meshTriangles(f, 1), scene.meshTriangles(f, 2)});
+  int found = 0;
+  for (const auto& entry : state.deformers) {
+    const CageDeformer& d = *entry.second;
+    if (d.method() != methods::phong()) continue;
+    const auto seams = prepareSeamJumps(d, scene.restCage, scene.meshVertices, faces, {}, "demo");
+    EXPECT_EQ(quantile(seams->evaluate(state.pose, state.viewParams(1)).vertices, 1.0), phongMax);
+    ++found;
+  }
+  EXPECT_EQ(found, 1);
 }

@@ -269,3 +269,22 @@ TEST(EditorSession, AnInlineCageIsRepairedLikeACageFile) {
   EXPECT_EQ(b.cageNotices[0].kind, Notice::Kind::Repair);
   EXPECT_EQ(b.cageNotices[0].source, "s.json");
 }
+
+// A Phong session keeps its method's own options (the tetrahedra's file and level), and refuses options its method
+// does not have, or that are not text.
+TEST(EditorSession, MethodOptionsRoundTripAndUnknownOnesAreRefused) {
+  Session a = sample();
+  a.method = methods::phong();
+  a.params.nu = 0.3;
+  a.methodOptions = {{"tets", "meshes/a \"quoted\" cage.mesh"}, {"tet-level", "2"}};
+  const std::string text = sessionToJson(a);
+  EXPECT_EQ(sessionFromJson(text, "s.json").methodOptions, a.methodOptions);
+  EXPECT_TRUE(sessionFromJson(sessionToJson(sample()), "s.json").methodOptions.empty());
+  EXPECT_EQ(sessionToJson(sample()).find("methodOptions"), std::string::npos) << "written only when there are some";
+  const std::string unknown = rejection(replaced(text, "\"tet-level\"", "\"tet-detail\""));
+  EXPECT_NE(unknown.find("\"tet-detail\", which phong does not have (it has tets, tet-level)"), std::string::npos)
+      << unknown;
+  EXPECT_NE(rejection(replaced(text, "\"2\"", "2")).find("\"tet-level\" must be a text"), std::string::npos);
+  a.method = methods::green();  // green has no options of its own
+  EXPECT_NE(rejection(sessionToJson(a)).find("which green does not have (it has none)"), std::string::npos);
+}

@@ -103,6 +103,24 @@ def test_analyze_matches_cli_on_a_small_shape(cube_files, method):
     assert_same_numbers(analysis, expected)
 
 
+@pytest.mark.parametrize("method", ["somigliana", "phong"])  # every method's 0 or not: tests/core/seam_jumps_test.cpp
+def test_seam_jump_matches_analyze_seams(cube_files, method):
+    """seams=True is analyze --seams: the same seam_jump over the cube's star; 0 for a smooth method (one J), more for
+    Phong (C0 across the tetrahedra); seams=False leaves the key out, as analyze does for a smooth method."""
+    cli_executable()
+    expected = cli_analyze(cube_files["rest"], cube_files["posed"], cube_files["mesh"], "--method", method,
+                           "--nu", "0.3", "--seams")
+    deformer = somicage.Deformer(cube_files["cage"], cube_files["points"], method=method)
+    pose = bent_cube_pose(cube_files["cage"])
+    analysis = deformer.analyze(pose, cube_files["faces"], nu=0.3, seams=True)
+    assert_same_numbers(analysis, expected)
+    if method == "phong":
+        assert analysis["seam_jump"]["max"] > 1e-2
+    else:
+        assert analysis["seam_jump"]["max"] <= 1e-12
+    assert "seam_jump" not in deformer.analyze(pose, cube_files["faces"], nu=0.3, seams=False)
+
+
 def test_analyze_matches_cli_on_firehydrant():
     require_firehydrant()
     cli_executable()

@@ -42,7 +42,7 @@ def test_load_session_reads_every_part(session):
     s = somicage.load_session(str(session))
     vertices, faces = unit_cube()
     assert s["mesh"] == str(session.parent / "pyramid.obj"), "resolved next to the session"
-    assert s["method"] == "bem" and s["cage_path"] == ""
+    assert s["method"] == "bem" and s["cage_path"] == "" and s["tets"] == ""
     np.testing.assert_array_equal(s["cage"].vertices, vertices)
     assert s["params"] == dict(nu=0.3, gamma=0.0, blend=0.0, traction_fix=True, corotational=True)
     assert s["pose"] is None and sorted(s["poses"]) == ["rest", "twist"]
@@ -65,6 +65,26 @@ def test_session_frames_deform_to_what_animate_writes(session, tmp_path):
     for frame, (pose, params) in enumerate(s["frames"]):
         written, _ = somicage.load_mesh(str(out / f"pyramid_{frame:04d}.obj"))
         assert np.abs(deformer.deform(pose, **params) - written).max() <= 1e-9 * np.sqrt(3), frame
+
+
+def test_a_phong_sessions_tetrahedra_are_found_next_to_it(session):
+    """"methodOptions" {"tets": NAME}: load_session gives the file as animate finds it (next to the session), for
+    Deformer(tets=); a Deformer on it differs from one on the cube's default star, so the file is the one read."""
+    text = json.loads(session.read_text())
+    text.update(method="phong", methodOptions={"tets": "cube.mesh"})
+    vertices, faces = unit_cube()
+    lines = ["MeshVersionFormatted 2", "Dimension 3", "Vertices", "9"]
+    lines += [" ".join(map(str, v)) + " 0" for v in vertices] + ["0.6 0.45 0.55 0", "Tetrahedra", str(len(faces))]
+    lines += [f"{a + 1} {c + 1} {b + 1} 9 0" for a, b, c in faces] + ["End"]  # outward faces, apex inside: positive
+    (session.parent / "cube.mesh").write_text("\n".join(lines) + "\n")
+    session.write_text(json.dumps(text))
+    s = somicage.load_session(str(session))
+    assert s["method"] == "phong" and s["tets"] == str(session.parent / "cube.mesh")
+    points, _ = somicage.load_mesh(s["mesh"])
+    pose, params = s["frames"][4]
+    given = somicage.Deformer(s["cage"], points, method="phong", tets=s["tets"]).deform(pose, **params)
+    star = somicage.Deformer(s["cage"], points, method="phong").deform(pose, **params)
+    assert np.abs(given - star).max() > 1e-3
 
 
 def test_a_file_that_is_not_a_session_is_refused(tmp_path):
