@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cage.h"
-#include "deformer.h"
+#include "deform_params.h"
 
 namespace somicage {
 

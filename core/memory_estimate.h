@@ -6,7 +6,8 @@
 #include <optional>
 #include <string>
 
-#include "deformer.h"
+#include "method.h"
+#include "volume_mesh.h"
 
 namespace somicage {
 

@@ -59,4 +59,13 @@ Eigen::MatrixXd recomputeNormals(const MeshDocument& document, const Eigen::Matr
 void writeObjDocument(const std::string& path, const MeshDocument& document, const Eigen::MatrixXd& positions,
                       const Eigen::MatrixXd& normals = Eigen::MatrixXd());
 
+// The materials a document's faces name, in order of first use (faceMaterial), each found in the file's own
+// materials or in its .mtl libraries; a material found nowhere is white. notes: one sentence per library that
+// could not be read and per material that is not defined.
+struct DocumentMaterials {
+  std::vector<MeshMaterial> materials;
+  std::vector<std::string> notes;
+};
+DocumentMaterials documentMaterials(const MeshDocument& document);
+
 }  // namespace somicage

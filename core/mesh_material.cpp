@@ -6,7 +6,6 @@
 
 #include "errors.h"
 #include "file_util.h"
-#include "mesh_document.h"
 #include "obj_io.h"
 
 namespace somicage {
@@ -102,44 +101,6 @@ std::vector<MeshMaterial> parseMtl(const std::string& text, const std::string& s
   return materials;
 }
 
-DocumentMaterials documentMaterials(const MeshDocument& document) {
-  DocumentMaterials out;
-  std::vector<MeshMaterial> known = document.materials;
-  const fs::path folder = fs::path(document.sourcePath).parent_path();
-  for (const ObjRecord& record : document.records) {
-    if (record.kind != ObjRecord::Kind::Text) continue;
-    const std::vector<std::string_view> tokens = splitTokens(record.text);
-    if (tokens.empty() || tokens[0] != "mtllib") continue;
-    for (size_t k = 1; k < tokens.size(); ++k) {
-      const fs::path name{std::string(tokens[k])};
-      const std::string library = name.is_absolute() ? name.string() : (folder / name).string();
-      std::error_code error;
-      if (!fs::is_regular_file(library, error)) {
-        out.notes.push_back("the material library " + library + " was not found: its materials are written white");
-        continue;
-      }
-      for (MeshMaterial& material : parseMtl(readTextFile(library), library)) known.push_back(std::move(material));
-    }
-  }
-  std::vector<std::string> undefined;
-  for (const std::string& name : document.faceMaterial) {
-    if (std::any_of(out.materials.begin(), out.materials.end(), [&](const MeshMaterial& m) { return m.name == name; }))
-      continue;
-    // The first definition counts, as in every OBJ reader.
-    const auto found = std::find_if(known.begin(), known.end(), [&](const MeshMaterial& m) { return m.name == name; });
-    if (found != known.end()) {
-      out.materials.push_back(*found);
-      continue;
-    }
-    MeshMaterial white;
-    white.name = name;
-    out.materials.push_back(white);
-    if (!name.empty()) undefined.push_back(name);
-  }
-  for (const std::string& name : undefined)
-    out.notes.push_back("the material '" + name + "' is not defined in the mesh's material libraries: written white");
-  return out;
-}
 
 std::string imageMimeType(const std::string& bytes) {
   if (bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") == 0) return "image/png";

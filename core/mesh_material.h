@@ -14,8 +14,6 @@
 
 namespace somicage {
 
-struct MeshDocument;
-
 struct MeshMaterial {
   std::string name;
   Eigen::Vector4d baseColor{1.0, 1.0, 1.0, 1.0};  // r, g, b, opacity in [0, 1]
@@ -26,15 +24,6 @@ struct MeshMaterial {
 // Parses the text of a .mtl file; source names it in errors and resolves texture paths. Throws InputError (file,
 // line, what) for a colour or opacity that is not a number in [0, 1] and a map_Kd without a file name.
 std::vector<MeshMaterial> parseMtl(const std::string& text, const std::string& source);
-
-// The materials a document's faces name, in order of first use (faceMaterial), each found in the file's own
-// materials or in its .mtl libraries; a material found nowhere is white. notes: one sentence per library that
-// could not be read and per material that is not defined.
-struct DocumentMaterials {
-  std::vector<MeshMaterial> materials;
-  std::vector<std::string> notes;
-};
-DocumentMaterials documentMaterials(const MeshDocument& document);
 
 // "image/png", "image/jpeg", or "" when the bytes are neither (the two formats glTF carries).
 std::string imageMimeType(const std::string& bytes);

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "deformer.h"
+#include "deform_params.h"
 
 namespace somicage {
 

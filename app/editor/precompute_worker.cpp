@@ -4,23 +4,38 @@
 #include <exception>
 #include <new>
 
+#include "engine.h"
 #include "errors.h"
 #include "memory_estimate.h"
 
 namespace somicage::editor {
 
 namespace {
+// Each method's precompute options: the request's, with a volume method's mesh made now (engine.h:
+// prepareVolumeMesh), so that the memory check counts its columns and the precompute uses that very mesh.
+std::vector<PrecomputeOptions> preparedOptions(const PrecomputeRequest& request) {
+  std::vector<PrecomputeOptions> prepared;
+  for (Method m : request.methods) {
+    PrecomputeOptions options = request.options;
+    prepareVolumeMesh(m, request.scene->restCage, options, ignoreNotices);
+    prepared.push_back(std::move(options));
+  }
+  return prepared;
+}
+
 // Refuses a request whose deformers would not fit in the free memory, before any of them is built.
-void requireMemoryFor(const PrecomputeRequest& request) {
+void requireMemoryFor(const PrecomputeRequest& request, const std::vector<PrecomputeOptions>& prepared) {
   const Scene& scene = *request.scene;
   MemoryEstimate estimate;
   const std::size_t points = static_cast<std::size_t>(scene.meshVertices.rows());
-  for (Method m : request.methods) {
-    estimate += estimatePrecomputeMemory(m, scene.dim(), scene.restCage.numVertices(), scene.restCage.numFaces(),
-                                         points, request.options.floatStorage, request.options.threads);
+  for (std::size_t k = 0; k < request.methods.size(); ++k) {
+    const Method m = request.methods[k];
+    const int vertices = layoutVertices(m, scene.restCage, prepared[k].volumeMesh.get());
+    estimate += estimatePrecomputeMemory(m, scene.dim(), vertices, scene.restCage.numFaces(), points,
+                                         request.options.floatStorage, request.options.threads);
     if (request.withGradients)
-      estimate.gradients += estimateGradientBytes(m, scene.dim(), scene.restCage.numVertices(),
-                                                  scene.restCage.numFaces(), points, request.options.floatStorage);
+      estimate.gradients += estimateGradientBytes(m, scene.dim(), vertices, scene.restCage.numFaces(), points,
+                                                  request.options.floatStorage);
   }
   requireMemory(estimate, availableMemoryBytes(), scene.isDemo() ? scene.name : scene.meshPath,
                 memoryHint(!request.options.floatStorage));
@@ -37,14 +52,15 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
       request.scene = std::make_shared<const Scene>(request.loadScene());
     }
     out.scene = request.scene;
-    requireMemoryFor(request);
+    const std::vector<PrecomputeOptions> prepared = preparedOptions(request);
+    requireMemoryFor(request, prepared);
     const std::size_t n = request.methods.size();
     for (std::size_t k = 0; k < n; ++k) {
       if (context.cancelled()) throw Cancelled();
       const Method m = request.methods[k];
       context.setStage(std::string(m->displayName) + " " + std::to_string(k + 1) + "/" + std::to_string(n));
       const double share = 1.0 / static_cast<double>(n);
-      out.deformers[m] = makeDeformer(m, request.scene->restCage, request.scene->meshVertices, request.options,
+      out.deformers[m] = makeDeformer(m, request.scene->restCage, request.scene->meshVertices, prepared[k],
                                       context.span(static_cast<double>(k) * share, static_cast<double>(k + 1) * share));
     }
     context.report(1.0);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "cage_tetrahedralization.h"
+#include "deformer.h"
 #include "engine.h"
 #include "errors.h"
 #include "methods/method_descriptors.h"

@@ -8,7 +8,9 @@
 
 #include "app_state.h"
 #include "cage_repair.h"
+#include "cage_tetrahedralization.h"
 #include "cage_validation.h"
+#include "memory_estimate.h"
 #include "methods/method_descriptors.h"
 #include "precompute_worker.h"
 #include "scene.h"
@@ -275,6 +277,39 @@ TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   EXPECT_NE(state.errors.front().find("points need"), std::string::npos) << state.errors.front();
   EXPECT_NE(state.errors.front().find("but only 10 kB are free"), std::string::npos) << state.errors.front();
   expectSceneKept(state, kept);
+}
+
+// A Phong deformer's columns are per vertex of its tetrahedral mesh: the check counts them (the mesh is made first,
+// then used by the precompute), so a limit between the estimate from the cage's vertices and the one from the mesh's
+// refuses it. Before, it counted the cage's vertices and let it through.
+TEST(EditorWorker, APhongPrecomputeCountsItsTetrahedralMeshInTheMemoryCheck) {
+  const auto scene = std::make_shared<const Scene>(makeDemoScene(3));
+  PrecomputeRequest request;
+  request.scene = scene;
+  request.methods = {methods::phong()};
+  request.options.volumeMesher = tetrahedralizeCageWithOptions;
+  const std::size_t points = static_cast<std::size_t>(scene->meshVertices.rows());
+  const int meshVertices = volumeMeshFor(scene->restCage, request.options)->numVertices();
+  ASSERT_GT(meshVertices, scene->restCage.numVertices());
+  const auto total = [&](int vertices) {
+    return estimatePrecomputeMemory(methods::phong(), 3, vertices, scene->restCage.numFaces(), points,
+                                    request.options.floatStorage, request.options.threads)
+        .total();
+  };
+  const double limit = 0.5 * static_cast<double>(total(scene->restCage.numVertices()) + total(meshVertices)) /
+                       kMemorySafetyFraction;
+  PrecomputeWorker worker;
+  ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", std::to_string(static_cast<long long>(limit)).c_str(), 1);
+  worker.start(request);
+  std::optional<PrecomputeOutcome> out = worker.wait();
+  ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->deformers.empty());
+  EXPECT_NE(out->error.find("points need"), std::string::npos) << out->error;
+  worker.start(request);  // without the limit it is built, over the mesh the check made
+  out = worker.wait();
+  ASSERT_TRUE(out.has_value() && out->error.empty()) << (out ? out->error : "");
+  EXPECT_EQ(out->deformers.at(methods::phong())->volumeMesh()->numVertices(), meshVertices);
 }
 
 TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
