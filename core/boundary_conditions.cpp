@@ -3,6 +3,9 @@
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
 #include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
 
 #include "errors.h"
 
@@ -82,6 +85,34 @@ Eigen::VectorXd normalSpread(const Cage& cage, const Eigen::MatrixXd& n, bool si
     }
   }
   return spread;
+}
+
+std::vector<int> planarPolygons(const Cage& cage) {
+  const int m = cage.numFaces(), d = cage.dim();
+  const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
+  std::vector<int> parent(static_cast<std::size_t>(m));
+  for (int j = 0; j < m; ++j) parent[static_cast<std::size_t>(j)] = j;
+  auto root = [&](int j) {
+    while (parent[static_cast<std::size_t>(j)] != j) j = parent[static_cast<std::size_t>(j)];
+    return j;
+  };
+  // The faces at each edge (3D: its sorted vertex pair) or vertex (2D).
+  std::map<std::pair<int, int>, std::vector<int>> ridges;
+  for (int j = 0; j < m; ++j)
+    for (int k = 0; k < d; ++k) {
+      const int a = cage.faces(j, k), b = d == 3 ? cage.faces(j, (k + 1) % 3) : a;
+      ridges[{std::min(a, b), std::max(a, b)}].push_back(j);
+    }
+  for (const auto& [ridge, faces] : ridges)
+    for (std::size_t k = 1; k < faces.size(); ++k) {
+      const int f = faces.front(), g = faces[k];
+      if (1 - normals.row(f).dot(normals.row(g)) > 1e-12) continue;
+      const int a = root(f), b = root(g);
+      parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);  // the smaller index is the root
+    }
+  std::vector<int> polygon(static_cast<std::size_t>(m));
+  for (int j = 0; j < m; ++j) polygon[static_cast<std::size_t>(j)] = root(j);
+  return polygon;
 }
 
 double sweptMeasure(const Cage& cage, const Eigen::MatrixXd& from, const Eigen::MatrixXd& to, int j) {
@@ -207,6 +238,14 @@ Eigen::VectorXd bulgingExponents(const Cage& rest, const Eigen::MatrixXd& posed,
     double bulge = spreadPosed(j) - spreadRest(j);
     if (d == 2) bulge = wrapAngle(bulge);
     exponents(j) = scale * bulge / normalisation;
+  }
+  if (params.bulging == Bulging::Polygon) {
+    // One exponent per planar polygon, its faces' sum: signed solid angles (2D: angles) of triangles that share an
+    // edge add up to the solid angle of their union, so the sum does not depend on how the polygon is split.
+    const std::vector<int> polygon = planarPolygons(rest);
+    Eigen::VectorXd sums = Eigen::VectorXd::Zero(m);
+    for (int j = 0; j < m; ++j) sums(polygon[static_cast<std::size_t>(j)]) += exponents(j);
+    for (int j = 0; j < m; ++j) exponents(j) = sums(polygon[static_cast<std::size_t>(j)]);
   }
   return exponents;
 }

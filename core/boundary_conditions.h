@@ -47,6 +47,10 @@ Eigen::MatrixXd vertexNormals(const Cage& cage, const Eigen::MatrixXd& vertices,
 // the normal at the edge's first vertex to the one at its second (> 0 where they diverge), signed either way.
 Eigen::VectorXd normalSpread(const Cage& cage, const Eigen::MatrixXd& unitVertexNormals, bool signedAngle = true);
 
+// Each face's planar polygon (#F): faces that share an edge (2D: a vertex) and whose rest unit normals agree to
+// 1e-12 (1 - n.n') lie in one plane and get one id, the smallest face index of the polygon (bulging: polygon).
+std::vector<int> planarPolygons(const Cage& cage);
+
 // The signed volume (3D) or area (2D) face j sweeps from its place in `from` to its place in `to` (#V by d
 // each), > 0 when it moves along its outward normal. 3D: the closed prism of the face in `to`, the face in `from`
 // reversed, and three side quads, each split along the diagonal from its first corner (as the authors' code).

@@ -18,6 +18,7 @@ enum class Bulging {
   SolidAngle,   // the paper's text: eta = lambda exp(gamma dOmega / (2^(d-1) pi)), signed solid angle (default)
   Reference,    // the authors' code: gamma^2 and the unsigned solid angle
   SweptVolume,  // the authors' second measure: eta = lambda exp(gamma^2 V_e / V_0)
+  Polygon,      // SolidAngle summed over each planar polygon of the rest cage: independent of how it is split
 };
 
 // How vertex normals (for bulging) and vertex rotations average their incident faces.

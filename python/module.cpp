@@ -145,7 +145,8 @@ const std::string& deformDoc() {
       ": bulging; variant: global, local, affine or stable; blend in " + rangeText(kBlendRange) +
       " overrides variant (somicage.parameter_ranges() has them all); traction_fix: Eq. 15; corotational: bem "
       "only, removes the best-fit rotation before the linear-elastic solve; bulging: solid-angle (the paper's text), "
-      "reference (the authors' code: gamma squared) or swept-volume; normals: area or angle. Green and mvc ignore "
+      "reference (the authors' code: gamma squared), swept-volume or polygon (solid-angle per flat polygon); normals: "
+      "area or angle. Green and mvc ignore "
       "all but posed; bem reads nu and corotational.";
   return doc;
 }

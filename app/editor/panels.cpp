@@ -44,6 +44,10 @@ std::string gammaTooltip(Bulging bulging) {
       return "Bulging scale gamma >= 0, swept volume (bulging: swept-volume): eta_j = lambda_j exp(gamma^2 V_j / V),\n"
              "V_j the volume face j swept from the best-fit similarity of its rest place, V that cage's volume.\n"
              "0: no bulging.";
+    case Bulging::Polygon:
+      return "Bulging scale gamma >= 0, the paper's solid angle per flat polygon (bulging: polygon): as solid-angle,\n"
+             "but coplanar neighbouring faces share one eta from their summed beta, so how a flat face is split into\n"
+             "triangles does not matter (with normals: angle). 0: no bulging.";
     case Bulging::SolidAngle:
       break;
   }

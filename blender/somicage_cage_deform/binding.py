@@ -32,7 +32,8 @@ VARIANTS = [("global", "Global", "One best-fit rotation for the whole cage (Fig.
 # compares them with choice_info()).
 BULGING = [("solid-angle", "Solid angle", "The paper's text: gamma times the change of the signed solid angle"),
            ("reference", "Reference", "The authors' code: gamma squared, unsigned solid angle (the paper's figures)"),
-           ("swept-volume", "Swept volume", "gamma squared times the volume each face swept / the cage's volume")]
+           ("swept-volume", "Swept volume", "gamma squared times the volume each face swept / the cage's volume"),
+           ("polygon", "Polygon", "Solid angle per flat polygon: coplanar neighbours share one stretch, whatever their split")]
 NORMALS = [("area", "Area", "Vertex normals and rotations weighted by face area (the paper's)"),
            ("angle", "Angle", "Weighted by corner angle: flat regions do not depend on their triangulation")]
 

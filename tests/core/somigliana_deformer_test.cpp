@@ -32,7 +32,7 @@ std::vector<DeformParams> parameterGrid() {
         for (bool fix : {true, false}) grid.push_back({blend, nu, gamma, fix});
   // Every bulging convention and normal weighting (deform_choices.h), with bulging on, in both variants.
   for (double blend : {0.0, 1.0})
-    for (Bulging bulging : {Bulging::SolidAngle, Bulging::Reference, Bulging::SweptVolume})
+    for (Bulging bulging : {Bulging::SolidAngle, Bulging::Reference, Bulging::SweptVolume, Bulging::Polygon})
       for (NormalWeights normals : {NormalWeights::Area, NormalWeights::Angle})
         grid.push_back({blend, 0.3, 1.5, true, false, bulging, normals});
   // The variants beyond the paper (deformer.h: VariantKind).
@@ -235,7 +235,7 @@ TEST(SomiglianaDeformer, RejectsInvalidParameters) {
   for (const DeformParams& bad :
        {DeformParams{0, 0.5, 0, true}, DeformParams{0, -1, 0, true}, DeformParams{0, kNaN, 0, true},
         DeformParams{0, 0, -1, true}, DeformParams{1.5, 0, 0, true}, DeformParams{kNaN, 0, 0, true},
-        DeformParams{0, 0, 0, true, false, static_cast<Bulging>(3)},
+        DeformParams{0, 0, 0, true, false, static_cast<Bulging>(4)},
         DeformParams{0, 0, 0, true, false, Bulging::SolidAngle, static_cast<NormalWeights>(-1)}})
     EXPECT_THROW(deformer->deform(s.cage.vertices, bad), InputError) << describe(bad);
 }
