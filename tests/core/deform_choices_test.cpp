@@ -177,28 +177,12 @@ Eigen::MatrixXd mirrored(Eigen::MatrixXd points) {
   return points;
 }
 
-TEST(DeformChoices, LiftedCubeStaysMirrorSymmetricWithAngleNormals) {
-  // test::makeCube splits its z and y faces along diagonals that the mirror x -> -x does not keep. Mirror-
-  // symmetric points, the top face lifted: with angle weights the vertex normals stay the box's diagonals, so
-  // bulging sees no change and the result is as symmetric as the cage's geometry (1e-12 diameters); area weights
-  // make the normals, and so the result, depend on the split.
-  const Cage cube = test::makeCube();
+// 20 points in the box and their mirror images (the second half mirrors the first).
+Eigen::MatrixXd mirrorSymmetricPoints() {
   const Eigen::MatrixXd half = test::randomBoxPoints(20, 3, -0.9, 0.9, 4);
   Eigen::MatrixXd points(40, 3);
   points << half, mirrored(half);
-  Eigen::MatrixXd posed = cube.vertices;
-  for (int i = 0; i < 8; ++i)
-    if (posed(i, 2) > 0) posed(i, 2) += 1;
-  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
-  const double diameter = cageDiameter(posed);
-  for (double blend : {0.0, 1.0}) {
-    auto asymmetry = [&](NormalWeights w) {
-      const Eigen::MatrixXd out = deformer->deform(posed, bulged(blend, 2.0, Bulging::SolidAngle, w));
-      return (mirrored(out.topRows(20)) - out.bottomRows(20)).rowwise().norm().maxCoeff() / diameter;
-    };
-    EXPECT_LE(asymmetry(NormalWeights::Angle), 1e-12) << "blend " << blend;
-    EXPECT_GT(asymmetry(NormalWeights::Area), 1e-5) << "blend " << blend << ": the case tests the split";
-  }
+  return points;
 }
 
 // The mirror asymmetry, in cage diameters, of the mirror-symmetric points deformed in the cube (test::makeCube,
@@ -209,6 +193,27 @@ double mirrorAsymmetry(const CageDeformer& deformer, const Eigen::MatrixXd& pose
   return (mirrored(out.topRows(half)) - out.bottomRows(half)).rowwise().norm().maxCoeff() / cageDiameter(posed);
 }
 
+TEST(DeformChoices, LiftedCubeStaysMirrorSymmetricWithAngleNormals) {
+  // test::makeCube splits its z and y faces along diagonals that the mirror x -> -x does not keep. Mirror-
+  // symmetric points, the top face lifted: with angle weights the vertex normals stay the box's diagonals, so
+  // bulging sees no change and the result is as symmetric as the cage's geometry (1e-12 diameters); area weights
+  // make the normals, and so the result, depend on the split.
+  const Cage cube = test::makeCube();
+  const Eigen::MatrixXd points = mirrorSymmetricPoints();
+  Eigen::MatrixXd posed = cube.vertices;
+  for (int i = 0; i < 8; ++i)
+    if (posed(i, 2) > 0) posed(i, 2) += 1;
+  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  for (double blend : {0.0, 1.0}) {
+    auto asymmetry = [&](NormalWeights w) {
+      return mirrorAsymmetry(*deformer, posed, bulged(blend, 2.0, Bulging::SolidAngle, w));
+    };
+    EXPECT_LE(asymmetry(NormalWeights::Angle), 1e-12) << "blend " << blend;
+    EXPECT_GT(asymmetry(NormalWeights::Area), 1e-5) << "blend " << blend << ": the case tests the split";
+  }
+}
+
+
 // Where beta still depends on the triangulation with angle weights (issue 26; the numbers are in docs/engine.md).
 // The top face sheared by 0.5 along y: every face moves affinely and the pose is mirror-symmetric, so without
 // bulging the result is symmetric to rounding in both variants. The angle-weighted normals are split-independent
@@ -218,9 +223,7 @@ double mirrorAsymmetry(const CageDeformer& deformer, const Eigen::MatrixXd& pose
 // spherical quadrilateral's solid angle, is the same for either diagonal: what a per-polygon beta would use.
 TEST(DeformChoices, AngleNormalsLeaveBetaDependentOnTheSplitOfAFaceWhoseCornerNormalsTurn) {
   const Cage cube = test::makeCube();
-  const Eigen::MatrixXd half = test::randomBoxPoints(20, 3, -0.9, 0.9, 4);
-  Eigen::MatrixXd points(40, 3);
-  points << half, mirrored(half);
+  const Eigen::MatrixXd points = mirrorSymmetricPoints();
   Eigen::MatrixXd sheared = cube.vertices;
   for (int i = 0; i < 8; ++i)
     if (sheared(i, 2) > 0) sheared(i, 1) += 0.5;
@@ -267,9 +270,7 @@ TEST(DeformChoices, PolygonBulgingDoesNotDependOnHowAFlatFaceIsSplit) {
   const Cage cube = test::makeCube();
   const std::vector<int> polygons = planarPolygons(cube);
   EXPECT_EQ(polygons, (std::vector<int>{0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10}));
-  const Eigen::MatrixXd half = test::randomBoxPoints(20, 3, -0.9, 0.9, 4);
-  Eigen::MatrixXd points(40, 3);
-  points << half, mirrored(half);
+  const Eigen::MatrixXd points = mirrorSymmetricPoints();
   Eigen::MatrixXd sheared = cube.vertices;
   for (int i = 0; i < 8; ++i)
     if (sheared(i, 2) > 0) sheared(i, 1) += 0.5;
@@ -322,9 +323,7 @@ TEST(DeformChoices, PolygonBulgingDoesNotDependOnHowAFlatFaceIsSplit) {
 // The global variant (one rotation) stays symmetric. Measured, not a defect of the choices: docs/engine.md.
 TEST(DeformChoices, TheLocalVariantDependsOnTheSplitWhereVertexRotationsDiffer) {
   const Cage cube = test::makeCube();
-  const Eigen::MatrixXd half = test::randomBoxPoints(20, 3, -0.9, 0.9, 4);
-  Eigen::MatrixXd points(40, 3);
-  points << half, mirrored(half);
+  const Eigen::MatrixXd points = mirrorSymmetricPoints();
   Eigen::MatrixXd narrowed = cube.vertices;
   for (int i = 0; i < 8; ++i)
     if (narrowed(i, 2) > 0) narrowed(i, 1) *= 0.5;

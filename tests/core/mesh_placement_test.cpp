@@ -6,14 +6,12 @@
 
 #include <cmath>
 
+#include "test_shapes.h"
+
 namespace somicage {
 namespace {
 
-Cage unitSquare() {
-  Eigen::MatrixXd loop(4, 2);
-  loop << 0, 0, 1, 0, 1, 1, 0, 1;
-  return makePolygonCage(loop);
-}
+Cage unitSquare() { return test::makeUnitSquare(); }
 
 TEST(MeshPlacement, AMeshInsideItsCageFits) {
   Eigen::MatrixXd points(3, 2);

@@ -13,20 +13,15 @@
 #include "methods/method_descriptors.h"
 #include "seam_jumps.h"
 #include "simplex_locator.h"
+#include "test_shapes.h"
 
 namespace somicage {
 namespace {
 
 // The unit square split by its diagonal from (0, 0) to (1, 1): triangle 0 below it, triangle 1 above.
-Cage unitSquare() {
-  Eigen::MatrixXd loop(4, 2);
-  loop << 0, 0, 1, 0, 1, 1, 0, 1;
-  return makePolygonCage(loop);
-}
-
 std::shared_ptr<VolumeMesh> splitSquare() {
   auto mesh = std::make_shared<VolumeMesh>();
-  mesh->vertices = unitSquare().vertices;
+  mesh->vertices = test::makeUnitSquare().vertices;
   mesh->simplices.resize(2, 3);
   mesh->simplices << 0, 1, 2, 0, 2, 3;
   return mesh;
@@ -61,7 +56,7 @@ TEST(SeamJumps, FindsWhereEdgesCrossTheFaceBetweenTwoTriangles) {
 // J = F_t + 1/2 sum_i F_i (X - X_i) g_i^T + 1/2 sum_i l_i F_i then is 3/4 F_0 + 1/4 I below the diagonal and
 // 1/4 F_0 + 3/4 I above it: the jump is 1/2 (F_0 - I), of norm delta / sqrt 2, at every point of the diagonal.
 TEST(SeamJumps, PhongJumpMatchesItsClosedFormAcrossTheDiagonal) {
-  const Cage square = unitSquare();
+  const Cage square = test::makeUnitSquare();
   const double delta = 0.3;
   PrecomputeOptions options;
   options.volumeMesh = splitSquare();

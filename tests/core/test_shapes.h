@@ -138,6 +138,13 @@ inline Eigen::MatrixXd randomBallPoints(int count, double maxRadius, unsigned se
   return P;
 }
 
+// The unit square [0, 1]^2, counter-clockwise from the origin.
+inline Cage makeUnitSquare() {
+  Eigen::MatrixXd loop(4, 2);
+  loop << 0, 0, 1, 0, 1, 1, 0, 1;
+  return makePolygonCage(loop);
+}
+
 // A non-convex counter-clockwise star polygon with `spikes` spikes (radii 1 and 0.5), slightly irregular.
 inline Cage makeStarPolygon(int spikes) {
   Eigen::MatrixXd loop(2 * spikes, 2);
