@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <cstdio>
 #include <set>
 #include <string>
@@ -185,6 +186,19 @@ Eigen::MatrixXd mirrorSymmetricPoints() {
   return points;
 }
 
+// The cube's vertices with the top face's (z > 0) coordinate `axis` mapped to scale * value + shift.
+Eigen::MatrixXd topMoved(const Cage& cube, int axis, double scale, double shift) {
+  Eigen::MatrixXd posed = cube.vertices;
+  for (int i = 0; i < posed.rows(); ++i)
+    if (posed(i, 2) > 0) posed(i, axis) = scale * posed(i, axis) + shift;
+  return posed;
+}
+
+// The Somigliana deformer of mirrorSymmetricPoints() in the cube.
+std::unique_ptr<CageDeformer> mirrorPointsDeformer(const Cage& cube) {
+  return makeDeformer(methods::somigliana(), cube, mirrorSymmetricPoints(), {}, noProgress);
+}
+
 // The mirror asymmetry, in cage diameters, of the mirror-symmetric points deformed in the cube (test::makeCube,
 // split against the mirror x -> -x) at that pose; the first half of points is mirrored into the second.
 double mirrorAsymmetry(const CageDeformer& deformer, const Eigen::MatrixXd& posed, const DeformParams& params) {
@@ -199,11 +213,8 @@ TEST(DeformChoices, LiftedCubeStaysMirrorSymmetricWithAngleNormals) {
   // bulging sees no change and the result is as symmetric as the cage's geometry (1e-12 diameters); area weights
   // make the normals, and so the result, depend on the split.
   const Cage cube = test::makeCube();
-  const Eigen::MatrixXd points = mirrorSymmetricPoints();
-  Eigen::MatrixXd posed = cube.vertices;
-  for (int i = 0; i < 8; ++i)
-    if (posed(i, 2) > 0) posed(i, 2) += 1;
-  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  const Eigen::MatrixXd posed = topMoved(cube, 2, 1, 1);
+  const auto deformer = mirrorPointsDeformer(cube);
   for (double blend : {0.0, 1.0}) {
     auto asymmetry = [&](NormalWeights w) {
       return mirrorAsymmetry(*deformer, posed, bulged(blend, 2.0, Bulging::SolidAngle, w));
@@ -223,11 +234,8 @@ TEST(DeformChoices, LiftedCubeStaysMirrorSymmetricWithAngleNormals) {
 // spherical quadrilateral's solid angle, is the same for either diagonal: what a per-polygon beta would use.
 TEST(DeformChoices, AngleNormalsLeaveBetaDependentOnTheSplitOfAFaceWhoseCornerNormalsTurn) {
   const Cage cube = test::makeCube();
-  const Eigen::MatrixXd points = mirrorSymmetricPoints();
-  Eigen::MatrixXd sheared = cube.vertices;
-  for (int i = 0; i < 8; ++i)
-    if (sheared(i, 2) > 0) sheared(i, 1) += 0.5;
-  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  const Eigen::MatrixXd sheared = topMoved(cube, 1, 1, 0.5);
+  const auto deformer = mirrorPointsDeformer(cube);
   for (double blend : {0.0, 1.0}) {
     const double flat = mirrorAsymmetry(*deformer, sheared, bulged(blend, 0, Bulging::SolidAngle, NormalWeights::Angle));
     const double angle = mirrorAsymmetry(*deformer, sheared, bulged(blend, 2, Bulging::SolidAngle, NormalWeights::Angle));
@@ -270,11 +278,8 @@ TEST(DeformChoices, PolygonBulgingDoesNotDependOnHowAFlatFaceIsSplit) {
   const Cage cube = test::makeCube();
   const std::vector<int> polygons = planarPolygons(cube);
   EXPECT_EQ(polygons, (std::vector<int>{0, 0, 2, 2, 4, 4, 6, 6, 8, 8, 10, 10}));
-  const Eigen::MatrixXd points = mirrorSymmetricPoints();
-  Eigen::MatrixXd sheared = cube.vertices;
-  for (int i = 0; i < 8; ++i)
-    if (sheared(i, 2) > 0) sheared(i, 1) += 0.5;
-  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  const Eigen::MatrixXd sheared = topMoved(cube, 1, 1, 0.5);
+  const auto deformer = mirrorPointsDeformer(cube);
   for (double blend : {0.0, 1.0}) {
     const DeformParams polygon = bulged(blend, 2, Bulging::Polygon, NormalWeights::Angle);
     const double asymmetry = mirrorAsymmetry(*deformer, sheared, polygon);
@@ -323,11 +328,8 @@ TEST(DeformChoices, PolygonBulgingDoesNotDependOnHowAFlatFaceIsSplit) {
 // The global variant (one rotation) stays symmetric. Measured, not a defect of the choices: docs/engine.md.
 TEST(DeformChoices, TheLocalVariantDependsOnTheSplitWhereVertexRotationsDiffer) {
   const Cage cube = test::makeCube();
-  const Eigen::MatrixXd points = mirrorSymmetricPoints();
-  Eigen::MatrixXd narrowed = cube.vertices;
-  for (int i = 0; i < 8; ++i)
-    if (narrowed(i, 2) > 0) narrowed(i, 1) *= 0.5;
-  const auto deformer = makeDeformer(methods::somigliana(), cube, points, {}, noProgress);
+  const Eigen::MatrixXd narrowed = topMoved(cube, 1, 0.5, 0);
+  const auto deformer = mirrorPointsDeformer(cube);
   const double global = mirrorAsymmetry(*deformer, narrowed, bulged(0, 0, Bulging::SolidAngle, NormalWeights::Angle));
   const double local = mirrorAsymmetry(*deformer, narrowed, bulged(1, 0, Bulging::SolidAngle, NormalWeights::Angle));
   std::printf("  gamma 0, narrowed top: asymmetry %.1e (global), %.1e (local) diameters\n", global, local);
