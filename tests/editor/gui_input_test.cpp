@@ -261,7 +261,7 @@ TEST(GuiInput, MakeCageAcceptAndUndoReplaceTheCageAndGiveItBack) {
       "xdotool key ctrl+s; waitfor 'dialog Save session' 1 15 || exit 4\n"
       "settle; xdotool key ctrl+a; xdotool type --delay 20 'made.json'; xdotool key Return\n"
       "for i in $(seq 1 300); do [ -f made.json ] && break; sleep 0.1; done; cp made.json made_copy.json\n"
-      "xdotool key ctrl+z; waitfor 'action undo' 1 15 || exit 4\nsettle; shot undone.png\n"
+      "settle; xdotool key ctrl+z; waitfor 'action undo' 1 15 || exit 4\nsettle; shot undone.png\n"
       "xdotool key ctrl+s; for i in $(seq 1 300); do cmp -s made.json made_copy.json || break; sleep 0.1; done\n"
       "xdotool key ctrl+q; settle; alive && xdotool key d; finish\n");
   ASSERT_TRUE(fs::exists(dir / "made_copy.json")) << out;
