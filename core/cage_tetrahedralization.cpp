@@ -7,14 +7,21 @@
 #include <CGAL/Mesh_triangulation_3.h>
 #include <CGAL/Polyhedral_mesh_domain_with_features_3.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/exude_mesh_3.h>
 #include <CGAL/make_mesh_3.h>
 
 #include <array>
+#include <atomic>
+#include <chrono>
 #include <cmath>
+#include <exception>
 #include <map>
+#include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include "constrained_tetrahedralization.h"
 #include "errors.h"
 
 namespace somicage {
@@ -32,14 +39,10 @@ using Criteria = CGAL::Mesh_criteria_3<Triangulation>;
 
 const char* const kGenerated = "the generated tetrahedral mesh";
 
-}  // namespace
-
-VolumeMesh tetrahedralizeCage(const Cage& cage, int level) {
-  if (cage.dim() != 3) {
-    if (std::unique_ptr<VolumeMesh> star = starVolumeMesh(cage)) return *star;
-    throw InputError("--tets", -1, "the polygon is not star-shaped from its centroid, so it has no triangle fan",
-                     "give a triangulation of it with --tets FILE.mesh (Dimension 2, Triangles)");
-  }
+// Mesh_3's tetrahedra at `level` (> 0), or nothing when it lost a cage vertex or `stop` was set before it was done.
+std::optional<VolumeMesh> mesh3Tetrahedra(const Cage& cage, int level, const TetrahedralizationBound& bound,
+                                          std::atomic<bool>& stop) {
+  const auto start = std::chrono::steady_clock::now();
   const int n = cage.numVertices();
   // Every cage face is its own surface patch and every cage edge its own feature curve: the corners of the
   // curves (every cage vertex) are kept exactly, and a boundary facet's vertices lie on one patch, so the
@@ -53,9 +56,7 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level) {
   for (int j = 0; j < cage.numFaces(); ++j) {
     const SurfaceMesh::Face_index f =
         surface.add_face(handles[cage.faces(j, 0)], handles[cage.faces(j, 1)], handles[cage.faces(j, 2)]);
-    if (f == SurfaceMesh::null_face())
-      throw InputError(kGenerated, -1, "the cage is not a manifold surface CGAL can mesh (face " + std::to_string(j) + ")",
-                       "repair the cage, or give a tetrahedral mesh with --tets");
+    if (f == SurfaceMesh::null_face()) return std::nullopt;  // not a manifold surface: the fallback says why
     patch[f] = j + 1;
     for (int k = 0; k < 3; ++k) {
       const int a = cage.faces(j, k), b = cage.faces(j, (k + 1) % 3);
@@ -71,14 +72,22 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level) {
   Domain domain(surface);
   domain.add_features(curves.begin(), curves.end());
 
-  const double diameter = cageDiameter(cage.vertices);
   namespace p = CGAL::parameters;
   const auto topology = CGAL::FACET_VERTICES_ON_SAME_SURFACE_PATCH_WITH_ADJACENCY_CHECK;
-  const double h = diameter * std::ldexp(1.0, -(level + 1));
-  const Criteria criteria = level == 0 ? Criteria(p::edge_size = diameter, p::facet_topology = topology)
-                                       : Criteria(p::edge_size = h, p::facet_size = h, p::facet_topology = topology,
-                                                  p::cell_size = h, p::cell_radius_edge_ratio = 3);
-  const Complex complex = CGAL::make_mesh_3<Complex>(domain, criteria, p::no_perturb(), p::exude(), p::manifold());
+  const double h = cageDiameter(cage.vertices) * std::ldexp(1.0, -(level + 1));
+  const Criteria criteria(p::edge_size = h, p::facet_size = h, p::facet_topology = topology, p::cell_size = h,
+                          p::cell_radius_edge_ratio = 3);
+  // No p::manifold(): on CACTUS's cage its extra refinement never ends (CGAL 5.5); checkVolumeMesh checks the
+  // boundary instead. Refinement stops at `stop` or the vertex cap; exudation (sliver removal) runs after it.
+  CGAL::Mesh_error_code error = CGAL::CGAL_MESH_3_NO_ERROR;
+  Complex complex = CGAL::make_mesh_3<Complex>(
+      domain, criteria, p::no_perturb(), p::no_exude(),
+      p::mesh_3_options(p::maximal_number_of_vertices = bound.maxVertices, p::pointer_to_error_code = &error,
+                        p::pointer_to_stop_atomic_boolean = &stop));
+  const double left = bound.seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (stop.load() || error != CGAL::CGAL_MESH_3_NO_ERROR || !(left > 0)) return std::nullopt;
+  CGAL::exude_mesh_3(complex, p::time_limit = left);  // does not poll `stop`: it gets the time left instead
+  if (stop.load()) return std::nullopt;
 
   // The cage's vertices first, matched by their exact coordinates (corners are kept as given), then the rest.
   std::map<std::array<double, 3>, int> cageIndex;
@@ -111,9 +120,7 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level) {
     tets.push_back(tet);
   }
   for (int i = 0; i < n; ++i)
-    if (!found[static_cast<std::size_t>(i)])
-      throw InputError(kGenerated, -1, "CGAL's mesher did not keep cage vertex " + std::to_string(i + 1),
-                       "give a tetrahedral mesh with --tets, or try another --tet-level");
+    if (!found[static_cast<std::size_t>(i)]) return std::nullopt;  // a cage vertex lost
   VolumeMesh mesh;
   mesh.vertices.resize(n + static_cast<int>(steiner.size()), 3);
   mesh.vertices.topRows(n) = cage.vertices;
@@ -122,21 +129,72 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level) {
   mesh.simplices.resize(static_cast<int>(tets.size()), 4);
   for (std::size_t t = 0; t < tets.size(); ++t)
     for (int k = 0; k < 4; ++k) mesh.simplices(static_cast<int>(t), k) = tets[t][static_cast<std::size_t>(k)];
-  for (int s = 0; s < mesh.numSimplices(); ++s)
-    if (signedSimplexMeasure(mesh, s) < 0) std::swap(mesh.simplices(s, 0), mesh.simplices(s, 1));
   return mesh;
 }
 
-VolumeMesh tetrahedralizeCageWithOptions(const Cage& cage, const MethodOptions& options) {
-  int level = kDefaultTetLevel;
-  if (const auto it = options.find("tet-level"); it != options.end()) {
-    const std::string& text = it->second;
-    if (text.size() != 1 || text[0] < '0' || text[0] >= '0' + kTetLevels)
-      throw InputError("--tet-level", -1, "'" + text + "' is not a tetrahedral mesh level",
-                       "use a whole number from 0 (coarse) to " + std::to_string(kTetLevels - 1));
-    level = text[0] - '0';
+// Whether `mesh` is a mesh of `cage` as checkVolumeMesh sees it (reorienting its simplices).
+bool meshesTheCage(VolumeMesh& mesh, const Cage& cage) {
+  try {
+    checkVolumeMesh(mesh, cage, {kGenerated, {}, {}});
+    return true;
+  } catch (const InputError&) {  // e.g. a sliver exudation left flat
+    return false;
   }
-  return tetrahedralizeCage(cage, level);
+}
+
+}  // namespace
+
+VolumeMesh tetrahedralizeCage(const Cage& cage, int level, const ProgressCallback& progress,
+                              const TetrahedralizationBound& bound) {
+  if (cage.dim() != 3) {
+    if (std::unique_ptr<VolumeMesh> star = starVolumeMesh(cage)) return *star;
+    throw InputError("--tets", -1, "the polygon is not star-shaped from its centroid, so it has no triangle fan",
+                     "give a triangulation of it with --tets FILE.mesh (Dimension 2, Triangles)");
+  }
+  if (!progress(0.0)) throw Cancelled();
+  if (level > 0) {
+    // Mesh_3 on a worker thread, so that this thread can call progress and stop it (CGAL polls the flag).
+    std::atomic<bool> stop{false};
+    std::optional<VolumeMesh> mesh;
+    std::exception_ptr failure;
+    std::thread worker([&] {
+      try {
+        mesh = mesh3Tetrahedra(cage, level, bound, stop);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+      stop.store(true);  // done: tells the loop below
+    });
+    const auto start = std::chrono::steady_clock::now();
+    bool cancelled = false;
+    while (!stop.load()) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      const double used = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() /
+                          bound.seconds;
+      if (!progress(std::min(used, 0.99))) cancelled = true;
+      if (cancelled || used >= 1) stop.store(true);
+    }
+    worker.join();
+    if (cancelled) throw Cancelled();
+    if (failure) std::rethrow_exception(failure);
+    if (mesh && meshesTheCage(*mesh, cage)) {
+      if (!progress(1.0)) throw Cancelled();
+      return *mesh;
+    }
+  }
+  // Level 0, or Mesh_3 not done within its bound: the constrained tetrahedralization, cells of the level's size.
+  const double h = cageDiameter(cage.vertices) * std::ldexp(1.0, -(level + 1));
+  VolumeMesh mesh = constrainedTetrahedralization(cage, level > 0 ? h * h * h / (6 * std::sqrt(2.0)) : 0.0);
+  if (!meshesTheCage(mesh, cage))
+    throw InputError(kGenerated, -1, "neither CGAL's Mesh_3 nor TetGen made a tetrahedral mesh of the cage",
+                     "repair the cage (somicage check), or give a tetrahedral mesh with --tets");
+  if (!progress(1.0)) throw Cancelled();
+  return mesh;
+}
+
+VolumeMesh tetrahedralizeCageWithOptions(const Cage& cage, const MethodOptions& options,
+                                         const ProgressCallback& progress) {
+  return tetrahedralizeCage(cage, parseTetLevel(options), progress);
 }
 
 }  // namespace somicage

@@ -17,7 +17,7 @@ void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformPara
 }
 
 std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
-                                                int* reoriented) {
+                                                int* reoriented, const ProgressCallback& progress) {
   if (options.volumeMesh) return options.volumeMesh;
   int flipped = 0;
   std::shared_ptr<VolumeMesh> mesh;
@@ -29,7 +29,7 @@ std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const Prec
                  options.methodOptions.count("tet-level") == 0 ? starVolumeMesh(restCage) : nullptr) {
     mesh = std::move(star);  // the coarsest mesh there is, the same in every front end
   } else if (options.volumeMesher) {
-    mesh = std::make_shared<VolumeMesh>(options.volumeMesher(restCage, options.methodOptions));
+    mesh = std::make_shared<VolumeMesh>(options.volumeMesher(restCage, options.methodOptions, progress));
     try {
       flipped = checkVolumeMesh(*mesh, restCage, {"the generated tetrahedral mesh", {}, {}});
     } catch (const InputError& e) {  // e.g. a sliver CGAL left flat: the user can only change the level

@@ -43,9 +43,10 @@ struct PrecomputeOptions {
 // A volume method's mesh: options.volumeMesh; else the MEDIT file methodOptions["tets"] (checkVolumeMesh: *reoriented
 // counts the reoriented simplices); else, with no "tet-level" asked for, the cage's star (starVolumeMesh) when it is
 // star-shaped from its centroid; else options.volumeMesher's (checked too). Throws InputError naming --tets when
-// there is none (a cage not star-shaped from its centroid, and no mesher).
+// there is none (a cage not star-shaped from its centroid, and no mesher). progress goes to the mesher (Cancelled).
 std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,
-                                                int* reoriented = nullptr);
+                                                int* reoriented = nullptr,
+                                                const ProgressCallback& progress = noProgress);
 
 // Per-point facts established by the precompute (#P each; empty where a method does not provide them).
 struct PrecomputeDiagnostics {

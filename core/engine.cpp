@@ -62,10 +62,11 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
   return points;
 }
 
-void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices) {
+void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices,
+                       const ProgressCallback& progress) {
   if (!method->needsVolumeMesh || options.volumeMesh) return;
   int reoriented = 0;
-  options.volumeMesh = volumeMeshFor(restCage, options, &reoriented);
+  options.volumeMesh = volumeMeshFor(restCage, options, &reoriented, progress);
   if (reoriented > 0) {
     const auto file = options.methodOptions.find("tets");
     notices({Notice::Kind::Repair, file != options.methodOptions.end() ? file->second : "",
@@ -91,7 +92,7 @@ std::unique_ptr<CageDeformer> precompute(Method method, const Cage& restCage, co
                                          const PrecomputeOptions& options, const std::string& source,
                                          const ProgressCallback& progress, const MemoryCheck& memory) {
   PrecomputeOptions prepared = options;
-  prepareVolumeMesh(method, restCage, prepared, ignoreNotices);
+  prepareVolumeMesh(method, restCage, prepared, ignoreNotices, progress);
   const MemoryEstimate estimate = requirePrecomputeMemory(
       method, restCage, static_cast<std::size_t>(points.rows()), prepared, source,
       memory.hint.empty() ? memoryHint(!options.floatStorage) : memory.hint, memory.withGradients);

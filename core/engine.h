@@ -59,7 +59,9 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
 // For a method that needs a volume mesh of the cage (MethodDescriptor::needsVolumeMesh) and has none yet: makes it
 // (deformer.h: volumeMeshFor, from the method options "tets" / "tet-level" and the mesher) and stores it in
 // options.volumeMesh, with a Repair notice naming the file when simplices were reoriented. Nothing otherwise.
-void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices);
+// progress goes to the mesher, which may take seconds (Cancelled when it returns false).
+void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices,
+                       const ProgressCallback& progress = noProgress);
 
 // The memory a precompute of `points` points will take (memory_estimate.h), with the deformation gradient's
 // (jacobian.h) when withGradients; a volume method's counts the columns of options.volumeMesh (prepareVolumeMesh

@@ -202,6 +202,16 @@ int checkVolumeMesh(VolumeMesh& mesh, const Cage& cage, const VolumeMeshSource& 
   return reoriented;
 }
 
+int parseTetLevel(const MethodOptions& options) {
+  const auto it = options.find("tet-level");
+  if (it == options.end()) return kDefaultTetLevel;
+  const std::string& text = it->second;
+  if (text.size() != 1 || text[0] < '0' || text[0] >= '0' + kTetLevels)
+    throw InputError("--tet-level", -1, "'" + text + "' is not a tetrahedral mesh level",
+                     "use a whole number from 0 (coarse) to " + std::to_string(kTetLevels - 1));
+  return text[0] - '0';
+}
+
 std::unique_ptr<VolumeMesh> starVolumeMesh(const Cage& cage) {
   const int d = cage.dim(), n = cage.numVertices();
   const Eigen::RowVectorXd origin = cage.vertices.colwise().mean();

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cage.h"
+#include "progress.h"
 
 namespace somicage {
 
@@ -68,8 +69,18 @@ std::unique_ptr<VolumeMesh> starVolumeMesh(const Cage& cage);
 // "tet-level" for Phong. Front ends fill it from their options (the CLI's --tets, Python's tets=).
 using MethodOptions = std::map<std::string, std::string>;
 
+// Detail levels of the generated tetrahedra (cage_tetrahedralization.h): 0 keeps about the cage's vertices, each
+// level halves the element size.
+constexpr int kTetLevels = 5;  // 0 .. 4
+constexpr int kDefaultTetLevel = 1;
+// The method option "tet-level": a whole number 0 .. 4 (kDefaultTetLevel when absent). Throws InputError naming
+// --tet-level otherwise, with the range: the mesher reads it, and the front ends check it when they read it.
+int parseTetLevel(const MethodOptions& options);
+
 // Makes a volume mesh of a cage from the method options: the CGAL tetrahedralization (cage_tetrahedralization.h),
 // injected by the front ends that link the cage generation library. The result is checked by checkVolumeMesh.
-using VolumeMesher = std::function<VolumeMesh(const Cage& restCage, const MethodOptions& options)>;
+// progress as in progress.h: it may stop the mesher (Cancelled).
+using VolumeMesher =
+    std::function<VolumeMesh(const Cage& restCage, const MethodOptions& options, const ProgressCallback& progress)>;
 
 }  // namespace somicage

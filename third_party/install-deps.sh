@@ -8,6 +8,7 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libgtest-dev  # core and tests
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenvdb-dev libtbb-dev libimath-dev  # cage generation
+  libtet1.5-dev  # TetGen: the constrained tetrahedralization of a cage (Phong's level 0 and Mesh_3's fallback)
   libassimp-dev libtinygltf-dev  # mesh formats (PLY, STL, OFF, glTF, FBX in; GLB out)
   libglfw3-dev libimgui-dev python3-glad libstb-dev libgl-dev  # editor
   xvfb xauth libgl1-mesa-dri  # headless OpenGL (Mesa llvmpipe) for the editor tests
