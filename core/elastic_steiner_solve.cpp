@@ -112,7 +112,14 @@ void ElasticSteinerSolver::solve(Eigen::MatrixXd& positions) const {
   for (std::size_t i = 0; i < knownVertices_.size(); ++i)
     known.segment(static_cast<Eigen::Index>(i) * d, d) =
         (positions.row(knownVertices_[i]) - rest_.row(knownVertices_[i])).transpose();
-  const Eigen::VectorXd u = factor_->solve(-(freeKnown_ * known));
+  // The editor asks twice per frame (the points' weights, the tetrahedra's wireframe): the same pose is solved once.
+  if (!(lastNu_ == nu_ && known.size() == lastKnown_.size() && known == lastKnown_)) {
+    lastU_ = factor_->solve(-(freeKnown_ * known));
+    lastKnown_ = std::move(known);
+    lastNu_ = nu_;
+    ++solves_;
+  }
+  const Eigen::VectorXd& u = lastU_;
   for (std::size_t i = 0; i < freeVertices_.size(); ++i)
     positions.row(freeVertices_[i]) =
         rest_.row(freeVertices_[i]) + u.segment(static_cast<Eigen::Index>(i) * d, d).transpose();

@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -38,8 +39,11 @@ class ElasticSteinerSolver {
   void factor(double nu);
   double factoredNu() const { return nu_; }
 
-  // positions (#N by d): the free rows are replaced by the minimiser, given the other rows. Needs factor().
+  // positions (#N by d): the free rows are replaced by the minimiser, given the other rows. Needs factor(). The
+  // last solve is kept: the same known rows at the same nu are not solved again. Not thread-safe (nor is factor).
   void solve(Eigen::MatrixXd& positions) const;
+  // How many times solve() ran the factor's solve (not counting repeats it answered from the last solve).
+  int solveCount() const { return solves_; }
 
   // K at nu over all vertices (d #N square, vertex-major: row v d + a), for tests against a dense solve.
   Eigen::SparseMatrix<double> stiffness(double nu) const;
@@ -53,6 +57,10 @@ class ElasticSteinerSolver {
   std::unique_ptr<Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>> factor_;
   double nu_ = 0;
   bool factored_ = false;
+  // The last solve: the known displacements and nu it was for (NaN: none yet), and the free displacements.
+  mutable Eigen::VectorXd lastKnown_, lastU_;
+  mutable double lastNu_ = std::numeric_limits<double>::quiet_NaN();
+  mutable int solves_ = 0;
 };
 
 }  // namespace somicage

@@ -199,19 +199,52 @@ TEST(PhongMethod, MatchesTheFormulasWrittenOutOnAHeldOutMesh) {
   }
 }
 
-TEST(PhongMethod, SteinerSolveMatchesADenseSolve) {
-  const VolumeMesh mesh = heldOutCubeMesh();
+// The held-out mesh's interior Steiner vertices (8, 9), and the mesh with its cage vertices bent.
+std::vector<bool> heldOutInteriorVertices() {
   std::vector<bool> free(10, false);
   free[8] = free[9] = true;
-  ElasticSteinerSolver solver(mesh, free);
+  return free;
+}
+Eigen::MatrixXd bentHeldOutCubeMesh(const VolumeMesh& mesh) {
   Eigen::MatrixXd x = mesh.vertices;
   x.topRows(8) = bentCube(mesh.vertices.topRows(8));
+  return x;
+}
+
+TEST(PhongMethod, SteinerSolveMatchesADenseSolve) {
+  const VolumeMesh mesh = heldOutCubeMesh();
+  ElasticSteinerSolver solver(mesh, heldOutInteriorVertices());
+  Eigen::MatrixXd x = bentHeldOutCubeMesh(mesh);
   for (double nu : {0.0, 0.45, -0.9}) {
     solver.factor(nu);
     Eigen::MatrixXd solved = x;
     solver.solve(solved);
     EXPECT_LE((solved - refSteiner(mesh, x, {8, 9}, nu)).cwiseAbs().maxCoeff(), 1e-12) << "nu " << nu;
   }
+}
+
+// The editor asks for the same frame's Steiner vertices twice (the points' weights, the tetrahedra's wireframe):
+// the second is answered from the first, which is the same solve; a new pose or nu is solved again.
+TEST(PhongMethod, SteinerSolveIsNotRepeatedForTheSamePose) {
+  const VolumeMesh mesh = heldOutCubeMesh();
+  ElasticSteinerSolver solver(mesh, heldOutInteriorVertices());
+  Eigen::MatrixXd x = bentHeldOutCubeMesh(mesh);
+  solver.factor(0.2);
+  Eigen::MatrixXd first = x, second = x;
+  solver.solve(first);
+  solver.solve(second);
+  EXPECT_EQ(solver.solveCount(), 1);
+  EXPECT_EQ(first, second);
+  EXPECT_LE((first - refSteiner(mesh, x, {8, 9}, 0.2)).cwiseAbs().maxCoeff(), 1e-12);
+  x(0, 0) += 0.1;
+  Eigen::MatrixXd moved = x;
+  solver.solve(moved);
+  EXPECT_EQ(solver.solveCount(), 2);
+  EXPECT_LE((moved - refSteiner(mesh, x, {8, 9}, 0.2)).cwiseAbs().maxCoeff(), 1e-12);
+  solver.factor(0.4);
+  solver.solve(moved);
+  EXPECT_EQ(solver.solveCount(), 3);
+  EXPECT_LE((moved - refSteiner(mesh, x, {8, 9}, 0.4)).cwiseAbs().maxCoeff(), 1e-12);
 }
 
 // The cube coned from its centre is symmetric under X -> -X; under an odd pose (x(-X) = -x(X)) the energy is
