@@ -38,6 +38,8 @@ struct MethodOptionSpec {
   const char* key;    // "tets"
   const char* value;  // what it holds, for help texts: "FILE"
   const char* help;   // one line: "a MEDIT .mesh volume mesh of the cage (default: tetrahedralize it)"
+  // Throws InputError when `value` is not one the option takes (callers name their own option); null: any text.
+  void (*check)(const std::string& value) = nullptr;
 };
 
 struct MethodDescriptor {

@@ -116,9 +116,18 @@ void validateViewSpec(const ViewSpec& view, const std::string& option) {
       throw InputError(option, -1, "no choice " + name + " = " + std::to_string(value), kViewHint);
     require(choice->parameter, name);
   }
-  for (const auto& [key, value] : view.options)
+  for (const auto& [key, value] : view.options) {
     if (!hasMethodOption(view.method, key))
       throw InputError(option, -1, methodName(view.method) + " has no option " + key, optionsHint(view.method));
+    for (const MethodOptionSpec& spec : view.method->options) {
+      if (!spec.check || key != spec.key) continue;
+      try {  // its value too, here rather than at the precompute
+        spec.check(value);
+      } catch (const InputError& e) {
+        throw InputError(option, -1, methodName(view.method) + " " + key + ": " + e.problem(), e.hint());
+      }
+    }
+  }
   // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
   DeformParams p;
   if (view.nu) p.nu = *view.nu;

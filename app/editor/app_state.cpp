@@ -20,7 +20,11 @@ namespace somicage::editor {
 
 std::vector<ViewSpec> AppState::views() const {
   if (compare && compareViews.size() >= 2) return compareViews;
-  return {ViewSpec{method, {}, {}, {}, {}, {}, {}}};
+  return {singleView()};
+}
+
+ViewSpec AppState::singleView() const {
+  return withMethod(ViewSpec{method, {}, {}, {}, {}, {}, methodOptions}, method);
 }
 
 std::vector<DeformerKey> AppState::deformerKeys() const {
@@ -71,6 +75,10 @@ std::string viewLabel(const AppState& state, std::size_t v) {
   }
   if (readsParameter(method, kParamCorotational) && params.corotational) label += "  corotational";
   for (const auto& [key, value] : view.options) label += "  " + key + " " + value + " (own)";
+  // Which tetrahedra a volume method gets without options of its own (deformer.h: volumeMeshFor): the cage's star.
+  if (method->needsVolumeMesh && view.options.count("tets") + view.options.count("tet-level") == 0 && state.scene &&
+      starVolumeMesh(state.scene->restCage))
+    label += "  star tetrahedra";
   if (!hasDeformer(state, deformerKey(view))) label += "  (precomputing...)";
   return label;
 }
@@ -456,6 +464,13 @@ void setMethod(AppState& state, Method method) {
   ensureDeformers(state);
 }
 
+void setMethodOptions(AppState& state, MethodOptions options) {
+  if (state.methodOptions == options) return;
+  state.methodOptions = std::move(options);
+  state.deformDirty = true;
+  ensureDeformers(state);
+}
+
 void setCompare(AppState& state, bool on) {
   if (on && !state.compare) state.frameRequested = true;  // narrower views: frame everything again
   if (on != state.compare) state.quantities.clearSweep();
@@ -508,6 +523,7 @@ Session makeSession(const AppState& state) {
   }
   s.pose = state.pose;
   s.method = state.method;
+  s.methodOptions = state.singleView().options;
   s.params = state.params;
   s.compare = state.compare;
   s.compareViews = state.compareViews;
@@ -522,6 +538,7 @@ void applySession(AppState& state, const Session& s) {
   state.animation.timeline = s.timeline;
   if (!s.poses.poses().empty() || !s.timeline.keys.empty()) state.animation.showPanels = true;
   state.method = s.method;
+  state.methodOptions = s.methodOptions;
   state.params = s.params;
   state.compare = s.compare;
   if (!s.compareViews.empty()) state.compareViews = s.compareViews;

@@ -68,6 +68,9 @@ struct AppState {
 
   // ---- method and parameters ----
   Method method;  // the registry's first (method.h)
+  // The single view's method options (sessions' "methodOptions"; the panel's tetrahedra for Phong); those the
+  // method has apply (withMethod), e.g. Phong's {"tet-level": "2"}.
+  MethodOptions methodOptions;
   DeformParams params;
   bool compare = false;
   std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
@@ -138,6 +141,8 @@ struct AppState {
 
   // The views shown, one per viewport: the compare view's list, or the current method with the shared parameters.
   std::vector<ViewSpec> views() const;
+  // The view without compare: the current method with the shared parameters and its methodOptions.
+  ViewSpec singleView() const;
   // The distinct deformers of the views (method and method options), one deformer each.
   std::vector<DeformerKey> deformerKeys() const;
   // The parameters view v deforms with (its own, else the panel's).
@@ -198,6 +203,7 @@ void logLine(const AppState& state, const std::string& line);
 void setPose(AppState& state, const Eigen::MatrixXd& pose);   // no history; marks dirty
 void setParams(AppState& state, const DeformParams& params);  // no history; marks dirty
 void setMethod(AppState& state, Method method);               // no history
+void setMethodOptions(AppState& state, MethodOptions options);  // the single view's; no history (a view setting)
 void resetPose(AppState& state);                              // committed: "Reset pose"
 void undo(AppState& state);
 void redo(AppState& state);

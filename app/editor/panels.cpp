@@ -192,6 +192,37 @@ void drawMainMenu(AppState& state) {
   ImGui::EndMainMenuBar();
 }
 
+namespace {
+
+// The single view's tetrahedra for a volume method (Phong): the default (the cage's star when it is star-shaped,
+// else level 1) or a level (docs/engine.md, "Phong deformation"). Sessions keep it ("methodOptions").
+void drawTetrahedraChoice(AppState& state) {
+  const auto level = state.methodOptions.find("tet-level");
+  const std::string current = level == state.methodOptions.end() ? "default" : "level " + level->second;
+  if (ImGui::BeginCombo("tetrahedra", current.c_str())) {
+    if (ImGui::Selectable("default", level == state.methodOptions.end())) {
+      MethodOptions options = state.methodOptions;
+      options.erase("tet-level");
+      setMethodOptions(state, options);
+    }
+    for (int l = 0; l < kTetLevels; ++l) {
+      const std::string name = "level " + std::to_string(l);
+      if (ImGui::Selectable(name.c_str(), name == current)) {
+        MethodOptions options = state.methodOptions;
+        options["tet-level"] = std::to_string(l);
+        setMethodOptions(state, options);
+      }
+    }
+    ImGui::EndCombo();
+  }
+  tooltip(
+      "The tetrahedra Phong interpolates over. default: the cage's star when it is star-shaped from its\n"
+      "centroid, else level 1. Level 0: the constrained tetrahedralization (about the cage's vertices);\n"
+      "1 to 4: CGAL's, finer with each level. Esc stops a long tetrahedralization.");
+}
+
+}  // namespace
+
 void drawControlPanel(AppState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float top = static_cast<float>(menuBarHeight());
@@ -227,6 +258,7 @@ void drawControlPanel(AppState& state) {
       "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
       "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates;\n"
       "BEM: the linear-elastic solution of the pose (boundary elements, the same nu), a reference.");
+  if (state.method->needsVolumeMesh && !state.compare) drawTetrahedraChoice(state);
   bool compare = state.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   tooltip(

@@ -256,7 +256,8 @@ class PhongDeformer final : public CageDeformer {
 std::unique_ptr<CageDeformer> precomputePhong(const Cage& restCage, const Eigen::MatrixXd& points,
                                               const PrecomputeOptions& options, const ProgressCallback& progress) {
   assertCageAndPoints(restCage, points);
-  return std::make_unique<PhongDeformer>(restCage, volumeMeshFor(restCage, options), points, options, progress);
+  std::shared_ptr<const VolumeMesh> mesh = volumeMeshFor(restCage, options, nullptr, progress);
+  return std::make_unique<PhongDeformer>(restCage, std::move(mesh), points, options, progress);
 }
 
 // C is written in its stored precision; the per-point simplices and diagnostics are small.
@@ -282,7 +283,8 @@ const MethodDescriptor& phong() {
         "(default: tetrahedralize the cage)"},
        {"tet-level", "L",
         "detail of the generated tetrahedral mesh: 0 (coarse, about the cage's vertices) to 4 "
-        "(default 1)"}},
+        "(default 1)",
+        [](const std::string& level) { parseTetLevel({{"tet-level", level}}); }}},
       validatePhongParams,
       phongLayout,
       phongWorkingBytes,

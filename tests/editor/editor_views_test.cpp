@@ -281,6 +281,11 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "phong:level=2", "--view", "green"},
        "(expected nu, gamma, variant, traction, bulging, normals, or tets, tet-level)"},
       {{"--view", "phong:tet-level=1:tet-level=2", "--view", "green"}, "'tet-level' given twice"},
+      // The level is checked as the option is read, not at the precompute that makes the tetrahedra.
+      {{"--view", "phong:tet-level=7", "--view", "green"},
+       "phong tet-level: '7' is not a tetrahedral mesh level (use a whole number from 0 (coarse) to 4)"},
+      {{"--view", "phong:tet-level=fine", "--view", "green"},
+       "phong tet-level: 'fine' is not a tetrahedral mesh level"},
       {{"--view", "harmonic", "--view", "green"}, "unknown method 'harmonic'"},
       {{"--view", "green:nu=0.3", "--view", "somigliana"}, "green does not read nu"},
       {{"--view", "bem:nu=0.5", "--view", "somigliana"}, "bem nu: the boundary element method cannot use nu = 0.5"},
@@ -380,6 +385,35 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   EXPECT_EQ(state.deformerKeys().size(), 2u);
 }
 
+// The single view (no compare) has the method's own options too: the panel's tetrahedra (setMethodOptions) and a
+// session's top-level "methodOptions", which the editor writes and reads; a method without them ignores them.
+TEST(EditorViews, TheSingleViewTakesTheMethodsOwnOptionsFromThePanelAndSessions) {
+  AppState state;
+  state.method = methods::phong();
+  openDemoScene(state, 3);
+  const int cageVertices = state.scene->restCage.numVertices();
+  ASSERT_EQ(state.deformers.size(), 1u);
+  EXPECT_EQ(state.deformers.begin()->second->volumeMesh()->numVertices(), cageVertices + 1) << "the star";
+  setMethodOptions(state, {{"tet-level", "1"}});
+  installNextOutcome(state);
+  ViewSpec level1{methods::phong(), {}, {}, {}, {}, {}, {{"tet-level", "1"}}};
+  EXPECT_TRUE(state.views() == std::vector<ViewSpec>{level1});
+  ASSERT_TRUE(hasDeformer(state, deformerKey(level1)));
+  EXPECT_GT(state.deformers.at(deformerKey(level1))->volumeMesh()->numVertices(), cageVertices + 1) << "CGAL's";
+  EXPECT_NE(viewLabel(state, 0).find("tet-level 1"), std::string::npos) << viewLabel(state, 0);
+  // A session keeps them at its top level and gives them back.
+  const Session saved = sessionFromJson(sessionToJson(makeSession(state)), "s.json");
+  EXPECT_EQ(saved.methodOptions, (MethodOptions{{"tet-level", "1"}}));
+  AppState reopened;
+  applySession(reopened, saved);
+  EXPECT_TRUE(reopened.views() == std::vector<ViewSpec>{level1});
+  // Somigliana has no such option: its view and sessions have none.
+  setMethod(state, methods::somigliana());
+  installNextOutcome(state);
+  EXPECT_TRUE(state.views().front().options.empty());
+  EXPECT_TRUE(makeSession(state).methodOptions.empty());
+}
+
 // Views that differ in a method option (the Fig. 8 demo's coarse and finer tetrahedra) have deformers of their own,
 // each made with its options: the star (no tet-level, one Steiner vertex) and CGAL's level 1; views with equal
 // options share one.
@@ -435,6 +469,12 @@ TEST(EditorViews, TheFig8DemoOpensTwistedWithPhongOnTwoMeshesBesideSomigliana) {
     largestTurn = std::max(largestTurn, std::abs(turn));
   }
   EXPECT_NEAR(largestTurn, kFig8TwistRadians, 1e-12);
+  // The first pane's tetrahedra are the bar's star (no options of its own), the second CGAL's at the fine level.
+  EXPECT_NE(viewLabel(state, 0).find("star tetrahedra"), std::string::npos) << viewLabel(state, 0);
+  EXPECT_NE(viewLabel(state, 1).find(std::string("tet-level ") + kFig8FineTetLevel), std::string::npos)
+      << viewLabel(state, 1);
+  EXPECT_EQ(viewLabel(state, 1).find("star"), std::string::npos) << viewLabel(state, 1);
+  EXPECT_EQ(viewLabel(state, 2).find("tetrahedra"), std::string::npos) << viewLabel(state, 2);
   // The opened session keeps the panes' options.
   EXPECT_TRUE(sessionFromJson(sessionToJson(makeSession(state)), "s.json").compareViews == fig8Views());
 }
