@@ -425,6 +425,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
                                   mouse - r.origin(), r.size());
     it.transform->axis = hot.axis;
     it.transform->gridStep = gridStepFor(cageSize(state));
+    if (hot.kind == GizmoPart::Kind::Scale) it.transform->scalePixels = GizmoLayout::kArrowPixels;
     return;
   }
   if (left) {
