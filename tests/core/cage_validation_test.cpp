@@ -105,7 +105,9 @@ TEST(CageValidation, AFinLeadsWithNotManifoldNotWithItsOpenEdges) {
   } catch (const InputError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("the cage cannot be used: the cage is not edge-manifold"), std::string::npos) << what;
-    if (problems.size() == 2) EXPECT_NE(what.find("(and 1 more problem)"), std::string::npos) << what;
+    if (problems.size() == 2) {
+      EXPECT_NE(what.find("(and 1 more problem)"), std::string::npos) << what;
+    }
   }
 }
 
