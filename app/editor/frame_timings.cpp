@@ -58,7 +58,8 @@ FrameTimings FrameTimingsHistory::mean() const {
 void drawFrameTimingsWindow(const FrameTimingsHistory& history, bool* open) {
   if (!*open) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x - 300, vp->Pos.y + 60), ImGuiCond_FirstUseEver);
+  // Mid-width, below the views' labels (the pose library is at the right, the legends at the bottom right).
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + 0.5f * vp->Size.x - 100, vp->Pos.y + 110), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.85f);
   if (ImGui::Begin("Frame timings", open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoFocusOnAppearing)) {
     const FrameTimings& last = history.last();
