@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "simd_pack.h"
@@ -15,6 +16,12 @@
 
 namespace somicage {
 namespace {
+
+std::string scientific(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
 
 // The largest |packs - scalar| / max(1, |scalar|) over every term and winding number.
 double worstDifference(const Cage& cage, const Eigen::MatrixXd& points) {
@@ -35,6 +42,7 @@ TEST(SimdPrecompute, AgreesWithTheScalarClosedFormNearAndFarFromFaces) {
         test::pointsNearFaces(cage, 83, 1e-7, 3);
     const double worst = worstDifference(cage, points);
     EXPECT_LE(worst, 1e-13) << cage.numFaces() << " faces";
+    RecordProperty("worst_difference_" + std::to_string(cage.numFaces()) + "_faces", scientific(worst));
   }
 }
 
@@ -46,7 +54,9 @@ TEST_P(SimdPrecomputeModels, AgreesWithTheScalarClosedFormAndPartitionOfUnityHol
   if (!test::loadModel(GetParam(), cage, sample)) return;
   Eigen::MatrixXd points(std::min<Eigen::Index>(sample.rows(), 201), 3);  // a quick subsample, 4k + 1 points
   for (Eigen::Index p = 0; p < points.rows(); ++p) points.row(p) = sample.row(p * (sample.rows() / points.rows()));
-  EXPECT_LE(worstDifference(cage, points), 1e-13);
+  const double worst = worstDifference(cage, points);
+  EXPECT_LE(worst, 1e-13);
+  RecordProperty("worst_difference", scientific(worst));
   const SomiglianaCoordinates packs = computeSomiglianaCoordinates(cage, points);
   const Eigen::VectorXd residual = partitionOfUnityResidual(packs);
   for (Eigen::Index p = 0; p < points.rows(); ++p)
