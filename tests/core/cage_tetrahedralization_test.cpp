@@ -159,7 +159,7 @@ TEST(CageTetrahedralization, StopsWhenProgressSaysSo) {
                                     return f == 0.0;
                                   }),
                Cancelled);
-  EXPECT_LT(secondsSince(start), 1.0);
+  EXPECT_LT(secondsSince(start), 2.0);  // 14 ms measured; room for the sanitizers and a loaded machine
   ASSERT_EQ(reports.size(), 2u);
   EXPECT_GT(reports[1], 0.0);
   EXPECT_LT(reports[1], 1.0);
