@@ -13,7 +13,7 @@ namespace somicage {
 // A value as JSON: a number (a string "inf" / "-inf" for an infinity), true / false, or a choice's name.
 JsonValue parameterJson(const ParameterSpec& spec, double value);
 // The row's value under its session key in object, none when absent; throws InputError(source, ...) naming the
-// key and what it takes when the value is of the wrong kind or out of range.
+// key and what it takes when the value is of the wrong kind (a number's range is the method's validateParams to check).
 std::optional<double> readParameterJson(const JsonValue& object, const ParameterSpec& spec, const std::string& source);
 
 // Every row under its session key ("variant": "affine", "blend": 0, "nu": "inf", "tractionCorrection": true, ...).

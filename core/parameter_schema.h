@@ -85,7 +85,8 @@ void setParameter(const ParameterSpec& spec, DeformParams& params, double value)
 // Every row's value, in table order: what the editor compares to see whether measurements are stale.
 std::vector<double> parameterValues(const DeformParams& params);
 
-// The value of a text ("0.3", "inf", "on", "local"); throws InputError(source, ...) naming what the row takes.
+// The value of a text ("0.3", "inf", "on", "local"); throws InputError(source, ...) naming what the row takes. A
+// number is not checked against its range here: a method's validateParams does that, with its own words first.
 double parseParameter(const ParameterSpec& spec, const std::string& text, const std::string& source);
 // The text of a value, as parseParameter reads it back.
 std::string parameterText(const ParameterSpec& spec, double value);

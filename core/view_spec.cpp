@@ -88,20 +88,20 @@ void validateViewSpec(const ViewSpec& view, const std::string& option) {
     if (!readsParameter(view.method, spec->parameter))
       throw InputError(option, -1, methodName(view.method) + " does not read " + viewKey(*spec),
                        "give " + viewKey(*spec) + " to a view of " + methodsReading(spec->parameter));
-    try {
-      validateParameter(*spec, value);
-    } catch (const InputError& e) {
-      throw InputError(option, -1, methodName(view.method) + " " + e.source() + ": " + e.problem(), e.hint());
+    if (spec->type != ParameterType::Number) {  // a name's index or a switch (numbers: the method's check below)
+      try {
+        validateParameter(*spec, value);
+      } catch (const InputError& e) {
+        throw InputError(option, -1, methodName(view.method) + " " + e.source() + ": " + e.problem(), e.hint());
+      }
     }
   }
   for (const auto& [key, value] : view.options)
     if (!hasMethodOption(view.method, key))
       throw InputError(option, -1, methodName(view.method) + " has no option " + key, optionsHint(view.method));
   // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
-  DeformParams p;
-  for (const auto& [key, value] : view.own)
-    if (const ParameterSpec* spec = findParameter(key); spec->type == ParameterType::Number)
-      setParameter(*spec, p, value);
+  DeformParams p;  // the defaults, with the view's own values: its method checks their ranges
+  for (const auto& [key, value] : view.own) setParameter(*findParameter(key), p, value);
   try {
     view.method->validateParams(p);
   } catch (const InputError& e) {

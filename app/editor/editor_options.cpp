@@ -149,6 +149,17 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   if (!positional.empty()) o.meshPath = positional[0];
   if (positional.size() >= 2) o.cagePath = positional[1];
   if (positional.size() == 3) o.posedPath = positional[2];
+  {  // the engine's ranges (parameter_schema.h), named as options
+    DeformParams p;
+    for (const ParameterSpec& spec : parameterSchema())
+      if (const auto it = o.parameters.find(spec.key); it != o.parameters.end()) setParameter(spec, p, it->second);
+    try {
+      validateDeformParams(p);
+    } catch (const InputError& e) {
+      const ParameterSpec* spec = findParameter(e.source());
+      throw InputError(spec ? cliFlag(*spec) : "--" + e.source(), -1, e.problem(), e.hint());
+    }
+  }
   for (const ViewShow& view : o.show.views) {  // the typed range must suit every shown quantity's scale
     const QuantityDescriptor& d = quantityDescriptor(view.quantity);
     const std::string problem = o.range && view.quantity > 0 ? rangeProblem(*o.range, d.scale) : "";

@@ -7,6 +7,7 @@
 #include "app_state.h"
 #include "core/constant_method.h"
 #include "editor_options.h"
+#include "errors.h"
 #include "json.h"
 #include "measure_worker.h"
 #include "methods/method_descriptors.h"
