@@ -1,6 +1,9 @@
 #include "bem_system.h"
 
+#include <algorithm>
 #include <cmath>
+#include <list>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -18,7 +21,10 @@ void validateBemPoissonRatio(double nu) {
 }
 
 BemSystem::BemSystem(const Cage& restCage, int threads, const ProgressCallback& progress)
-    : rest_(restCage), areas_(faceAreas(restCage, restCage.vertices)), lengthScale_(cageDiameter(restCage.vertices)) {
+    : rest_(restCage),
+      areas_(faceAreas(restCage, restCage.vertices)),
+      lengthScale_(cageDiameter(restCage.vertices)),
+      cache_(std::make_shared<FactorizationCache>()) {
   const int d = rest_.dim();
   centroids_ = Eigen::MatrixXd::Zero(rest_.numFaces(), d);
   std::vector<int> own(static_cast<std::size_t>(rest_.numFaces()));
@@ -28,6 +34,35 @@ BemSystem::BemSystem(const Cage& restCage, int threads, const ProgressCallback& 
   }
   integrals_ = integrateBemLayers(rest_, centroids_, own, threads, progress);
   if (!(lengthScale_ > 0)) lengthScale_ = 1;
+}
+
+struct BemSystem::FactorizationCache {
+  std::mutex mutex;
+  std::list<std::shared_ptr<const BemFactorization>> recent;  // most recently used first
+  std::size_t made = 0;
+};
+
+std::shared_ptr<const BemFactorization> BemSystem::factorization(double nu) const {
+  std::lock_guard<std::mutex> lock(cache_->mutex);
+  auto& recent = cache_->recent;
+  // nu compares exactly (the views' and the sweep's values repeat bitwise); +-inf equal themselves.
+  const auto hit = std::find_if(recent.begin(), recent.end(), [nu](const auto& f) { return f->nu == nu; });
+  if (hit != recent.end()) {
+    recent.splice(recent.begin(), recent, hit);
+    return recent.front();
+  }
+  recent.push_front(factor(nu));
+  ++cache_->made;
+  const std::size_t n = static_cast<std::size_t>(recent.front()->lu.rows());
+  const std::size_t bytes = sizeof(double) * n * (n + static_cast<std::size_t>(recent.front()->dataOperator.cols()));
+  const std::size_t capacity = std::max<std::size_t>(1, std::min(kCachedFactorizations, kCacheBytes / bytes));
+  while (recent.size() > capacity) recent.pop_back();
+  return recent.front();
+}
+
+std::size_t BemSystem::factorizationsMade() const {
+  std::lock_guard<std::mutex> lock(cache_->mutex);
+  return cache_->made;
 }
 
 std::shared_ptr<const BemFactorization> BemSystem::factor(double nu) const {

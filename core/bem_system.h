@@ -14,11 +14,14 @@
 // (t_j = sigma n_j). docs/engine.md ("Boundary element reference") says why collocation at centroids.
 //
 // The boundary matrix depends on the rest cage and nu only: BemFactorization is assembled and LU-factored once per
-// (cage, nu) from nu-independent integrals; a solve is then one triangular solve with a (dF + d) vector.
+// (cage, nu) from nu-independent integrals; a solve is then one triangular solve with a (dF + d) vector. The system
+// keeps the factorizations of the values of nu used last (factorization(nu)), so views at different nu and a nu sweep
+// that comes back do not re-factor every frame.
 #pragma once
 
 #include <Eigen/Core>
 #include <Eigen/LU>
+#include <cstddef>
 #include <memory>
 
 #include "bem_layer_integrals.h"
@@ -54,6 +57,15 @@ class BemSystem {
   // Assembles and factors the boundary matrix at nu (validated as above).
   std::shared_ptr<const BemFactorization> factor(double nu) const;
 
+  // factor(nu) through a least-recently-used cache of the last kCachedFactorizations values of nu (fewer when one
+  // factorization is large: at most kCacheBytes in all, at least one kept). Thread-safe; the factoring runs under
+  // the cache's lock, so two threads asking for one nu factor it once.
+  std::shared_ptr<const BemFactorization> factorization(double nu) const;
+  // How many factorizations factorization() has made (cache misses), for tests and benchmarks.
+  std::size_t factorizationsMade() const;
+  static constexpr std::size_t kCachedFactorizations = 8;
+  static constexpr std::size_t kCacheBytes = std::size_t(256) << 20;
+
   // The tractions for the displacement u (#V by d, rest cage order).
   BemSolution solve(const BemFactorization& factorization, const Eigen::MatrixXd& displacement) const;
 
@@ -63,6 +75,8 @@ class BemSystem {
   Eigen::VectorXd areas_;        // A_j (2D: edge lengths)
   double lengthScale_ = 1;       // the cage diameter: scales the balance rows and omega's column like K
   BemLayerIntegrals integrals_;  // at the centroids, in the limit from inside on each one's own face
+  struct FactorizationCache;
+  std::shared_ptr<FactorizationCache> cache_;  // shared by copies of the system (it depends on nothing they change)
 };
 
 }  // namespace somicage

@@ -415,6 +415,14 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
   const auto ridgeWithFaces = [&](const CageReport::Ridge& r) {
     return ridgeName(report, r) + " (" + face + (r.faces.size() > 1 ? "s " : " ") + joinFaces(r.faces) + ")";
   };
+  // A non-manifold edge first: a fin or a doubled face also leaves edges with one face, which are its symptom.
+  if (!report.nonManifoldRidges.empty()) {
+    problems.push_back(
+        is3d ? "the cage is not edge-manifold: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
+                   " belong to more than two faces; change the cage so that every edge has exactly two faces"
+             : "the polygon is not simple: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
+                   " joins more than two edges; every vertex of a polygon joins exactly two edges");
+  }
   if (!report.boundaryRidges.empty()) {
     problems.push_back(
         is3d ? "the cage is not closed: " + count(report.boundaryRidges.size(), "edge has", "edges have") +
@@ -422,13 +430,6 @@ std::vector<std::string> describeCageProblems(const CageReport& report) {
                    "; fill the holes so that every edge has exactly two faces"
              : "the polygon is not closed: " + listSome(report.boundaryRidges, ridgeWithFaces) +
                    " ends an open chain; join the edges into one loop");
-  }
-  if (!report.nonManifoldRidges.empty()) {
-    problems.push_back(
-        is3d ? "the cage is not edge-manifold: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
-                   " belong to more than two faces; change the cage so that every edge has exactly two faces"
-             : "the polygon is not simple: " + listSome(report.nonManifoldRidges, ridgeWithFaces) +
-                   " joins more than two edges; every vertex of a polygon joins exactly two edges");
   }
   if (!report.misorientedRidges.empty()) {
     problems.push_back(
@@ -492,7 +493,9 @@ void requireValidCage(const CageReport& report, const std::string& source) {
   if (report.valid()) return;
   const std::vector<std::string> problems = describeCageProblems(report);
   const std::string more =
-      problems.size() > 1 ? " (and " + std::to_string(problems.size() - 1) + " more problems)" : "";
+      problems.size() > 2   ? " (and " + std::to_string(problems.size() - 1) + " more problems)"
+      : problems.size() > 1 ? " (and 1 more problem)"
+                            : "";
   throw InputError(source, -1, "the cage cannot be used: " + problems.front() + more,
                    "run 'somicage check --cage " + source + "' for the full report");
 }

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "errors.h"
+#include "parallel_failure.h"
 
 namespace somicage {
 
@@ -199,15 +200,20 @@ ExteriorPlan planExteriorPoints(const Cage& restCage, const Eigen::MatrixXd& poi
   if (count == 0) return plan;
   const double diameter = cageDiameter(restCage.vertices);
   const CageProximity proximity(restCage);
+  ParallelFailure failure;  // the closest-point search allocates
 #pragma omp parallel for schedule(dynamic, 16) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (int e = 0; e < count; ++e) {
-    ExteriorBlend& blend = plan.blends[static_cast<std::size_t>(e)];
-    const CageProximity::Closest& c = plan.closest[static_cast<std::size_t>(e)] =
-        proximity.closest(points.row(blend.point).transpose());
-    if (regions[static_cast<std::size_t>(blend.point)] == PointRegion::Outside)
-      blend.weight = exteriorWeight(c.distance, kExteriorBand * diameter);  // OnCage: d = 0, w = 1
-    plan.proxies.row(e) = (c.point - kProxyDepth * diameter * c.normal).transpose();
+    if (failure.failed()) continue;
+    failure.run([&] {
+      ExteriorBlend& blend = plan.blends[static_cast<std::size_t>(e)];
+      const CageProximity::Closest& c = plan.closest[static_cast<std::size_t>(e)] =
+          proximity.closest(points.row(blend.point).transpose());
+      if (regions[static_cast<std::size_t>(blend.point)] == PointRegion::Outside)
+        blend.weight = exteriorWeight(c.distance, kExteriorBand * diameter);  // OnCage: d = 0, w = 1
+      plan.proxies.row(e) = (c.point - kProxyDepth * diameter * c.normal).transpose();
+    });
   }
+  failure.rethrow();
   return plan;
 }
 

@@ -16,6 +16,9 @@ struct IntegrationOptions {
   Rule rule = Rule::ClosedForm;
   int gaussPointsPerSide = 50;  // N: 3 N^2 points per triangle (the paper uses N = 50, 7500 points)
   int threads = 0;              // OpenMP threads; 0 = the OpenMP default
+  // The closed form one point at a time (the reference), not in SIMD packs of points (simd_pack.h), which agree with
+  // it to a few units of rounding; for tests.
+  bool scalarKernel = false;
 };
 
 // Receives each point's row of the integrals of C (coordinate_layout.h: CoordinateLayout::integralColumns()

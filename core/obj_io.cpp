@@ -165,7 +165,8 @@ void scanFace(const std::string& source, long lineNumber, std::string_view rest,
   }
   if (tokens.size() < 3) {
     throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",
-                     "a face needs at least 3 vertices; write an edge as an `l i j` line");
+                     "a face needs at least 3 vertices: if the file was cut short here, export it again (an edge of a polyline "
+                     "is an `l i j` line)");
   }
   if (tokens.size() > 255) {
     throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",

@@ -6,10 +6,13 @@
 #include <vector>
 
 #include "affine_terms.h"
+#include "cpu_dispatch.h"
+#include "cuda/somigliana_row_portable.h"
 #include "edge_integrals.h"
 #include "errors.h"
 #include "kelvin_kernels.h"
 #include "point_blocks.h"
+#include "simd_math.h"
 #include "triangle_integrals.h"
 #include "triangle_quadrature.h"
 
@@ -137,6 +140,48 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
   angleSum += I.angle;
 }
 
+#if SOMICAGE_SIMD_PACKS
+// The rows of simd::kLanes points at once, one per lane (entry k of the rows at rows[k]): the whole hot work of a
+// pack in one dispatched call (cpu_dispatch.h), the closed form and the accumulation inlined into each copy.
+SOMICAGE_DISPATCH void integrateSomiglianaRowPack(const std::vector<PortableFace>& faces, int numVertices,
+                                                  const simd::Pack x[3], simd::Pack* rows, simd::Pack& winding) {
+  winding = integrateSomiglianaRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows, 1);
+}
+
+// The closed-form 3D rows, simd::kLanes points per kernel call (the last pack repeats the last point). Each pack's
+// rows (kLanes times one row: about 30 KB for a 100-face cage) stay in L1 while its faces are summed; the results
+// are the scalar closed form's to a few units of rounding (simd_math.h), independent of the thread count.
+void integrateSomiglianaPacks(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<TriangleFrame>& frames,
+                              int threads, const ProgressCallback& progress, const CoordinateRowSink& sink) {
+  constexpr int lanes = simd::kLanes;
+  std::vector<PortableFace> faces(frames.size());
+  for (std::size_t j = 0; j < frames.size(); ++j) {
+    faces[j].frame = frames[j].kernel;
+    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(static_cast<int>(j), k);
+  }
+  const int numPoints = static_cast<int>(points.rows());
+  const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
+  struct Buffers {
+    std::vector<simd::Pack> packed;
+    std::vector<double> row;
+  };
+  forEachPointInBlocks(
+      (numPoints + lanes - 1) / lanes, cage.numFaces() * lanes, threads, progress,
+      [columns] { return Buffers{std::vector<simd::Pack>(columns), std::vector<double>(columns)}; },
+      [&](Buffers& buffers, int pack) {
+        const int first = pack * lanes;
+        simd::Pack x[3], winding;
+        for (int l = 0; l < lanes; ++l)
+          for (int a = 0; a < 3; ++a) x[a].v[l] = points(std::min(first + l, numPoints - 1), a);
+        integrateSomiglianaRowPack(faces, cage.numVertices(), x, buffers.packed.data(), winding);
+        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
+          for (int k = 0; k < columns; ++k) buffers.row[k] = buffers.packed[k].v[l];
+          sink(first + l, buffers.row.data(), winding.v[l]);
+        }
+      });
+}
+#endif
+
 }  // namespace
 
 void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
@@ -156,6 +201,10 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
                                          cage.vertices.row(cage.faces(j, 2))));
   }
   const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
+#if SOMICAGE_SIMD_PACKS
+  if (dim == 3 && !gauss && !options.scalarKernel)
+    return integrateSomiglianaPacks(cage, points, frames, options.threads, progress, sink);
+#endif
   auto rowBuffer = [columns] { return std::vector<double>(columns); };
   forEachPointInBlocks(numPoints, cage.numFaces(), options.threads, progress, rowBuffer,
                        [&](std::vector<double>& buffer, int p) {

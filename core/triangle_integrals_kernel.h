@@ -8,6 +8,7 @@
 
 #include <math.h>
 
+#include "branch_select.h"
 #include "portable.h"
 
 namespace somicage {
@@ -98,20 +99,23 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
     const Scalar sm = f.tau[e][0] * a[e][0] + f.tau[e][1] * a[e][1], sp = sm + ell;
     const Scalar Rm = R[e], Rp = R[g], rho2 = te * te + hh;
     const Scalar Ae = ell * (sm + sp) / (Rm + Rp);  // R+ - R- without subtracting the two (5.3)
-    Scalar Le, Ee;
-    // log((s+ + R+)/(s- + R-)) in log1p form with positive summands only, branched on the sign of s+- (5.3).
-    if (sm >= 0) {
-      Le = log1p((ell + Ae) / (sm + Rm));
-      Ee = ell * (sp + sm) * invR[e] * invR[g] / (sp * Rm + sm * Rp);
-    } else if (sp <= 0) {
-      Le = log1p((ell - Ae) / (Rp - sp));
-      Ee = ell * (sp + sm) * invR[e] * invR[g] / (sp * Rm + sm * Rp);
-    } else {  // the foot of the perpendicular lies inside the edge
-      const Scalar U = sp, Vv = -sm, invRho2 = 1 / rho2;
-      const Scalar N = U * Vv + U * Rm + Vv * Rp + (U * U * Vv * Vv + rho2 * (U * U + Vv * Vv)) / (Rp * Rm + rho2);
-      Le = log1p(N * invRho2);
-      Ee = (U * invR[g] + Vv * invR[e]) * invRho2;
-    }
+    // log((s+ + R+)/(s- + R-)) in log1p form with positive summands only, branched on the sign of s+- (5.3). Each
+    // branch gives the argument of log1p and E (branch_select.h: packs take the branches lane by lane).
+    using Pair = ScalarPair<Scalar>;
+    const auto endsE = [&] { return ell * (sp + sm) * invR[e] * invR[g] / (sp * Rm + sm * Rp); };
+    const Pair logArgAndE = branchSelect(
+        sm >= 0, [&] { return Pair{(ell + Ae) / (sm + Rm), endsE()}; },
+        [&] {
+          return branchSelect(
+              sp <= 0, [&] { return Pair{(ell - Ae) / (Rp - sp), endsE()}; },
+              [&] {  // the foot of the perpendicular lies inside the edge
+                const Scalar U = sp, Vv = -sm, invRho2 = 1 / rho2;
+                const Scalar N =
+                    U * Vv + U * Rm + Vv * Rp + (U * U * Vv * Vv + rho2 * (U * U + Vv * Vv)) / (Rp * Rm + rho2);
+                return Pair{N * invRho2, (U * invR[g] + Vv * invR[e]) * invRho2};
+              });
+        });
+    const Scalar Le = log1p(logArgAndE.first), Ee = logArgAndE.second;
     t[e] = te, L[e] = Le, E[e] = Ee, A[e] = Ae;
     B[e] = Ae * invR[e] * invR[g];
     C[e] = Le - rho2 * Ee;

@@ -61,6 +61,8 @@ void endViewports(int fbWidth, int fbHeight) {
   glViewport(0, 0, fbWidth, fbHeight);
 }
 
+void finishGl() { glFinish(); }
+
 std::vector<unsigned char> readPixelsRgba(int width, int height) {
   const std::size_t row = static_cast<std::size_t>(width) * 4;
   std::vector<unsigned char> bottomUp(row * static_cast<std::size_t>(height));

@@ -30,6 +30,9 @@ void beginViewport(const ViewportRect& rect, const Eigen::Vector3f* background =
 // Restores the full-framebuffer viewport and switches the scissor test off.
 void endViewports(int fbWidth, int fbHeight);
 
+// Waits until every GL command issued so far has run (glFinish): timing a stage of a frame (editor's Frame timings).
+void finishGl();
+
 // Reads the current framebuffer back as RGBA8, rows top to bottom (width * height * 4 bytes).
 std::vector<unsigned char> readPixelsRgba(int width, int height);
 

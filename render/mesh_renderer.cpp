@@ -55,12 +55,15 @@ void MeshRenderer::setTopology(const Eigen::MatrixXi& triangles) {
 }
 
 void MeshRenderer::setPositions(const Eigen::MatrixXd& positions) {
-  const RowMatrixX3f p = toFloat3(positions);
-  const RowMatrixX3f n = vertexNormals(positions, impl_->triangles);
+  setPositions(toFloat3(positions), vertexNormals(positions, impl_->triangles));
+}
+
+void MeshRenderer::setPositions(const RowMatrixX3f& p, const RowMatrixX3f& n) {
+  if (n.rows() != p.rows()) throw std::invalid_argument("MeshRenderer: one normal per position");
   const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(p.size());
   impl_->positions.upload(GL_ARRAY_BUFFER, p.data(), bytes, GL_DYNAMIC_DRAW);
   impl_->normals.upload(GL_ARRAY_BUFFER, n.data(), bytes, GL_DYNAMIC_DRAW);
-  impl_->vertexCount = static_cast<int>(positions.rows());
+  impl_->vertexCount = static_cast<int>(p.rows());
 }
 
 void MeshRenderer::setScalars(const Eigen::VectorXf& coordinates) {

@@ -5,6 +5,7 @@
 #include <Eigen/Core>
 #include <memory>
 
+#include "mesh_normals.h"
 #include "view_matrices.h"
 
 namespace somicage::render {
@@ -37,6 +38,9 @@ class MeshRenderer {
   void setTopology(const Eigen::MatrixXi& triangles);
   // positions: #V by 2 or 3. Uploads positions and smooth normals recomputed from them (topology untouched).
   void setPositions(const Eigen::MatrixXd& positions);
+  // The same with positions and unit normals already made (#V by 3 floats each, mesh_normals.h), so a caller can
+  // time or place the normals' computation itself.
+  void setPositions(const RowMatrixX3f& positions, const RowMatrixX3f& normals);
   // coordinates: #V colour-map coordinates in [0, 1], -1 for a fold-over, -2 for undefined (drawn grey); empty
   // removes them. Drawn when MeshStyle::colorMap >= 0.
   void setScalars(const Eigen::VectorXf& coordinates);

@@ -283,12 +283,14 @@ bool updateDeformation(AppState& state) {
     try {
       deformOnDevice(state, it->second, views[v].params(state.params), state.deformed[v]);
       changed = true;
+      ++state.stats.frame.deforms;
     } catch (const std::exception& e) {
       state.errors.push_back(std::string("deformation failed: ") + e.what());
     }
   }
   if (changed) {
     state.stats.lastDeformMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    state.stats.frame.deformMs += state.stats.lastDeformMs;
     ++state.deformGeneration;
   }
   return changed;
@@ -303,8 +305,12 @@ void ensureCpuPoints(AppState& state, std::size_t view) {
   auto it = state.deformers.find(deformerKey(views[view]));
   if (it == state.deformers.end()) return;
   state.deformed.resize(views.size());
+  const auto t0 = std::chrono::steady_clock::now();
   try {
     deformOnDevice(state, it->second, views[view].params(state.params), state.deformed[view]);
+    ++state.stats.frame.deforms;
+    state.stats.frame.deformMs +=
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   } catch (const std::exception& e) {
     state.errors.push_back(std::string("deformation failed: ") + e.what());
   }

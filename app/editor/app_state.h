@@ -22,6 +22,7 @@
 #include "export_worker.h"
 #include "file_dialog.h"
 #include "frame_device_evaluators.h"
+#include "frame_timings.h"
 #include "history.h"
 #include "pose_keys.h"
 #include "precompute_worker.h"
@@ -55,6 +56,9 @@ struct Stats {
   double lastDeformCpuMs = 0.0;  // in place on OpenGL: the CPU part (frameWeights, the W upload, the dispatches)
   double fps = 0.0;
   int deformThreads = 1;
+  FrameTimings frame;          // the frame being drawn: each stage adds its time (frame_timings.h)
+  FrameTimingsHistory frames;  // the frames drawn, for Help > Frame timings
+  bool timeFrames = false;     // time each stage (each pane's draw finished): the overlay or --log-frames is on
 };
 
 struct AppState {
@@ -122,6 +126,8 @@ struct AppState {
   FileDialogState dialog;
   bool showHistoryPanel = false;
   bool showShortcuts = false;  // F1
+  bool showFrameTimings = false;  // Help > Frame timings
+  bool logFrames = false;         // --log-frames: each frame's timings on stdout (frame_timings.h)
   bool hideUi = false;
   bool showCage = true;
   bool showMesh = true;

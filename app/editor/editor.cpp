@@ -14,6 +14,7 @@
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -178,6 +179,15 @@ void updateTitle(GLFWwindow* window, const AppState& state, std::string& shown) 
 // One frame: queued input, worker results, UI, deformation, drawing, optional screenshot, swap. Events are
 // polled (or waited for) by the caller.
 void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string& title, InputEventQueue& queue) {
+  using Clock = std::chrono::steady_clock;
+  const auto msSince = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  const auto frameStart = Clock::now();
+  FrameTimings& timings = state.stats.frame;
+  timings = FrameTimings{};
+  timings.frame = state.stats.frames.last().frame + 1;
+  state.stats.timeFrames = state.showFrameTimings || state.logFrames;
   feedInput(window, queue);
   if (pollWorker(state)) logLine(state, "job precompute");  // --log-actions: the GUI tests wait for it
   const std::uint64_t candidateShown = state.cageMaker.candidateGeneration();
@@ -193,6 +203,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     openDroppedFiles(state, dropped);
   }
 
+  auto uiStart = Clock::now();  // the UI's time: the windows built, then their draw data rendered
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
@@ -220,6 +231,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawAnimationExportDialogs(state);
     drawCageMakerDialog(state);
     drawExportProgress(state);
+    drawFrameTimingsWindow(state.stats.frames, &state.showFrameTimings);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
@@ -227,22 +239,30 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   handleInput(state, views);
   tickPlayback(state, glfwGetTime());
   showNextExportFrame(state);
+  timings.uiMs += msSince(uiStart);
   updateDeformation(state);
   if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
     frameAll(state);
     state.frameRequested = false;
   }
+  const auto measureStart = Clock::now();
   measureViews(state);
   logHoverReadout(state, drawQuantityOverlay(state, views));
+  timings.measureMs = msSince(measureStart);
   renderer.sync(state);
+  uiStart = Clock::now();
   ImGui::Render();
+  timings.uiMs += msSince(uiStart);
 
   int fbWidth = 0, fbHeight = 0;
   glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
   const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
-  renderer.draw(state, views, fbWidth, fbHeight, scale);
+  renderer.draw(state, views, fbWidth, fbHeight, scale, state.stats.timeFrames ? &timings : nullptr);
   captureExportFrame(state, fbWidth, fbHeight);  // the views without the panels
+  uiStart = Clock::now();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (state.stats.timeFrames) render::finishGl();
+  timings.uiMs += msSince(uiStart);
 
   if (!state.screenshotRequest.empty()) {
     const std::string path = state.screenshotRequest;
@@ -254,8 +274,16 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
       state.errors.push_back(e.what());
     }
   }
+  const auto swapStart = Clock::now();
   glfwSwapBuffers(window);
+  timings.swapMs = msSince(swapStart);
   updateTitle(window, state, title);
+  timings.totalMs = msSince(frameStart);
+  state.stats.frames.add(timings);
+  if (state.logFrames) {  // --log-frames: tests and benchmarks read these lines
+    std::printf("%s\n", frameLogLine(timings).c_str());
+    std::fflush(stdout);
+  }
 }
 
 // "legend ID: LO HI" per shown quantity (full precision), for scripts and tests.
@@ -310,18 +338,22 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     return 1;
   }
   // OpenGL 4.3 core when the driver has it (compute shaders: the GPU deformation backend), else 3.3 core.
-  auto createWindow = [&](int major) {
+  int major = 4;
+  auto createWindow = [&](int samples) {
     glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, major);
     glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
     glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-    glfwWindowHint(GLFW_SAMPLES, 4);
+    glfwWindowHint(GLFW_SAMPLES, samples);
     return glfwCreateWindow(options.width, options.height, "SomiCage", nullptr, nullptr);
   };
   glfwSetErrorCallback(nullptr);  // a refused 4.3 context is not an error worth printing
   GLFWwindow* window = createWindow(4);
   glfwSetErrorCallback(glfwErrorCallback);
-  if (!window) window = createWindow(3);
+  if (!window) {
+    major = 3;
+    window = createWindow(4);
+  }
   if (!window) {
     std::fprintf(stderr,
                  "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
@@ -331,12 +363,20 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   }
   glfwMakeContextCurrent(window);
   const bool headless = !options.screenshotPath.empty();
-  glfwSwapInterval(headless ? 0 : 1);
 
   int rc = 0;
   std::string glRenderer;
   try {
-    const render::GlInfo info = render::initOpenGl(glfwGetProcAddress);
+    render::GlInfo info = render::initOpenGl(glfwGetProcAddress);
+    // A software renderer (llvmpipe) shades every sample: 4x multisampling made FIREHYDRANT's pane 6x slower to draw
+    // (docs/editor.md, "Frame timings"). Interactive windows there go without it; pictures (--screenshot) keep it.
+    if (!headless && render::GpuDeformer::softwareRenderer()) {
+      glfwDestroyWindow(window);
+      window = createWindow(0);
+      if (!window) throw std::runtime_error("could not create the OpenGL window again without multisampling");
+      glfwMakeContextCurrent(window);
+      info = render::initOpenGl(glfwGetProcAddress);
+    }
     glRenderer = info.renderer + " (OpenGL " + info.version + ")";
   } catch (const std::exception& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
@@ -344,6 +384,8 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     glfwTerminate();
     return 1;
   }
+
+  glfwSwapInterval(headless ? 0 : 1);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -373,6 +415,7 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
       state.recent = loadRecentFiles(state.recentPath);
     }
     state.logActions = options.logActions;
+    state.logFrames = options.logFrames;
     // Events are polled only inside this block, so the pointer never outlives `state`.
     WindowLink windowLink;
     windowLink.state = &state;

@@ -111,6 +111,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.frameDelayMs = static_cast<int>(ms);
     } else if (a == "--log-actions") {
       o.logActions = true;
+    } else if (a == "--log-frames") {
+      o.logFrames = true;
     } else if (a == "--nu-plot") {
       o.nuPlot = true;
     } else if (a == "--hide-cage") {
@@ -223,6 +225,8 @@ std::string editorUsage() {
          "                            GPU, cpu otherwise; an unusable device says why and the CPU deforms)\n"
          "  --frame-delay MS          testing: make every frame MS slower (tries input at low frame rates)\n"
          "  --log-actions             print each keyboard command, undo step and dialog to stdout (testing)\n"
+         "  --log-frames              print each frame's time breakdown to stdout, one line per frame (deform,\n"
+         "                            upload, normals, each pane's draw, UI; benchmarks and tests)\n"
          "  -h, --help                this list\n"
          "\n"
          "In the editor: F1 lists the shortcuts. Ctrl+S saves the session, Ctrl+Z / Ctrl+Shift+Z undo / redo,\n"

@@ -32,6 +32,7 @@ struct EditorOptions {
                                               // hardware GPU, else cpu
   bool restoreAutosave = false;               // --restore-autosave: restore a crashed session without asking
   int frameDelayMs = 0;                       // --frame-delay MS: testing, every frame MS slower (low frame rates)
+  bool logFrames = false;                     // --log-frames: print each frame's time breakdown (frame_timings.h)
   bool logActions = false;                    // --log-actions: print each keyboard command to stdout as it runs
   bool hideCage = false;                      // --hide-cage: the mesh only (screenshots of a quantity)
   bool showTets = false;                      // --show-tets: the tetrahedral wireframe of volume-mesh views

@@ -1,5 +1,6 @@
 #include "editor_renderer.h"
 
+#include <chrono>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -7,6 +8,7 @@
 
 #include "errors.h"
 #include "gl_context.h"
+#include "mesh_normals.h"
 #include "quantity_overlay.h"
 
 namespace somicage::editor {
@@ -14,6 +16,21 @@ namespace somicage::editor {
 namespace {
 const Eigen::Vector3f kBackground(0.20f, 0.21f, 0.24f);
 const Eigen::Vector3f kViewBackground(0.27f, 0.28f, 0.32f);
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// Normals and the upload, each timed into the frame's breakdown.
+void uploadPositions(render::MeshRenderer& mesh, const Eigen::MatrixXd& points, const Eigen::MatrixXi& triangles,
+                     FrameTimings& timings) {
+  auto t0 = Clock::now();
+  const render::RowMatrixX3f normals = render::vertexNormals(points, triangles);
+  timings.normalsMs += msSince(t0);
+  t0 = Clock::now();
+  mesh.setPositions(render::toFloat3(points), normals);
+  timings.uploadMs += msSince(t0);
+  ++timings.uploads;
+}
 }  // namespace
 
 Renderer::Renderer() = default;
@@ -57,6 +74,8 @@ void Renderer::sync(AppState& state) {
         if (syncGpu(slot, state, v, newScene)) {
           ranOnGpu = true;
           cpuMs += slot.gpu->lastCpuMilliseconds();
+          state.stats.frame.deformMs += slot.gpu->lastCpuMilliseconds();
+          ++state.stats.frame.deforms;
         }
         const double ms = slot.gpu->lastGpuMilliseconds();
         if (std::isfinite(ms)) {
@@ -86,7 +105,7 @@ void Renderer::sync(AppState& state) {
                           state.deformed[v].rows() == state.scene->meshVertices.rows();
     if (newScene || slot.view != views[v] || slot.deformGeneration != state.deformGeneration ||
         slot.showedDeformed != deformed || slot.onGpu) {
-      slot.mesh->setPositions(displayedPoints(state, v));
+      uploadPositions(*slot.mesh, displayedPoints(state, v), state.scene->meshTriangles, state.stats.frame);
       slot.sceneGeneration = state.sceneGeneration;
       slot.deformGeneration = state.deformGeneration;
       slot.view = views[v];
@@ -94,7 +113,7 @@ void Renderer::sync(AppState& state) {
       slot.onGpu = false;
     }
   }
-  syncScalars(state);
+  syncScalars(state, state.stats.frame);
   for (std::size_t v = 0; v < views.size(); ++v) syncTets(meshes_[v], state, v);
   if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
   if (inPlace && state.devices.inPlace())
@@ -139,7 +158,7 @@ void Renderer::syncTets(MeshSlot& slot, const AppState& state, std::size_t v) {
   }
 }
 
-void Renderer::syncScalars(const AppState& state) {
+void Renderer::syncScalars(const AppState& state, FrameTimings& timings) {
   const std::vector<ViewSpec> views = state.views();
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
     MeshSlot& slot = meshes_[v];
@@ -161,13 +180,15 @@ void Renderer::syncScalars(const AppState& state) {
     Eigen::VectorXf t(m->values.size());
     for (Eigen::Index i = 0; i < t.size(); ++i)
       t[i] = colorCoordinate(m->values[i], m->detJ.size() ? m->detJ[i] : noDetJ, range, d.scale);
+    const auto t0 = Clock::now();
     slot.mesh->setScalars(t);
+    timings.uploadMs += msSince(t0);
     slot.colorMap = d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
   }
 }
 
 void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, int framebufferWidth,
-                    int framebufferHeight, double framebufferScale) {
+                    int framebufferHeight, double framebufferScale, FrameTimings* timings) {
   render::clearFramebuffer(framebufferWidth, framebufferHeight, kBackground);
   if (!state.scene) return;
   render::ViewMatrices matrices;
@@ -185,7 +206,9 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
   render::CageStyle tetsStyle;  // View > Show tetrahedra: edges only, orange (the cage is blue)
   tetsStyle.edgeColor = Eigen::Vector4f(0.95f, 0.55f, 0.15f, 0.9f);
   tetsStyle.showFaces = tetsStyle.showHandles = false;
+  if (timings) timings->drawMs.assign(std::min(views.size(), meshes_.size()), 0.0);
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
+    const auto t0 = Clock::now();
     const ViewRect& r = views[v];
     render::ViewportRect rect;
     rect.x = static_cast<int>(std::lround(r.x * framebufferScale));
@@ -196,12 +219,19 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
     render::beginViewport(rect, &kViewBackground);
     matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
     meshStyle.colorMap = state.quantities.show.view(v).quantity > 0 ? meshes_[v].colorMap : -1;
-    if (state.showMesh && meshes_[v].mesh) meshes_[v].mesh->draw(matrices, meshStyle);
+    if (state.showMesh && meshes_[v].mesh) {
+      meshes_[v].mesh->draw(matrices, meshStyle);
+      if (timings) ++timings->meshDraws;
+    }
     if (meshes_[v].tetsShown) meshes_[v].tets->draw(matrices, tetsStyle);
     if (state.cageMaker.isOpen() && state.cageMaker.candidate()) {
       preview_.draw(matrices, previewStyle);  // in place of the scene's cage
     } else if (state.showCage) {
       cage_.draw(matrices, cageStyle);
+    }
+    if (timings) {  // the pane's commands run now, not at the swap (llvmpipe rasterises at the flush)
+      render::finishGl();
+      timings->drawMs[v] = msSince(t0);
     }
   }
   render::endViewports(framebufferWidth, framebufferHeight);

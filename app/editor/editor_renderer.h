@@ -29,8 +29,9 @@ class Renderer {
 
   // Clears the framebuffer and draws every viewport. views are in window pixels; framebufferScale converts
   // them to framebuffer pixels (HiDPI).
+  // With `timings`, each pane's draw is finished (glFinish) and timed into it.
   void draw(const AppState& state, const std::vector<ViewRect>& views, int framebufferWidth, int framebufferHeight,
-            double framebufferScale);
+            double framebufferScale, FrameTimings* timings = nullptr);
 
  private:
   struct MeshSlot {
@@ -55,7 +56,7 @@ class Renderer {
   // Poses slot v's tetrahedra for the view's deformer when View > Show tetrahedra is on and it has a volume mesh.
   void syncTets(MeshSlot& slot, const AppState& state, std::size_t v);
   // Uploads the shown quantity's colour-map coordinates of each view (shared range) when they changed.
-  void syncScalars(const AppState& state);
+  void syncScalars(const AppState& state, FrameTimings& timings);
   // Deforms slot v (view v) on the GPU when stale; returns true when it ran. Throws what GpuDeformer throws.
   bool syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, bool newScene);
   std::vector<MeshSlot> meshes_;

@@ -58,6 +58,14 @@ std::vector<std::pair<int, int>> cageEdges(const Eigen::MatrixXi& faces) {
   return {edges.begin(), edges.end()};
 }
 
+std::vector<std::pair<int, int>> selectedEdges(const Eigen::MatrixXi& faces, const std::vector<bool>& selected) {
+  const auto isSelected = [&](int v) { return v >= 0 && static_cast<std::size_t>(v) < selected.size() && selected[v]; };
+  std::vector<std::pair<int, int>> edges;
+  for (const auto& e : cageEdges(faces))
+    if (isSelected(e.first) && isSelected(e.second)) edges.push_back(e);
+  return edges;
+}
+
 std::vector<int> pickElement(ElementMode mode, const std::vector<ScreenPoint>& pts, const Eigen::MatrixXi& faces,
                              const Eigen::Vector2d& mouse, double radius) {
   if (mode == ElementMode::Vertex) {

@@ -15,6 +15,8 @@ const char* elementModeName(ElementMode mode);  // "vertices", "edges", "faces"
 
 // The unique edges of a cage's faces (#F by d: triangles in 3D, segments in 2D), each as (a, b) with a < b.
 std::vector<std::pair<int, int>> cageEdges(const Eigen::MatrixXi& faces);
+// The edges whose two vertices are selected (`selected`: a flag per cage vertex), drawn highlighted.
+std::vector<std::pair<int, int>> selectedEdges(const Eigen::MatrixXi& faces, const std::vector<bool>& selected);
 
 // The vertices of the element under `mouse`: the nearest vertex within `radius`; the nearest edge within
 // `radius` of its segment; the front-most face (triangle) containing the mouse (in 2D, where faces are

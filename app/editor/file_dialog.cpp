@@ -88,6 +88,12 @@ void close(AppState& state, bool saved) {
 
 bool submitScene(AppState& state) {
   FileDialogState& d = state.dialog;
+  if (d.recentChoice && d.recentChoice->kind == RecentEntry::Kind::Session) {
+    const RecentEntry entry = *d.recentChoice;
+    close(state, false);
+    openRecent(state, entry);
+    return true;
+  }
   for (auto [kind, path] : {std::pair{FileKind::Mesh, d.mesh}, std::pair{FileKind::Cage, d.cage}}) {
     if (kind == FileKind::Cage && path.empty() && d.posed.empty()) continue;  // a mesh alone: a cage is made for it
     const PathCheck check = checkOpenPath(kind, path);
@@ -124,6 +130,7 @@ void openFileDialog(AppState& state, FileDialogPurpose purpose) {
   d.justOpened = true;
   d.message.clear();
   d.confirmPath.clear();
+  d.recentChoice.reset();
   const FileKind kind = purpose == FileDialogPurpose::OpenScene ? d.sceneField : purposeKind(purpose);
   const FilePlace& p = place(d, kind);
   // The kind's own last folder; a kind not used yet starts where the last file went.
@@ -177,25 +184,44 @@ bool submitFileDialog(AppState& state, bool overwriteConfirmed) {
 
 void cancelFileDialog(AppState& state) { close(state, false); }
 
+void chooseSceneFile(FileDialogState& d, const std::string& name) {
+  std::string& target = d.sceneField == FileKind::Mesh ? d.mesh : d.sceneField == FileKind::Cage ? d.cage : d.posed;
+  target = dialogPath(d, name);
+  d.recentChoice.reset();
+  if (d.sceneField == FileKind::Mesh && d.cage.empty()) d.sceneField = FileKind::Cage;
+}
+
+void chooseRecent(FileDialogState& d, const RecentEntry& entry) {
+  d.recentChoice = entry;
+  if (entry.kind != RecentEntry::Kind::Files) return;
+  d.mesh = entry.mesh;
+  d.cage = entry.cage;
+  d.posed = entry.posed;
+}
+
 // ---- drawing ----
 
 namespace {
 
-// The recent files of the Open panel, most recent first; entries with a missing file are greyed out (the tooltip
-// names it). Returns true when an entry was opened.
+// The recent files of the Open panel, most recent first, in a list of fixed height (so OK stays where it is as the
+// list grows); entries with a missing file are greyed out (the tooltip names it). A click chooses an entry, a double
+// click (returns true) opens it.
 bool drawRecentFiles(AppState& state) {
   const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
-  if (entries.empty()) return false;
   ImGui::Spacing();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "Recent");
-  ImGui::Separator();
+  ImGui::BeginChild("##recentFiles", ImVec2(0, 5.5f * ImGui::GetTextLineHeightWithSpacing()), true);
+  if (entries.empty()) ImGui::TextDisabled("(none yet: the scenes and sessions you open or save)");
   bool opened = false;
+  FileDialogState& d = state.dialog;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const RecentEntry& e = entries[i];
     const std::string missing = missingRecentPath(e);
     ImGui::PushID(static_cast<int>(i));
     if (!missing.empty()) ImGui::BeginDisabled();
-    const bool clicked = ImGui::Selectable(e.label().c_str(), false, ImGuiSelectableFlags_DontClosePopups);
+    const bool chosen = d.recentChoice && *d.recentChoice == e;
+    const bool clicked = ImGui::Selectable(e.label().c_str(), chosen,
+                                           ImGuiSelectableFlags_DontClosePopups | ImGuiSelectableFlags_AllowDoubleClick);
     if (!missing.empty()) ImGui::EndDisabled();
     if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled)) {
       std::string tip;
@@ -204,11 +230,12 @@ bool drawRecentFiles(AppState& state) {
       ImGui::SetTooltip("%s", tip.c_str());
     }
     ImGui::PopID();
-    if (clicked && !opened) {
-      openRecent(state, e);
-      opened = true;
+    if (clicked) {
+      chooseRecent(d, e);
+      opened |= ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
     }
   }
+  ImGui::EndChild();
   return opened;
 }
 
@@ -287,8 +314,10 @@ void drawFileDialog(AppState& state) {
       if (ImGui::RadioButton("##field", d.sceneField == kind)) d.sceneField = kind;
       tooltip("The file list below fills this field");
       ImGui::SameLine();
-      if (ImGui::InputText(kind == FileKind::PosedCage ? "posed cage (optional)" : fileKindInfo(kind).title, text))
+      if (ImGui::InputText(kind == FileKind::PosedCage ? "posed cage (optional)" : fileKindInfo(kind).title, text)) {
         d.sceneField = kind;
+        d.recentChoice.reset();
+      }
       ImGui::PopID();
     }
     std::string* target = d.sceneField == FileKind::Mesh   ? &d.mesh
@@ -297,14 +326,9 @@ void drawFileDialog(AppState& state) {
     std::string name = fs::path(*target).filename().string();
     const std::string before = name;
     ok = drawBrowser(d, ".obj", name);
-    if (name != before) *target = dialogPath(d, name);
+    if (name != before) chooseSceneFile(d, name);
     ImGui::TextDisabled("or drop the files on the window");
-    if (drawRecentFiles(state)) {
-      cancelFileDialog(state);
-      ImGui::CloseCurrentPopup();
-      ImGui::EndPopup();
-      return;
-    }
+    ok |= drawRecentFiles(state);
   } else {
     const FileKindInfo& kind = fileKindInfo(purposeKind(d.purpose));
     ok = drawBrowser(d, kind.extension, d.name);

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "file_rules.h"
+#include "recent_files.h"
 
 namespace somicage::editor {
 
@@ -33,6 +35,7 @@ struct FileDialogState {
   std::string name;                              // the file name (or typed path) of the open dialog
   FileKind sceneField = FileKind::Mesh;          // Open mesh + cage: the field the browser fills
   std::string mesh, cage, posed;                 // Open mesh + cage
+  std::optional<RecentEntry> recentChoice;       // Open: the Recent entry one click chose (OK or a double click opens)
   std::vector<std::string> recentFolders;        // most recent first
   std::string message;                           // why OK was refused, or the overwrite question
   std::string confirmPath;                       // the path the overwrite question is about
@@ -46,6 +49,12 @@ std::string dialogPath(const FileDialogState& dialog, const std::string& name);
 // or the overwrite question (unless `overwriteConfirmed`) leaves it open with dialog.message set.
 bool submitFileDialog(AppState& state, bool overwriteConfirmed = false);
 void cancelFileDialog(AppState& state);
+// Open mesh + cage, a click on a file of the browser: it fills the field the browser targets; after the mesh, the
+// next click fills the cage while the cage is empty (a click, then a second click, as in the steps).
+void chooseSceneFile(FileDialogState& dialog, const std::string& name);
+// Open, a click on a Recent entry: chosen (highlighted, its files in the fields), not opened; OK or a double click
+// opens it.
+void chooseRecent(FileDialogState& dialog, const RecentEntry& entry);
 
 void drawFileDialog(AppState& state);
 

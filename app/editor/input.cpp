@@ -195,6 +195,20 @@ void drawHover(const AppState& state, const ViewRect& r, const Eigen::Vector2d& 
   }
 }
 
+// The selected edges (both vertices selected) in the selection's colour, over the cage's own edges.
+void drawSelectedEdges(const AppState& state, const ViewRect& r) {
+  if (!state.showCage || state.selection.empty()) return;
+  const std::vector<std::pair<int, int>> edges = selectedEdges(state.scene->restCage.faces, state.selection.flags());
+  if (edges.empty()) return;
+  const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+  const auto at = [&](int v) {
+    const Eigen::Vector2d& p = pts[static_cast<std::size_t>(v)].position;
+    return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
+  };
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  for (const auto& [a, b] : edges) draw->AddLine(at(a), at(b), IM_COL32(255, 170, 60, 230), 2.5f);
+}
+
 void setElementMode(AppState& state, ElementMode mode) {
   state.elementMode = mode;
   state.statusMessage = std::string("a click selects ") + elementModeName(mode) +
@@ -399,8 +413,10 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   const bool overView = !io.WantCaptureMouse && hovered >= 0;
   if (overView && selectionGizmo(state, views[static_cast<std::size_t>(hovered)], gizmo))
     hot = pickGizmo(gizmo, mouse - views[static_cast<std::size_t>(hovered)].origin());
-  for (std::size_t v = 0; v < views.size(); ++v)
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    drawSelectedEdges(state, views[v]);
     drawGizmo(state, views[v], static_cast<int>(v) == hovered ? hot : GizmoPart{});
+  }
   if (!overView) return;
   const ViewRect& r = views[static_cast<std::size_t>(hovered)];
   if (hot.kind == GizmoPart::Kind::None) drawHover(state, r, mouse);
@@ -425,6 +441,7 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
                                   mouse - r.origin(), r.size());
     it.transform->axis = hot.axis;
     it.transform->gridStep = gridStepFor(cageSize(state));
+    if (hot.kind == GizmoPart::Kind::Scale) it.transform->scalePixels = GizmoLayout::kArrowPixels;
     return;
   }
   if (left) {

@@ -180,6 +180,9 @@ void drawMainMenu(AppState& state) {
   }
   if (ImGui::BeginMenu("Help")) {
     ImGui::MenuItem("Shortcuts", shortcutLabel("shortcuts"), &state.showShortcuts);
+    ImGui::MenuItem("Frame timings", nullptr, &state.showFrameTimings);
+    tooltip("Where each frame's time goes: deformation, normals, uploads, each pane's draw, the UI\n"
+            "(the latest frame and the mean of the last 60). --log-frames prints it per frame.");
     ImGui::Separator();
     ImGui::TextUnformatted(
         "Camera: middle drag or Alt+left drag orbits, Shift+middle (Alt+Shift+left) pans, wheel zooms, F frames.\n"

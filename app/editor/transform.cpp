@@ -89,7 +89,13 @@ double scaleFactor(const TransformSession& s, const OrbitCamera& camera, const E
   const Eigen::Vector2d mouse = effectiveMouse(s, rawMouse);
   const Eigen::Vector2d c = pivotOnScreen(s, camera);
   const double r0 = (s.startMouse - c).norm();
-  const double f = r0 < 1e-9 ? 1.0 : (mouse - c).norm() / r0;
+  double f = 1.0;
+  if (s.scalePixels > 0) {
+    const Eigen::Vector2d away = r0 < 1e-9 ? Eigen::Vector2d(1, 0) : Eigen::Vector2d((s.startMouse - c) / r0);
+    f = 1.0 + (mouse - s.startMouse).dot(away) / s.scalePixels;
+  } else if (r0 >= 1e-9) {
+    f = (mouse - c).norm() / r0;
+  }
   return s.snap ? snapTo(f, 0.1) : f;
 }
 

@@ -31,6 +31,11 @@ struct TransformSession {
   bool fine = false;             // Shift: a tenth of the mouse motion
   bool snap = false;             // Ctrl: grid steps, 15 degrees, scale steps of 0.1
   double gridStep = 0.1;         // world units of a grab snap (from the cage's size)
+  // Scale from a gizmo square (> 0): the factor is 1 + (the mouse's travel away from the pivot, along the line from
+  // the pivot to the press) / scalePixels, so a drag scales the same wherever the square sits (its distance from the
+  // centre shrinks as the axis turns towards the eye: with the ratio of distances a 64-pixel drag scaled x3).
+  // 0 (S): the ratio of the mouse's distances from the pivot, as Blender does.
+  double scalePixels = 0;
 };
 
 // The typed value, when `typed` parses as a number (a lone "-" or "." does not).

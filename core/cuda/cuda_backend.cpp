@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "parallel_failure.h"
 #include "triangle_integrals.h"
 
 namespace somicage {
@@ -115,15 +116,21 @@ void integrateSomiglianaCoordinatesCuda(const Cage& cage, const Eigen::MatrixXd&
     cuda_device::integrateSomiglianaRows(faces.data(), cage.numFaces(), cage.numVertices(), rowPoints.row(start).data(),
                                          count, rows.data(), winding.data());
     // The device wrote the rows column-major (coalesced); hand each one to the sink contiguous.
+    ParallelFailure failure;  // the row buffer allocates and the sink is the caller's: rethrown after the region
 #pragma omp parallel
     {
-      std::vector<double> row(columns);
+      std::vector<double> row;
+      failure.run([&] { row.resize(columns); });
 #pragma omp for schedule(static)
       for (int p = 0; p < count; ++p) {
-        for (int k = 0; k < columns; ++k) row[k] = rows[static_cast<size_t>(k) * count + p];
-        sink(start + p, row.data(), winding[p]);
+        if (failure.failed() || row.empty()) continue;
+        failure.run([&] {
+          for (int k = 0; k < columns; ++k) row[k] = rows[static_cast<size_t>(k) * count + p];
+          sink(start + p, row.data(), winding[p]);
+        });
       }
     }
+    failure.rethrow();
   }
   progress(1.0);
 }

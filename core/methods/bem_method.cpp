@@ -16,7 +16,6 @@
 // ratio (validateBemPoissonRatio); blend, gamma and tractionCorrection are ignored.
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -143,7 +142,7 @@ class BemDeformer final : public CageDeformer {
       R = fit.rotation;
       u = ((posed.rowwise() - posedCentre) * R).rowwise() + restCentre - rest.vertices;
     }
-    const BemSolution solution = system_.solve(*factorization(params.nu), u);
+    const BemSolution solution = system_.solve(*system_.factorization(params.nu), u);
 
     // ---- W: every stored term's weight is the matrix it carries (T_i, K_j are linear in them) times its data ----
     FrameWeights W;
@@ -178,17 +177,8 @@ class BemDeformer final : public CageDeformer {
   }
 
  private:
-  // The factored boundary matrix at nu, kept for the last nu (a slider change re-factors, a pose change does not).
-  std::shared_ptr<const BemFactorization> factorization(double nu) const {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!factorization_ || !(factorization_->nu == nu)) factorization_ = system_.factor(nu);
-    return factorization_;
-  }
-
-  BemSystem system_;
+  BemSystem system_;  // with its factorizations per nu (bem_system.h: a pose change never re-factors)
   CoordinateLayout layout_;
-  mutable std::mutex mutex_;
-  mutable std::shared_ptr<const BemFactorization> factorization_;
 };
 
 std::unique_ptr<CageDeformer> precomputeBem(const Cage& restCage, const Eigen::MatrixXd& points,

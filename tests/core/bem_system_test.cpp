@@ -1,5 +1,6 @@
 // The boundary element system: for affine displacements the exact tractions sigma n (Hooke's law, mu = 1), zero for
-// rigid translations and infinitesimal rotations, balance for any displacement, the nu = 1/2 refusal; 2D and 3D.
+// rigid translations and infinitesimal rotations, balance for any displacement, the nu = 1/2 refusal, the
+// factorizations cached per nu; 2D and 3D.
 #include "bem_system.h"
 
 #include <gtest/gtest.h>
@@ -93,6 +94,36 @@ TEST_P(BemSystemTest, RefusesTheIncompressibleLimitAndBadRatios) {
       }
     }
   }
+}
+
+TEST_P(BemSystemTest, FactorizationsAreCachedPerNuLeastRecentlyUsedFirst) {
+  // Two views at nu = 0.1 and 0.45 drawn in turn (issue 24: the deformer kept one nu and re-factored every frame):
+  // two factorizations for twenty frames, each the one factor() makes at its nu (the same solution, bitwise).
+  const BemSystem system(cageOf(GetParam()));
+  const Eigen::MatrixXd u = randomMatrix(system.restCage().numVertices(), GetParam(), 7);
+  for (int frame = 0; frame < 20; ++frame) {
+    const double nu = frame % 2 ? 0.45 : 0.1;
+    const BemSolution cached = system.solve(*system.factorization(nu), u);
+    if (frame < 2) {
+      const BemSolution fresh = system.solve(*system.factor(nu), u);
+      EXPECT_EQ(cached.tractions, fresh.tractions);
+      EXPECT_EQ(cached.omega, fresh.omega);
+    }
+  }
+  EXPECT_EQ(system.factorizationsMade(), 2u);
+  // inf is a value like any other; a refused nu makes nothing.
+  system.factorization(kInf);
+  system.factorization(kInf);
+  EXPECT_THROW(system.factorization(0.5), InputError);
+  EXPECT_EQ(system.factorizationsMade(), 3u);
+  // One more value than the cache holds, cycled: the least recently used is always the one asked for next, so every
+  // request misses; asking again for the most recent one hits.
+  const std::size_t n = BemSystem::kCachedFactorizations + 1, before = system.factorizationsMade();
+  for (int round = 0; round < 2; ++round)
+    for (std::size_t k = 0; k < n; ++k) system.factorization(-0.5 + 0.1 * static_cast<double>(k));
+  EXPECT_EQ(system.factorizationsMade() - before, 2 * n);
+  system.factorization(-0.5 + 0.1 * static_cast<double>(n - 1));
+  EXPECT_EQ(system.factorizationsMade() - before, 2 * n);
 }
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, BemSystemTest, ::testing::Values(2, 3),

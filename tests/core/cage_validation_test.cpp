@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <random>
 
+#include "errors.h"
 #include "mesh_formats.h"
 #include "test_models.h"
 #include "test_shapes.h"
@@ -82,6 +83,32 @@ TEST(CageValidation, FinMakesNonManifoldEdges) {
   EXPECT_EQ(report.nonManifoldRidges.size(), 3u);
   for (const auto& ridge : report.nonManifoldRidges) EXPECT_EQ(ridge.faces.size(), 4u);
   EXPECT_TRUE(mentions(describeCageProblems(report), "not edge-manifold"));
+}
+
+TEST(CageValidation, AFinLeadsWithNotManifoldNotWithItsOpenEdges) {
+  // Issue 24, row 15: a fin (a triangle on a cube edge and a new vertex) leaves the fin's two other edges with one
+  // face; the message led with "not closed ... (and 1 more problems)". The cause comes first, in good grammar.
+  Cage fin = cube();
+  fin.vertices.conservativeResize(9, 3);
+  fin.vertices.row(8) << 3, 3, 3;
+  fin.faces.conservativeResize(13, 3);
+  fin.faces.row(12) << fin.faces(0, 0), fin.faces(0, 1), 8;
+  const CageReport report = validateCage(fin);
+  ASSERT_FALSE(report.manifold());
+  ASSERT_FALSE(report.closed());
+  const std::vector<std::string> problems = describeCageProblems(report);
+  ASSERT_GE(problems.size(), 2u);
+  EXPECT_EQ(problems.front().rfind("the cage is not edge-manifold", 0), 0u) << joined(problems);
+  try {
+    requireValidCage(report, "fin.obj");
+    FAIL() << "the fin was accepted";
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("the cage cannot be used: the cage is not edge-manifold"), std::string::npos) << what;
+    if (problems.size() == 2) {
+      EXPECT_NE(what.find("(and 1 more problem)"), std::string::npos) << what;
+    }
+  }
 }
 
 TEST(CageValidation, FlippedFaceIsInconsistent) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "errors.h"
+#include "parallel_failure.h"
 
 namespace somicage {
 namespace {
@@ -54,6 +55,30 @@ TEST(PointBlocks, AScratchBufferThatCannotBeMadeIsBadAlloc) {
                    },
                    [](int&, int) {}),
                std::bad_alloc);
+}
+
+TEST(ParallelFailure, AnExceptionInAnOpenMpLoopIsRethrownAfterTheRegion) {
+  // The guard the other parallel regions of core use (exterior points, the CUDA rows' sink): iteration 700 of 2000
+  // throws bad_alloc on whichever thread runs it; the loop ends, the others skip their work once it is seen, and the
+  // caller catches bad_alloc after the region (without the guard: std::terminate).
+  ParallelFailure failure;
+  std::atomic<int> ran{0};
+#pragma omp parallel for schedule(static, 1) num_threads(2)
+  for (int i = 0; i < 2000; ++i) {
+    if (failure.failed()) continue;
+    failure.run([&] {
+      ++ran;
+      if (i == 700) throw std::bad_alloc();
+    });
+  }
+  EXPECT_TRUE(failure.failed());
+  EXPECT_THROW(failure.rethrow(), std::bad_alloc);
+  EXPECT_GE(ran.load(), 1);
+  EXPECT_LT(ran.load(), 2000);  // it stopped early
+  ParallelFailure clean;
+  clean.run([] {});
+  EXPECT_FALSE(clean.failed());
+  EXPECT_NO_THROW(clean.rethrow());
 }
 
 }  // namespace

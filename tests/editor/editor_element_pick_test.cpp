@@ -2,6 +2,8 @@
 // second one nearer in depth and overlapping the first on screen.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "element_pick.h"
 
 using namespace somicage::editor;
@@ -36,4 +38,18 @@ TEST(EditorElementPick, EdgesAndFacesSelectTheirVertices) {
   Eigen::MatrixXi segments(4, 2);
   segments << 0, 1, 1, 2, 2, 3, 3, 0;
   EXPECT_EQ(pickElement(ElementMode::Face, pts, segments, {98, 50}, 10), (std::vector<int>{1, 2}));
+}
+
+TEST(EditorElementPick, TheSelectedEdgesAreThoseWithBothVerticesSelected) {
+  // Issue 24, row 15: a selected edge was not highlighted. Triangles 012 and 023 of a square: selecting 0 and 2
+  // (the diagonal) highlights only the diagonal; a face's three vertices highlight its three edges.
+  Eigen::MatrixXi faces(2, 3);
+  faces << 0, 1, 2, 0, 2, 3;
+  using Edges = std::vector<std::pair<int, int>>;
+  EXPECT_EQ(selectedEdges(faces, {true, false, true, false}), (Edges{{0, 2}}));
+  Edges face = selectedEdges(faces, {true, true, true, false});
+  std::sort(face.begin(), face.end());
+  EXPECT_EQ(face, (Edges{{0, 1}, {0, 2}, {1, 2}}));
+  EXPECT_TRUE(selectedEdges(faces, {true, false, false, false}).empty());
+  EXPECT_TRUE(selectedEdges(faces, {}).empty());  // no flags yet
 }

@@ -220,3 +220,37 @@ TEST_F(Folder, OpenTakesAMeshAlone) {
   EXPECT_GT(state.scene->restCage.numFaces(), 0);
   EXPECT_NE(state.statusMessage.find("cage generated"), std::string::npos) << state.statusMessage;
 }
+
+TEST_F(Folder, OpenFillsTheMeshThenTheCageAndARecentEntryOpensOnlyOnOk) {
+  // Issue 24, row 6: a second click on a file replaced the mesh instead of filling the cage slot, and one click on
+  // a Recent entry opened it at once.
+  AppState state;
+  openDemoScene(state);
+  openFileDialog(state, FileDialogPurpose::OpenScene);
+  state.dialog.folder = root.string();
+  chooseSceneFile(state.dialog, "mesh.obj");
+  chooseSceneFile(state.dialog, "cage.obj");
+  EXPECT_EQ(state.dialog.mesh, path("mesh.obj"));
+  EXPECT_EQ(state.dialog.cage, path("cage.obj"));
+  chooseSceneFile(state.dialog, "other_cage.obj");  // the cage field stays the target once the mesh is there
+  EXPECT_EQ(state.dialog.mesh, path("mesh.obj"));
+  EXPECT_EQ(state.dialog.cage, path("other_cage.obj"));
+  cancelFileDialog(state);
+
+  // A saved session is a Recent entry at once; one click on it in Open chooses it and opens nothing ...
+  openFileDialog(state, FileDialogPurpose::SaveSession);
+  state.dialog.name = path("s.json");
+  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
+  ASSERT_FALSE(state.recent.entries().empty());
+  const RecentEntry entry = state.recent.entries().front();
+  ASSERT_EQ(entry.kind, RecentEntry::Kind::Session);
+  openFileDialog(state, FileDialogPurpose::OpenScene);
+  chooseRecent(state.dialog, entry);
+  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::OpenScene);
+  EXPECT_EQ(state.statusMessage.find("opened session"), std::string::npos) << state.statusMessage;
+  // ... and OK (or a double click, which submits the same way) opens it (the same scene: applied at once).
+  ASSERT_TRUE(submitFileDialog(state));
+  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::None);
+  EXPECT_NE(state.statusMessage.find("opened session"), std::string::npos) << state.statusMessage;
+  EXPECT_EQ(fs::path(state.documentPath), fs::path(path("s.json")));
+}

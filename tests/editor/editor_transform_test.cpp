@@ -104,6 +104,28 @@ TEST(EditorTransform, ScaleByTheDistanceRatio) {
   EXPECT_LT((outY.col(1) - 2.0 * v.col(1)).norm(), 1e-9);
 }
 
+TEST(EditorTransform, AGizmoSquaresScaleDoesNotDependOnHowCloseToTheCentreItSits) {
+  // Issue 24: the squares sit 60 % along the arrows, closer still when an axis turns towards the eye; scaling by the
+  // ratio of distances from there made a 64-pixel drag scale x3 (16 -> 80 pixels: x5 here). From a square the factor
+  // is 1 + travel / 80 pixels (GizmoLayout::kArrowPixels), wherever the square is: 64 pixels outwards x1.8, 40
+  // inwards x0.5.
+  const OrbitCamera c = frontCamera();
+  const Eigen::MatrixXd v = square3();
+  const Eigen::Vector2d centre = screenOf(c, Eigen::Vector3d::Zero());
+  for (double from : {16.0, 48.0}) {
+    TransformSession t =
+        beginTransform(TransformKind::Scale, {0, 1, 2, 3}, v, centre + Eigen::Vector2d(from, 0), kViewport);
+    t.axis = Axis::X;
+    t.scalePixels = GizmoLayout::kArrowPixels;
+    const Eigen::MatrixXd out = applyTransform(t, c, centre + Eigen::Vector2d(from + 64, 5));  // 5 px off the line
+    EXPECT_LT((out.col(0) - 1.8 * v.col(0)).norm(), 1e-9) << "from " << from;
+    EXPECT_LT((out.col(1) - v.col(1)).norm(), 1e-12);
+    const Eigen::MatrixXd in = applyTransform(t, c, centre + Eigen::Vector2d(from - 40, 0));
+    EXPECT_LT((in.col(0) - 0.5 * v.col(0)).norm(), 1e-9) << "from " << from;
+    EXPECT_LT((applyTransform(t, c, centre + Eigen::Vector2d(from, 0)) - v).norm(), 1e-12);
+  }
+}
+
 TEST(EditorTransform, MouseBackAtTheStartIsTheIdentity) {
   const OrbitCamera c = frontCamera();
   c.state();

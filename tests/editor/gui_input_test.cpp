@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -370,5 +371,65 @@ TEST(GuiInput, FinishedWorkIsDrawnWithoutMovingTheMouse) {
     std::printf("%s: %.4f %% of the pixels differ between the still picture and the redrawn one\n", step,
                 100 * differs);
   }
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
+
+namespace {
+
+// The --log-frames lines of a file the scenario cut out of the log: each frame's counters by name.
+std::vector<std::map<std::string, std::string>> frameLines(const fs::path& file) {
+  std::vector<std::map<std::string, std::string>> frames;
+  std::istringstream in(readText(file));
+  for (std::string line; std::getline(in, line);) {
+    if (line.rfind("frame ", 0) != 0) continue;
+    std::map<std::string, std::string> fields;
+    std::istringstream words(line);
+    for (std::string word; words >> word;)
+      if (const std::size_t eq = word.find('='); eq != std::string::npos)
+        fields[word.substr(0, eq)] = word.substr(eq + 1);
+    frames.push_back(fields);
+  }
+  return frames;
+}
+
+}  // namespace
+
+TEST(GuiInput, OrbitingDeformsAndUploadsNothingWhileGrabbingDoes) {
+  SKIP_WITHOUT_X_TOOLS();
+  // Two panes: each frame draws each pane's mesh once. The frames drawn while the mouse orbits (Alt+left drag)
+  // and while G moves the whole cage are cut out of the --log-frames lines by their count before and after.
+  const fs::path dir = kOut / "frames";
+  const std::string out = runScenario(
+      dir,
+      "start --log-frames --compare somigliana,green\nwaitfor 'job precompute' 1 20 || exit 4\nsettle\n"
+      "frames() { grep -c '^frame ' \"$log\"; }\n"
+      "cut() { grep '^frame ' \"$log\" | sed -n \"$(( $1 + 1 )),$2p\" > \"$3\"; }\n"
+      "shot before.png; xdotool mousemove 500 400 keydown alt mousedown 1; sleep 0.3; n0=$(frames)\n"
+      "for x in $(seq 510 10 700); do xdotool mousemove $x 420; sleep 0.05; done\n"
+      "sleep 0.3; n1=$(frames); xdotool mouseup 1 keyup alt; settle; shot orbited.png; cut $n0 $n1 orbit.txt\n"
+      "xdotool key a; waitfor 'action select_all' 1 10 || exit 4; xdotool key g; waitfor 'action grab' 1 10 || exit 4\n"
+      "n0=$(frames); for x in $(seq 700 -10 600); do xdotool mousemove $x 420; sleep 0.05; done\n"
+      "sleep 0.3; n1=$(frames); cut $n0 $n1 grab.txt; xdotool key Escape; settle\n"
+      "xdotool key ctrl+q; sleep 1; alive && xdotool key d; finish\n");
+  const auto orbit = frameLines(dir / "orbit.txt"), grab = frameLines(dir / "grab.txt");
+  ASSERT_GE(orbit.size(), 3u) << out;
+  ASSERT_GE(grab.size(), 2u) << out;
+  // The orbit turned the camera (the picture changed) ...
+  const Image before = load(dir / "before.png"), orbited = load(dir / "orbited.png");
+  ASSERT_FALSE(orbited.rgb.empty()) << out;
+  EXPECT_GT(changedShare(before, orbited, ViewRect{panelWidth(kWidth), 60, kWidth - panelWidth(kWidth), 600}, 0), 0.01)
+      << out;
+  // ... without deforming or uploading anything, each pane's mesh drawn once per frame.
+  for (const auto& f : orbit) {
+    EXPECT_EQ(f.at("deforms"), "0") << out;
+    EXPECT_EQ(f.at("uploads"), "0") << out;
+    EXPECT_EQ(f.at("mesh_draws"), "2") << out;
+  }
+  // Grabbing deforms and uploads both panes in the frames where the mouse moved (the counters can count).
+  int deformed = 0;
+  for (const auto& f : grab) deformed += f.at("deforms") == "2" && f.at("uploads") == "2";
+  EXPECT_GE(deformed, 1) << out;
+  std::printf("orbit: %zu frames, none deformed; grab: %d of %zu frames deformed both panes\n", orbit.size(), deformed,
+              grab.size());
   EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
 }
