@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libgtest-dev  # core and tests
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenvdb-dev libtbb-dev libimath-dev  # cage generation
   libassimp-dev libtinygltf-dev  # mesh formats (PLY, STL, OFF, glTF, FBX in; GLB out)
