@@ -3,6 +3,7 @@
 // conditions, poses and keys, sessions) does not include the deformer.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "deform_choices.h"
@@ -26,6 +27,8 @@ struct DeformParams {
   Bulging bulging = Bulging::SolidAngle;        // how eta grows with gamma (deform_choices.h)
   NormalWeights normals = NormalWeights::Area;  // vertex normals' and vertex rotations' face weights
   VariantKind kind = VariantKind::Blend;        // set with blend by the variant's name (deform_choices.h)
+  // The values of parameters registered outside core (parameter_schema.h: ParameterRegistration), by key.
+  std::map<std::string, double> extra{};
 };
 
 // Every field equal (numbers exactly).
@@ -50,7 +53,7 @@ constexpr ParameterRange kBlendRange{0.0, 1.0};
 // A range as help texts and messages show it: "[0, 10]", or "(-1, 0.5)" when open.
 std::string rangeText(const ParameterRange& range, bool open = false);
 
-// Throws InputError naming the parameter when a value is out of range or NaN.
+// Throws InputError naming the parameter when a value is out of range or NaN (every row of parameter_schema.h).
 void validateDeformParams(const DeformParams& params);
 
 // The thread counts every front end takes (--threads, Python's threads=): 0 (all cores) to kMaxThreads.

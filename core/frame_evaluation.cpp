@@ -51,9 +51,14 @@ struct PreparedWeights {
   std::vector<Group> groups;
   int steps = 0;                 // SIMD steps of all the groups' passes over one block
   double origin[3] = {0, 0, 0};  // FrameWeights::origin
+  FrameFinish finish;
 
   PreparedWeights(const FrameWeights& W, int mainColumns_)
-      : mainColumns(mainColumns_), tailColumns(static_cast<int>(W.tail.rows())), outputs(W.outputs), tail(W.tail) {
+      : mainColumns(mainColumns_),
+        tailColumns(static_cast<int>(W.tail.rows())),
+        outputs(W.outputs),
+        tail(W.tail),
+        finish(W.finish) {
     for (int a = 0; a < 3 && a < W.origin.size(); ++a) origin[a] = W.origin(a);
     for (int k = 0; k < tailColumns; ++k)
       if (!W.tail.row(k).isZero(0)) tailRows.push_back(k);
@@ -200,12 +205,12 @@ void evaluate(const CoordinateMatrix<Scalar>& C, const PreparedWeights<Scalar>& 
     double y[kBlockRows][kMaxOutputs] = {};
     dispatchedOutputsOfBlock(C, W, b * kBlockRows, kBlockRows, y);
     for (int r = 0; r < kBlockRows; ++r)
-      finishFramePoint<Dim>(y[r], W.outputs, W.origin, out.row(b * kBlockRows + r).data());
+      finishFramePoint<Dim>(y[r], W.finish, W.origin, out.row(b * kBlockRows + r).data());
   }
   for (int p = numBlocks * kBlockRows; p < numPoints; ++p) {
     double y[1][kMaxOutputs] = {};
     dispatchedOutputsOfBlock(C, W, p, 1, y);
-    finishFramePoint<Dim>(y[0], W.outputs, W.origin, out.row(p).data());
+    finishFramePoint<Dim>(y[0], W.finish, W.origin, out.row(p).data());
   }
 }
 
@@ -255,7 +260,7 @@ void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int 
 }
 
 void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, int threads, Eigen::MatrixXd& out) {
-  SOMICAGE_ASSERT(W.outputs == dim || W.outputs == dim * dim + dim, "a frame has d or d^2 + d outputs");
+  SOMICAGE_ASSERT(W.outputs == frameOutputs(W.finish, dim), "a frame has the outputs of its finish");
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
   if (C.isFloat())

@@ -25,6 +25,8 @@
 #include <cstddef>
 #include <vector>
 
+#include "frame_finish.h"
+
 namespace somicage {
 
 template <typename Scalar>
@@ -56,7 +58,8 @@ struct FrameCoordinates {
 FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage);
 
 struct FrameWeights {
-  int outputs = 0;         // d, or d * d + d for a per-point solve
+  FrameFinish finish = FrameFinish::Linear;  // the method's (MethodDescriptor::finish)
+  int outputs = 0;         // frameOutputs(finish, d): d, or d * d + d for a per-point solve
   int mainOffset = 0;      // the first output column that `main` contributes to
   Eigen::MatrixXd main;    // K_main by (outputs - mainOffset)
   Eigen::MatrixXd tail;    // K_tail by outputs

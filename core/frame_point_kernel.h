@@ -6,6 +6,7 @@
 
 #include <math.h>
 
+#include "frame_finish.h"
 #include "portable.h"
 
 namespace somicage {
@@ -19,6 +20,7 @@ struct PortableFrameWeights {
   const double* tail;
   int columns, mainColumns, mainOffset, outputs;
   double origin[3];  // FrameWeights::origin (zeros when it is empty)
+  FrameFinish finish;
 };
 
 // Adds to y (kPortableMaxOutputs) the terms of row c (columns entries) in the columns lane, lane + lanes, ...
@@ -76,7 +78,8 @@ SOMICAGE_HD inline Scalar solveByAdjugate(const Scalar (&M)[Dim][Dim], const Sca
 // |det T| at most this times |T|_F^d: T(x) is singular to rounding (Eq. 11 has no solution there).
 constexpr double kSingularT = 1e-12;
 
-// The point from its summed outputs y: y itself for d outputs, else o + T^-1 b with T = S + A (layout in
+// The point from its summed outputs y (the one switch on the finish of the CPU, CUDA and J): y itself for
+// FrameFinish::Linear, else (SolveT) o + T^-1 b with T = S + A (layout in
 // frame_evaluation.h), o the frame's origin (b is relative to it), T inverted by its adjugate as Eigen does for
 // fixed 2x2 and 3x3 matrices. Where T is singular to rounding -- local rotations can cancel in
 // T = sum_i R_i T_i R_i^T, e.g. on a cage collapsed to a point -- the regularised least-squares
@@ -84,8 +87,8 @@ constexpr double kSingularT = 1e-12;
 // Scalar: double, or dual numbers (dual_number.h) whose gradients are those of y: the result's gradient is then the
 // derivative of Eq. 11's solve, T^-1 (b' - T' T^-1 b) (the deformation gradient of jacobian.h).
 template <int Dim, typename Scalar>
-SOMICAGE_HD inline void finishFramePoint(const Scalar* y, int outputs, const double* origin, Scalar* result) {
-  if (outputs == Dim) {
+SOMICAGE_HD inline void finishFramePoint(const Scalar* y, FrameFinish finish, const double* origin, Scalar* result) {
+  if (finish == FrameFinish::Linear) {
     for (int a = 0; a < Dim; ++a) result[a] = y[a];
     return;
   }

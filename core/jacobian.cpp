@@ -50,7 +50,7 @@ void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y,
       if (withGradient)
         for (int b = 0; b < Dim; ++b) yd[o].g[b] = dy[static_cast<std::size_t>(b)](p, o);
     }
-    finishFramePoint<Dim>(yd, W.outputs, origin, f);
+    finishFramePoint<Dim>(yd, W.finish, origin, f);
     for (int a = 0; a < Dim; ++a) {
       positions(p, a) = f[a].v;
       if (withGradient)

@@ -13,6 +13,7 @@
 
 #include "cage.h"
 #include "coordinate_layout.h"
+#include "frame_finish.h"
 #include "progress.h"
 
 namespace somicage {
@@ -42,6 +43,13 @@ struct MethodOptionSpec {
   void (*check)(const std::string& value) = nullptr;
 };
 
+// The per-element coordinate fields a method can show (MethodDescriptor::fields; coordinate_fields.h, the editor's
+// "field" quantity): a cage vertex's T_i n_i and a face's K_j n_j at the method's nu.
+enum ElementField : unsigned {
+  kFieldVertex = 1u << 0,
+  kFieldFace = 1u << 1,
+};
+
 struct MethodDescriptor {
   const char* name;         // the command line's --method, session files, Python: "somigliana"
   const char* displayName;  // the editor's menus and labels: "Somigliana"
@@ -67,6 +75,9 @@ struct MethodDescriptor {
   // Precomputes the coordinates of points (#P by d) in the rest cage. Throws Cancelled if progress says stop.
   std::unique_ptr<CageDeformer> (*precompute)(const Cage& restCage, const Eigen::MatrixXd& points,
                                               const PrecomputeOptions& options, const ProgressCallback& progress);
+  // How its frames finish (frame_finish.h): what its FrameWeights::finish is, and what every evaluator switches on.
+  FrameFinish finish = FrameFinish::Linear;
+  unsigned fields = 0;  // the ElementField bits it can show
 };
 
 // A method: a handle on its descriptor in the registry (cheap to copy, ordered by listOrder).
@@ -86,8 +97,21 @@ class Method {
   const MethodDescriptor* descriptor_;
 };
 
-// Every registered method, by listOrder.
+// Every registered method, by listOrder: core/methods/*_method.cpp, and those registered at run time.
 const std::vector<Method>& allMethods();
+
+// Adds a method for the registration's lifetime (a test's throw-away method, a plug-in): every front end that asks
+// the registry lists it. Not thread-safe: register before front ends run. The descriptor must outlive it.
+class MethodRegistration {
+ public:
+  explicit MethodRegistration(const MethodDescriptor& descriptor);
+  ~MethodRegistration();
+  MethodRegistration(const MethodRegistration&) = delete;
+  MethodRegistration& operator=(const MethodRegistration&) = delete;
+
+ private:
+  const MethodDescriptor* descriptor_;
+};
 
 std::string methodName(Method method);  // descriptor().name: "somigliana", "green", "mvc"
 std::optional<Method> findMethod(const std::string& name);

@@ -9,22 +9,43 @@
 
 namespace somicage {
 
-const std::vector<Method>& allMethods() {
-  static const std::vector<Method> methods = [] {
+namespace {
+
+void checkDistinct(const std::vector<Method>& list) {
+  for (std::size_t a = 0; a < list.size(); ++a)
+    for (std::size_t b = a + 1; b < list.size(); ++b)
+      SOMICAGE_ASSERT(std::strcmp(list[a]->name, list[b]->name) != 0 && list[a]->listOrder != list[b]->listOrder,
+                      "every method has its own name and list position");
+}
+
+std::vector<Method>& registry() {
+  static std::vector<Method> methods = [] {
     std::vector<Method> list{
 #define SOMICAGE_METHOD(id) Method(methods::id()),
 #include "method_list.inc"
 #undef SOMICAGE_METHOD
     };
     std::sort(list.begin(), list.end());
-    for (std::size_t a = 0; a < list.size(); ++a)
-      for (std::size_t b = a + 1; b < list.size(); ++b)
-        SOMICAGE_ASSERT(std::strcmp(list[a]->name, list[b]->name) != 0 && list[a]->listOrder != list[b]->listOrder,
-                        "every method has its own name and list position");
+    checkDistinct(list);
     SOMICAGE_ASSERT(!list.empty(), "core/methods holds at least one method");
     return list;
   }();
   return methods;
+}
+
+}  // namespace
+
+const std::vector<Method>& allMethods() { return registry(); }
+
+MethodRegistration::MethodRegistration(const MethodDescriptor& descriptor) : descriptor_(&descriptor) {
+  std::vector<Method>& list = registry();
+  list.insert(std::upper_bound(list.begin(), list.end(), Method(descriptor)), Method(descriptor));
+  checkDistinct(list);
+}
+
+MethodRegistration::~MethodRegistration() {
+  std::vector<Method>& list = registry();
+  list.erase(std::remove(list.begin(), list.end(), Method(*descriptor_)), list.end());
 }
 
 Method::Method() : descriptor_(&allMethods().front().descriptor()) {}

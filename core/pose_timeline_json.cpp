@@ -3,7 +3,6 @@
 #include <cmath>
 #include <limits>
 
-#include "deform_choices_json.h"
 #include "errors.h"
 
 namespace somicage {

@@ -5,10 +5,10 @@
 #include <filesystem>
 #include <limits>
 
-#include "deform_choices_json.h"
 #include "errors.h"
 #include "file_util.h"
 #include "json.h"
+#include "parameter_json.h"
 #include "pose_timeline_json.h"
 
 namespace somicage {
@@ -19,11 +19,6 @@ std::vector<Method> defaultCompareMethods() {
 }
 
 namespace {
-
-JsonValue numberOrInfinity(double x) {
-  if (std::isinf(x)) return JsonValue::string(x > 0 ? "inf" : "-inf");
-  return JsonValue::number(x);
-}
 
 // A matrix as an array of rows (the pose, the inline cage's vertices and faces).
 template <typename Matrix>
@@ -41,12 +36,10 @@ JsonValue rows(const Matrix& m) {
 JsonValue viewToJson(const ViewSpec& view) {
   JsonValue out = JsonValue::object();
   out.set("method", JsonValue::string(methodName(view.method)));
-  if (view.nu) out.set("nu", numberOrInfinity(*view.nu));
-  if (view.gamma) out.set("gamma", JsonValue::number(*view.gamma));
-  if (view.variant) out.set("variant", JsonValue::string(variantName(*view.variant)));
-  if (view.tractionCorrection) out.set("tractionCorrection", JsonValue::boolean(*view.tractionCorrection));
-  for (const auto& [name, value] : view.choices)
-    out.set(name, JsonValue::string(findChoiceParameter(name)->values[static_cast<std::size_t>(value)].name));
+  for (const auto& [key, value] : view.own) {
+    const ParameterSpec& spec = *findParameter(key);
+    out.set(spec.sessionKey, parameterJson(spec, value));
+  }
   if (!view.options.empty()) {
     JsonValue options = JsonValue::object();
     for (const auto& [key, value] : view.options) options.set(key, JsonValue::string(value));
@@ -72,13 +65,8 @@ struct Reader {
     if (!v) fail("missing field \"" + key + "\"");
     return *v;
   }
-  // Only nu may be infinite (written as "inf" / "-inf"); every other number must be finite.
-  double number(const JsonValue& obj, const std::string& key, bool allowInfinity = false) const {
+  double number(const JsonValue& obj, const std::string& key) const {
     const JsonValue& v = get(obj, key);
-    if (allowInfinity && v.isString()) {
-      if (v.asString() == "inf") return std::numeric_limits<double>::infinity();
-      if (v.asString() == "-inf") return -std::numeric_limits<double>::infinity();
-    }
     if (!v.isNumber()) fail("field \"" + key + "\" must be a number");
     return v.asNumber();
   }
@@ -161,31 +149,29 @@ struct Reader {
       fail("\"restCage\": " + e.problem());
     }
   }
-  // "views" entry i: {"method", and optionally "nu", "gamma", "variant", "tractionCorrection", the named choices
-  // ("bulging", "normals") and "options" (the method's own, as text: {"tet-level": "2"}); nothing else.
+  // "views" entry i: {"method", and optionally its own parameters by their session keys (parameter_schema.h: "nu",
+  // "variant", "tractionCorrection", "bulging", ...) and "options" (the method's own, as text: {"tet-level": "2"});
+  // nothing else.
   ViewSpec view(const JsonValue& v, std::size_t i) const {
     const std::string where = "\"views\" entry " + std::to_string(i);
     if (!v.isObject()) fail(where + " must be an object with \"method\"");
+    const auto isParameter = [](const std::string& key) {
+      for (const ParameterSpec& spec : parameterSchema())
+        if (key == spec.sessionKey) return true;
+      return false;
+    };
     for (const auto& [key, value] : v.members())
-      if (key != "method" && key != "nu" && key != "gamma" && key != "variant" && key != "tractionCorrection" &&
-          key != "options" && !findChoiceParameter(key)) {
-        std::string keys = "method, nu, gamma, variant, tractionCorrection";
-        for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
+      if (key != "method" && key != "options" && !isParameter(key)) {
+        std::string keys = "method";
+        for (const ParameterSpec& spec : parameterSchema()) keys += std::string(", ") + spec.sessionKey;
         fail(where + " has an unknown field \"" + key + "\" (expected " + keys + ", options)");
       }
     const JsonValue* name = v.find("method");
     if (!name || !name->isString()) fail(where + " needs \"method\": a method name");
-    ViewSpec view{method(name->asString()), {}, {}, {}, {}, {}, {}};
+    ViewSpec view{method(name->asString()), {}, {}};
     try {
-      if (v.find("nu")) view.nu = number(v, "nu", true);
-      if (v.find("gamma")) view.gamma = number(v, "gamma");
-      if (v.find("tractionCorrection")) view.tractionCorrection = boolean(v, "tractionCorrection");
-      if (v.find("variant")) {
-        view.variant = findViewVariant(string(v, "variant"));
-        if (!view.variant) fail("field \"variant\" must be one of " + variantNameList());
-      }
-      for (const ChoiceParameter& choice : choiceParameters())
-        if (const std::optional<int> value = readChoice(v, choice, source)) view.choices[choice.name] = *value;
+      for (const ParameterSpec& spec : parameterSchema())
+        if (const std::optional<double> value = readParameterJson(v, spec, source)) view.own[spec.key] = *value;
       if (const JsonValue* options = v.find("options")) {
         if (!options->isObject()) fail("field \"options\" must be an object of texts");
         for (const auto& [key, value] : options->members()) {
@@ -234,12 +220,7 @@ std::string sessionToJson(const Session& s) {
     root.set("methodOptions", std::move(options));
   }
   JsonValue params = JsonValue::object();
-  params.set("blend", JsonValue::number(s.params.blend));
-  params.set("nu", numberOrInfinity(s.params.nu));
-  params.set("gamma", JsonValue::number(s.params.gamma));
-  params.set("tractionCorrection", JsonValue::boolean(s.params.tractionCorrection));
-  params.set("corotational", JsonValue::boolean(s.params.corotational));
-  writeChoices(s.params, params);
+  writeParameters(s.params, params);
   root.set("params", std::move(params));
   root.set("compare", JsonValue::boolean(s.compare));
   JsonValue methods = JsonValue::array(), views = JsonValue::array();
@@ -292,13 +273,13 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
   s.method = r.method(r.string(root, "method"));
   if (const JsonValue* options = root.find("methodOptions")) s.methodOptions = r.methodOptions(*options, s.method);
   const JsonValue& params = r.get(root, "params");
-  s.params.blend = r.number(params, "blend");
-  s.params.nu = r.number(params, "nu", true);
-  s.params.gamma = r.number(params, "gamma");
-  s.params.tractionCorrection = r.boolean(params, "tractionCorrection");
-  // BEM's option; sessions saved before it existed do not have it (off).
-  s.params.corotational = params.find("corotational") != nullptr && r.boolean(params, "corotational");
-  readChoices(params, s.params, source);  // "bulging", "normals": absent in sessions saved before them
+  if (!params.isObject()) r.fail("\"params\" must be an object");
+  // Every parameter by its session key; one absent (a session saved before it existed) keeps its default.
+  try {
+    readParameters(params, s.params, source);
+  } catch (const InputError& e) {
+    r.fail(e.problem());
+  }
   try {
     validateDeformParams(s.params);
   } catch (const InputError& e) {
@@ -316,7 +297,7 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
     s.compareViews.clear();
     for (const JsonValue& m : methods.items()) {
       if (!m.isString()) r.fail("\"compareMethods\" must hold strings");
-      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}, {}, {}, {}, {}});
+      s.compareViews.push_back(ViewSpec{r.method(m.asString()), {}, {}});
     }
   }
   if (const JsonValue* cameraField = root.find("camera")) {

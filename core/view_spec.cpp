@@ -31,29 +31,22 @@ std::string optionsHint(Method m) {
   return list.empty() ? methodName(m) + " has no options of its own" : "its options: " + list;
 }
 
-bool sameNumber(const std::optional<double>& a, const std::optional<double>& b) {
-  return a.has_value() == b.has_value() && (!a || *a == *b);
-}
-
 }  // namespace
 
 DeformParams ViewSpec::params(const DeformParams& shared) const {
   DeformParams p = shared;
-  if (nu) p.nu = *nu;
-  if (gamma) p.gamma = *gamma;
-  if (variant) {
-    const VariantChoice& v = variantChoices()[static_cast<std::size_t>(*variant)];
-    p.kind = static_cast<VariantKind>(v.kind);
-    p.blend = v.blend;
-  }
-  if (tractionCorrection) p.tractionCorrection = *tractionCorrection;
-  for (const auto& [name, value] : choices) findChoiceParameter(name)->set(p, value);
+  for (const ParameterSpec& spec : parameterSchema())  // in the table's order: variant before blend
+    if (const std::optional<double> v = value(spec.key)) setParameter(spec, p, *v);
   return p;
 }
 
+std::optional<double> ViewSpec::value(const std::string& key) const {
+  const auto it = own.find(key);
+  return it == own.end() ? std::nullopt : std::optional<double>(it->second);
+}
+
 bool operator==(const ViewSpec& a, const ViewSpec& b) {
-  return a.method == b.method && sameNumber(a.nu, b.nu) && sameNumber(a.gamma, b.gamma) && a.variant == b.variant &&
-         a.tractionCorrection == b.tractionCorrection && a.choices == b.choices && a.options == b.options;
+  return a.method == b.method && a.own == b.own && a.options == b.options;
 }
 
 bool operator<(const DeformerKey& a, const DeformerKey& b) {
@@ -63,58 +56,45 @@ bool operator==(const DeformerKey& a, const DeformerKey& b) { return a.method ==
 
 std::vector<ViewSpec> viewsOf(const std::vector<Method>& methods) {
   std::vector<ViewSpec> views;
-  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}, {}, {}, {}, {}});
+  for (Method m : methods) views.push_back(ViewSpec{m, {}, {}});
   return views;
 }
 
 ViewSpec withMethod(ViewSpec view, Method m) {
   view.method = m;
-  if (!readsParameter(m, kParamNu)) view.nu.reset();
-  if (!readsParameter(m, kParamGamma)) view.gamma.reset();
-  if (!readsParameter(m, kParamBlend)) view.variant.reset();
-  if (!readsParameter(m, kParamTractionFix)) view.tractionCorrection.reset();
-  for (const ChoiceParameter& choice : choiceParameters())
-    if (!readsParameter(m, choice.parameter)) view.choices.erase(choice.name);
+  for (const ParameterSpec& spec : parameterSchema())
+    if (!readsParameter(m, spec.parameter)) view.own.erase(spec.key);
   for (auto it = view.options.begin(); it != view.options.end();)
     it = hasMethodOption(m, it->first) ? std::next(it) : view.options.erase(it);
   return view;
 }
 
-const char* variantName(Variant variant) { return variantChoices()[static_cast<std::size_t>(variant)].name; }
+std::string viewKeyList() {
+  std::string keys;
+  for (const ParameterSpec& spec : parameterSchema()) keys += (keys.empty() ? "" : ", ") + viewKey(spec);
+  return keys;
+}
 
-const ChoiceParameter* findChoiceParameter(const std::string& name) {
-  for (const ChoiceParameter& choice : choiceParameters())
-    if (name == choice.name) return &choice;
+const ParameterSpec* findViewParameter(const std::string& key) {
+  for (const ParameterSpec& spec : parameterSchema())
+    if (key == viewKey(spec)) return &spec;
   return nullptr;
 }
 
-std::optional<Variant> findViewVariant(const std::string& name) {
-  if (const VariantChoice* v = findVariant(name))
-    return static_cast<Variant>(v - variantChoices().data());
-  return std::nullopt;
-}
-
 void validateViewSpec(const ViewSpec& view, const std::string& option) {
-  const struct {
-    bool set;
-    DeformParameter parameter;
-    const char* name;
-  } own[] = {{view.nu.has_value(), kParamNu, "nu"},
-             {view.gamma.has_value(), kParamGamma, "gamma"},
-             {view.variant.has_value(), kParamBlend, "variant"},
-             {view.tractionCorrection.has_value(), kParamTractionFix, "traction"}};
-  auto require = [&](DeformParameter parameter, const std::string& name) {
-    if (!readsParameter(view.method, parameter))
-      throw InputError(option, -1, methodName(view.method) + " does not read " + name,
-                       "give " + name + " to a view of " + methodsReading(parameter));
-  };
-  for (const auto& p : own)
-    if (p.set) require(p.parameter, p.name);
-  for (const auto& [name, value] : view.choices) {
-    const ChoiceParameter* choice = findChoiceParameter(name);
-    if (!choice || value < 0 || value >= static_cast<int>(choice->values.size()))
-      throw InputError(option, -1, "no choice " + name + " = " + std::to_string(value), kViewHint);
-    require(choice->parameter, name);
+  for (const auto& [key, value] : view.own) {
+    const ParameterSpec* spec = findParameter(key);
+    if (!spec) throw InputError(option, -1, "no parameter " + key, kViewHint);
+    if (!readsParameter(view.method, spec->parameter))
+      throw InputError(option, -1, methodName(view.method) + " does not read " + viewKey(*spec),
+                       "give " + viewKey(*spec) + " to a view of " + methodsReading(spec->parameter));
+    if (spec->type != ParameterType::Number) {  // a name's index or a switch (numbers: the method's check below)
+      try {
+        validateParameter(*spec, value);
+      } catch (const InputError& e) {
+        throw InputError(option, -1, methodName(view.method) + " " + e.source() + ": " + e.problem(), e.hint());
+      }
+    }
   }
   for (const auto& [key, value] : view.options) {
     if (!hasMethodOption(view.method, key))
@@ -129,9 +109,8 @@ void validateViewSpec(const ViewSpec& view, const std::string& option) {
     }
   }
   // Only the view's own values are checked here: the shared ones are the panel's (checked where they are set).
-  DeformParams p;
-  if (view.nu) p.nu = *view.nu;
-  if (view.gamma) p.gamma = *view.gamma;
+  DeformParams p;  // the defaults, with the view's own values: its method checks their ranges
+  for (const auto& [key, value] : view.own) setParameter(*findParameter(key), p, value);
   try {
     view.method->validateParams(p);
   } catch (const InputError& e) {
@@ -151,7 +130,7 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
   if (!method)
     throw InputError(option, -1, "unknown method '" + parts.front() + "' in '" + text + "'",
                      "start with one of " + methodNameList() + ", " + kViewHint);
-  ViewSpec view{*method, {}, {}, {}, {}, {}, {}};
+  ViewSpec view{*method, {}, {}};
   for (std::size_t i = 1; i < parts.size(); ++i) {
     const std::string& part = parts[i];
     const std::size_t eq = part.find('=');
@@ -161,36 +140,15 @@ ViewSpec parseViewSpec(const std::string& text, const std::string& option) {
     auto once = [&](bool alreadySet) {
       if (alreadySet) throw InputError(option, -1, "'" + key + "' given twice in '" + text + "'", kViewHint);
     };
-    if (key == "nu") {
-      once(view.nu.has_value());
-      view.nu = parseNumber(value, option + " nu");
-    } else if (key == "gamma") {
-      once(view.gamma.has_value());
-      view.gamma = parseNumber(value, option + " gamma");
-    } else if (key == "variant") {
-      once(view.variant.has_value());
-      view.variant = findViewVariant(value);
-      if (!view.variant)
-        throw InputError(option, -1, "variant must be " + variantNameList() + ", got '" + value + "'", kViewHint);
-    } else if (key == "traction") {
-      once(view.tractionCorrection.has_value());
-      if (value != "on" && value != "off")
-        throw InputError(option, -1, "traction must be on or off, got '" + value + "'", kViewHint);
-      view.tractionCorrection = value == "on";
-    } else if (const ChoiceParameter* choice = findChoiceParameter(key)) {
-      once(view.choices.count(key) > 0);
-      const std::optional<int> index = findChoice(*choice, value);
-      if (!index)
-        throw InputError(option, -1, key + " must be " + choiceNameList(*choice) + ", got '" + value + "'", kViewHint);
-      view.choices[key] = *index;
+    if (const ParameterSpec* spec = findViewParameter(key)) {
+      once(view.own.count(spec->key) > 0);
+      view.own[spec->key] = parseParameter(*spec, value, option + " " + key);
     } else if (hasMethodOption(view.method, key)) {
       once(view.options.count(key) > 0);
       view.options[key] = value;
     } else {
-      std::string keys = "nu, gamma, variant, traction";
-      for (const ChoiceParameter& c : choiceParameters()) keys += std::string(", ") + c.name;
       throw InputError(option, -1,
-                       "unknown key '" + key + "' in '" + text + "' (expected " + keys +
+                       "unknown key '" + key + "' in '" + text + "' (expected " + viewKeyList() +
                            ownOptionList(view.method, ", or ") + ")",
                        kViewHint);
     }

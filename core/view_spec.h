@@ -11,27 +11,25 @@
 #include <utility>
 #include <vector>
 
-#include "deform_choices.h"
 #include "deformer.h"
+#include "parameter_schema.h"
 
 namespace somicage {
 
-enum class Variant { Global, Local, Affine, Stable };  // core's variantChoices(), in its order
-
 struct ViewSpec {
   Method method;
-  std::optional<double> nu, gamma;  // absent: the panel's
-  std::optional<Variant> variant;
-  std::optional<bool> tractionCorrection;
-  // Its own values of the named choices (deform_choices.h): ChoiceParameter::name -> the value's index.
-  std::map<std::string, int> choices;
+  // Its own parameter values (parameter_schema.h), by key ("nu", "variant": the value as the row holds it: a
+  // choice's index, a switch's 1 or 0); a parameter not here follows the panel's.
+  std::map<std::string, double> own;
   // The method's own precompute options (MethodDescriptor::options), e.g. Phong's {"tet-level": "2"}: views that
   // differ here have deformers of their own (the Fig. 8 demo's coarse and finer tetrahedra).
   MethodOptions options;
 
   // The parameters this view deforms with: `shared` with this view's own values in place.
   DeformParams params(const DeformParams& shared) const;
-  bool overrides() const { return nu || gamma || variant || tractionCorrection || !choices.empty(); }
+  bool overrides() const { return !own.empty(); }
+  // Its own value of the parameter, if it has one.
+  std::optional<double> value(const std::string& key) const;
 };
 bool operator==(const ViewSpec& a, const ViewSpec& b);  // exact (bitwise numbers)
 inline bool operator!=(const ViewSpec& a, const ViewSpec& b) { return !(a == b); }
@@ -58,15 +56,14 @@ ViewSpec withMethod(ViewSpec view, Method m);
 // option that is not the method's (an option's value is checked where it is used: the precompute).
 void validateViewSpec(const ViewSpec& view, const std::string& option);
 
-// "METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off][:bulging=B][:normals=N]
-// [:OPTION=VALUE]" (--view; every named choice of deform_choices.h is a key, and so is each of the method's own
-// options, e.g. phong:tet-level=2). Throws InputError(option, ...) naming what is wrong: an unknown
+// "METHOD[:KEY=VALUE]..." (--view): KEY is a parameter's view key (parameter_schema.h: nu=X, gamma=Y,
+// variant=local, traction=on|off, bulging=B, ...) or one of the method's own options (phong:tet-level=2). Throws InputError(option, ...) naming what is wrong: an unknown
 // method or key, a repeated key, a bad value.
 ViewSpec parseViewSpec(const std::string& text, const std::string& option);
 
-const char* variantName(Variant variant);  // "global", "local", "affine", "stable"
-// The choice parameter of that name (deform_choices.h), or null.
-const ChoiceParameter* findChoiceParameter(const std::string& name);
-std::optional<Variant> findViewVariant(const std::string& name);
+// "nu, gamma, variant, traction, ...": every parameter's --view key, for help texts and messages.
+std::string viewKeyList();
+// The parameter whose --view key this is (parameter_schema.h), or null.
+const ParameterSpec* findViewParameter(const std::string& key);
 
 }  // namespace somicage

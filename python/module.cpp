@@ -15,6 +15,7 @@
 #include "errors.h"
 #include "mesh_formats.h"
 #include "numpy_arrays.h"
+#include "parameter_schema.h"
 #include "python_cage.h"
 #include "python_deformer.h"
 #include "python_errors.h"
@@ -45,34 +46,51 @@ void requireObjExtension(const std::string& path) {
 // The engine's parameter ranges (core/deformer.h) by Deformer.deform keyword: the editor's and the CLI's too.
 py::dict parameterRanges() {
   py::dict ranges;
-  ranges["nu"] = py::make_tuple(kNuRange.min, kNuRange.max);
-  ranges["gamma"] = py::make_tuple(kGammaRange.min, kGammaRange.max);
-  ranges["blend"] = py::make_tuple(kBlendRange.min, kBlendRange.max);
+  for (const ParameterSpec& spec : parameterSchema())
+    if (spec.type == ParameterType::Number) ranges[spec.pythonKeyword] = py::make_tuple(spec.range.min, spec.range.max);
   ranges["threads"] = py::make_tuple(0, kMaxThreads);
   return ranges;
 }
 
-// Deformer.deform's keyword arguments that set each DeformParameter (method.h), for method_info().
-struct ParameterKeyword {
-  DeformParameter parameter;
-  const char* keyword;
-};
-constexpr ParameterKeyword kParameterKeywords[] = {
-    {kParamBlend, "variant"},
-    {kParamBlend, "blend"},
-    {kParamNu, "nu"},
-    {kParamGamma, "gamma"},
-    {kParamTractionFix, "traction_fix"},
-    {kParamCorotational, "corotational"},
-};
+// The parameter table (core/parameter_schema.h), one dict per row: what the Blender add-on builds its panel from
+// and what the tests compare the keywords, the stub and the add-on with.
+py::list parameterSchemaInfo() {
+  py::list list;
+  for (const ParameterSpec& spec : parameterSchema()) {
+    const char* types[] = {"number", "switch", "choice"};
+    py::list values;
+    for (const ChoiceValue& value : spec.values)
+      if (value.description) values.append(py::make_tuple(value.name, value.description));
+    std::vector<std::string> methods;
+    for (Method m : allMethods())
+      if (readsParameter(m, spec.parameter)) methods.emplace_back(m->name);
+    py::dict row;
+    row["key"] = spec.key;
+    row["type"] = types[static_cast<int>(spec.type)];
+    row["keyword"] = spec.pythonKeyword;
+    row["session_key"] = spec.sessionKey;
+    row["view_key"] = viewKey(spec);
+    row["cli_flag"] = cliFlag(spec);
+    row["label"] = spec.label;
+    row["tooltip"] = spec.tooltip;
+    row["range"] = py::make_tuple(spec.range.min, spec.range.max);
+    row["open_range"] = spec.openRange;
+    row["infinities"] = spec.infinities;
+    if (spec.type == ParameterType::Number) row["default"] = spec.defaultValue;
+    if (spec.type == ParameterType::Switch) row["default"] = spec.defaultValue != 0;
+    if (spec.type == ParameterType::Choice) row["default"] = parameterText(spec, spec.defaultValue);
+    row["values"] = values;
+    row["methods"] = methods;
+    list.append(row);
+  }
+  return list;
+}
 
 // A method's descriptor as a dict: what front ends list (Blender's method menu, its tooltips, which settings apply).
 py::dict methodInfo(Method method) {
   std::vector<std::string> parameters;
-  for (const ParameterKeyword& k : kParameterKeywords)
-    if (readsParameter(method, k.parameter)) parameters.emplace_back(k.keyword);
-  for (const ChoiceParameter& choice : choiceParameters())
-    if (readsParameter(method, choice.parameter)) parameters.emplace_back(choice.name);
+  for (const ParameterSpec& spec : parameterSchema())
+    if (readsParameter(method, spec.parameter)) parameters.emplace_back(spec.pythonKeyword);
   py::dict info;
   info["name"] = method->name;
   info["display_name"] = method->displayName;
@@ -251,6 +269,11 @@ PYBIND11_MODULE(_somicage, module) {
       "{keyword: (min, max)} of Deformer.deform's numbers and Deformer's threads, from the engine's one list "
       "(core/deformer.h) that the command line and the editor check too: nu in the open interval (or +-inf), "
       "gamma, blend and threads in the closed one.");
+  module.def("parameter_schema", &parameterSchemaInfo,
+             "The engine's table of deformation parameters (core/parameter_schema.h), one dict per parameter: key, "
+             "type (number, switch, choice), keyword (Deformer.deform's), session_key, view_key, cli_flag, label, "
+             "tooltip, range, open_range, infinities, default, values ((name, description) of a choice) and methods "
+             "(those that read it).");
   module.def(
       "load_mesh",
       [](const fs::path& path, bool weld) {

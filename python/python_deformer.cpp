@@ -4,6 +4,7 @@
 #include "engine.h"
 #include "errors.h"
 #include "numpy_arrays.h"
+#include "parameter_schema.h"
 #include "python_errors.h"
 #include "python_progress.h"
 
@@ -24,7 +25,8 @@ Method methodArgument(const std::string& name) {
 
 DeformParams deformParams(const PythonDeformOptions& options) {
   DeformParams params;
-  setVariant(params, options.variant, "variant");
+  const ParameterSpec& variant = *findParameter("variant");  // "blend" too: what load_session gives for 0 < blend < 1
+  setParameter(variant, params, parseParameter(variant, options.variant, "variant"));
   if (options.blend) params.blend = *options.blend;
   params.nu = options.nu;
   params.gamma = options.gamma;

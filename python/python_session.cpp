@@ -6,6 +6,7 @@
 #include "engine.h"
 #include "mesh_formats.h"
 #include "obj_io.h"
+#include "parameter_schema.h"
 #include "pose_timeline.h"
 #include "python_cage.h"
 #include "session.h"
@@ -16,14 +17,24 @@ namespace somicage {
 
 namespace {
 
-// Deformer.deform's keyword arguments: `deformer.deform(posed, **params)` deforms as the session does.
+// Deformer.deform's keyword arguments, one per row of parameter_schema.h: `deformer.deform(posed, **params)`
+// deforms as the session does (the variant by name, then the blend that overrides it).
 py::dict deformKeywords(const DeformParams& params) {
   py::dict out;
-  out["nu"] = params.nu;
-  out["gamma"] = params.gamma;
-  out["blend"] = params.blend;
-  out["traction_fix"] = params.tractionCorrection;
-  out["corotational"] = params.corotational;
+  for (const ParameterSpec& spec : parameterSchema()) {
+    const double value = parameterValue(spec, params);
+    switch (spec.type) {
+      case ParameterType::Number:
+        out[spec.pythonKeyword] = value;
+        break;
+      case ParameterType::Switch:
+        out[spec.pythonKeyword] = value != 0;
+        break;
+      case ParameterType::Choice:
+        out[spec.pythonKeyword] = parameterText(spec, value);
+        break;
+    }
+  }
   return out;
 }
 

@@ -85,11 +85,14 @@ struct GpuDeformer::Impl {
   double lastCpuMs = std::numeric_limits<double>::quiet_NaN();
   double lastGpuMs = std::numeric_limits<double>::quiet_NaN();
 
-  const GlComputeProgram& kernel(int d, int outputs, int mainOffset) {
+  // The shader's FINISH is the frame's (core/frame_finish.h); OUTPUTS follows from it.
+  const GlComputeProgram& kernel(int d, FrameFinish finish, int mainOffset) {
+    const int outputs = frameOutputs(finish, d);
     const auto key = std::make_tuple(d, outputs, mainOffset);
     auto it = kernels.find(key);
     if (it != kernels.end()) return it->second;
     const std::string defines = "#define DIM " + std::to_string(d) + "\n#define OUTPUTS " + std::to_string(outputs) +
+                                "\n#define FINISH " + std::to_string(static_cast<int>(finish)) +
                                 "\n#define MAIN_OFFSET " + std::to_string(mainOffset) + "\n#define ROW_THREADS " +
                                 std::to_string(layout.rowThreads) + "\n#define GROUP_POINTS " +
                                 std::to_string(layout.groupPoints) + "\n";
@@ -289,7 +292,7 @@ void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chron
 
   // ---- W (small) on the CPU, as float, row-major: W_main then W_tail ----
   const int d = m.dim, mainOutputs = W.outputs - W.mainOffset;
-  SOMICAGE_ASSERT(W.outputs == d || W.outputs == d * d + d, "a frame has d or d^2 + d outputs");
+  SOMICAGE_ASSERT(W.outputs == frameOutputs(W.finish, d), "a frame has the outputs of its finish");
   SOMICAGE_ASSERT(W.main.rows() == m.mainColumns && W.main.cols() == mainOutputs, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == m.tailColumns && (m.tailColumns == 0 || W.tail.cols() == W.outputs), "W_tail shape");
   m.weightStaging.resize(static_cast<std::size_t>(W.main.size() + W.tail.size()) + 1);  // +1: never a 0-byte buffer
@@ -308,7 +311,7 @@ void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chron
                    GL_STREAM_DRAW);
 
   // ---- pass 1: positions ----
-  const GlComputeProgram& kernel = m.kernel(d, W.outputs, W.mainOffset);
+  const GlComputeProgram& kernel = m.kernel(d, W.finish, W.mainOffset);
   kernel.use();
   glUniform1ui(kernel.uniform("uMainColumns"), static_cast<GLuint>(m.mainColumns));
   glUniform1ui(kernel.uniform("uTailColumns"), static_cast<GLuint>(m.tailColumns));

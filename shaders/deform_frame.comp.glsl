@@ -2,11 +2,12 @@
 // One frame of core/frame_evaluation.h on the GPU (render/gpu_deformer.cpp):
 //
 //   y_p   = C_p,main . W_main  (into the outputs from MAIN_OFFSET on)  +  C_p,tail . W_tail
-//   out_p = y_p                                  when OUTPUTS == DIM             (Green, mean value)
-//   out_p = T_p^-1 b_p, T_p = y_p[0 : DIM^2] row-major, b_p = y_p[DIM^2 :]   (Somigliana, Eq. 11)
+//   out_p = y_p                                  when FINISH == 0 (FrameFinish::Linear: Green, mean value, ...)
+//   out_p = T_p^-1 b_p, T_p = y_p[0 : DIM^2] row-major, b_p = y_p[DIM^2 :]   when FINISH == 1 (SolveT: Eq. 11)
 //
 // Compile-time constants, defined by render/gpu_deformer.cpp right after the #version line:
-//   DIM (2 or 3), OUTPUTS (DIM or DIM*DIM+DIM), MAIN_OFFSET (first output that W_main feeds),
+//   DIM (2 or 3), FINISH (core/frame_finish.h: 0 Linear, 1 SolveT), OUTPUTS (DIM or DIM*DIM+DIM, FINISH's),
+//   MAIN_OFFSET (first output that W_main feeds),
 //   ROW_THREADS (invocations sharing one point: they read its row of C side by side, coalesced, and reduce in
 //   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group).
 // Rows from uMeshPoints on are the exterior points' proxy and anchor rows (core/frame_evaluation.h): they go to
@@ -41,7 +42,7 @@ shared float partial[GROUP_POINTS][OUTPUTS][ROW_THREADS];
 #endif
 
 vec3 finish(float y[OUTPUTS]) {
-#if OUTPUTS == DIM
+#if FINISH == 0
 #if DIM == 3
   return vec3(y[0], y[1], y[2]);
 #else

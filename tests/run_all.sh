@@ -11,16 +11,19 @@ phase() { echo "== $1 (at ${SECONDS} s)"; }
 phase "dependencies"
 bash third_party/install-deps.sh
 jobs=$(nproc)
+# Ninja compiles a target's objects while the libraries it links are still being built (make waits for them), so
+# both cores stay busy until the end. A build folder configured before with another generator keeps it.
+generator() { [ -f "$1/CMakeCache.txt" ] || echo "-GNinja"; }
 
 phase "build (Release, -Werror)"
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOMICAGE_WERROR=ON >/dev/null
+cmake $(generator build) -S . -B build -DCMAKE_BUILD_TYPE=Release -DSOMICAGE_WERROR=ON >/dev/null
 cmake --build build -j"$jobs"
 phase "tests"
 ctest --test-dir build --output-on-failure -j"$jobs"
 
 phase "core tests under ASan + UBSan"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON -DSOMICAGE_SANITIZE=ON \
-  -DSOMICAGE_BUILD_EDITOR=OFF >/dev/null
+cmake $(generator build-sanitize) -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON \
+  -DSOMICAGE_SANITIZE=ON -DSOMICAGE_BUILD_EDITOR=OFF >/dev/null
 cmake --build build-sanitize -j"$jobs" --target somicage_core_tests
 ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
   ctest --test-dir build-sanitize --output-on-failure -j"$jobs" -L core

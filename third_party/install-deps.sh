@@ -5,7 +5,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake ninja-build pkg-config
   libeigen3-dev libgtest-dev  # core and tests
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev libopenvdb-dev libtbb-dev libimath-dev  # cage generation
   libtet1.5-dev  # TetGen: the constrained tetrahedralization of a cage (Phong's level 0 and Mesh_3's fallback)

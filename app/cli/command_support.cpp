@@ -8,6 +8,7 @@
 #include "cage_tetrahedralization.h"
 #include "errors.h"
 #include "memory_estimate.h"
+#include "parameter_schema.h"
 
 namespace somicage {
 
@@ -66,48 +67,16 @@ Method methodOption(const ArgParser& args) {
   }
 }
 
-namespace {
-
-// The options that set a DeformParameter (method.h), for the notes on ignored options.
-struct ParameterOption {
-  const char* option;
-  DeformParameter parameter;
-};
-constexpr ParameterOption kParameterOptions[] = {
-    {"--variant", kParamBlend},
-    {"--blend", kParamBlend},
-    {"--nu", kParamNu},
-    {"--gamma", kParamGamma},
-    {"--no-traction-fix", kParamTractionFix},
-    {"--corotational", kParamCorotational},
-};
-
-}  // namespace
-
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after) {
   const auto forMethods = [](DeformParameter p) { return "; " + methodsReading(p); };
-  before.insert(
-      before.end(),
-      {
-          {"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"},
-          {"--variant", "NAME",
-            "global (default, blend 0), local (blend 1), affine (exact on affine poses) or stable (local without its "
-            "fold-overs at high nu)" +
-                forMethods(kParamBlend)},
-          {"--blend", "T", "blend between the global (0) and local (1) variant; overrides --variant"},
-          {"--nu", "V",
-           "Poisson ratio in " + rangeText(kNuRange, true) + ", or inf / -inf (default 0)" + forMethods(kParamNu)},
-          {"--gamma", "G", "bulging scale in " + rangeText(kGammaRange) + " (default 0)" + forMethods(kParamGamma)},
-          {"--no-traction-fix", "", "skip the traction correction of Eq. 15" + forMethods(kParamTractionFix)},
-          {"--corotational", "",
-           "remove the cage's best-fit rotation before the linear solve" + forMethods(kParamCorotational)},
-      });
+  before.push_back({"--method", "NAME", methodNameList() + " (default " + methodName(Method()) + ")"});
+  for (const ParameterFlag& f : parameterFlags()) {  // parameter_schema.h: a row's flag and its aliases
+    const bool rowFlag = f.flag == cliFlag(*f.spec);
+    before.push_back({f.flag, f.fixedValue ? "" : cliValueName(*f.spec),
+                      parameterFlagHelp(f) + (rowFlag ? forMethods(f.spec->parameter) : "")});
+  }
   const std::vector<OptionSpec> own = methodOptionSpecs();
   before.insert(before.end(), own.begin(), own.end());
-  for (const ChoiceParameter& choice : choiceParameters())
-    before.push_back({std::string("--") + choice.name, "NAME",
-                      std::string(choice.description) + ": " + choiceNameList(choice) + " (default " +
-                          choice.values.front().name + ")" + forMethods(choice.parameter)});
   before.insert(before.end(), after.begin(), after.end());
   return before;
 }
@@ -143,16 +112,9 @@ std::string methodsHelp() {
 
 DeformParams deformParamsOptions(const ArgParser& args, Method method) {
   DeformParams params;
-  setVariant(params, args.text("--variant", "global"), "--variant");
-  params.blend = args.number("--blend", params.blend);
-  params.nu = args.numberOrInfinity("--nu", params.nu);
-  params.gamma = args.number("--gamma", params.gamma);
-  params.tractionCorrection = !args.has("--no-traction-fix");
-  params.corotational = args.has("--corotational");
-  for (const ChoiceParameter& choice : choiceParameters()) {
-    const std::string option = std::string("--") + choice.name;
-    if (args.has(option)) choice.set(params, parseChoice(choice, args.text(option), option));
-  }
+  for (const ParameterFlag& f : parameterFlags())
+    if (args.has(f.flag))
+      setParameter(*f.spec, params, parseParameter(*f.spec, f.fixedValue ? f.fixedValue : args.text(f.flag), f.flag));
   try {
     method->validateParams(params);
   } catch (const InputError& e) {  // the method names the parameter ("nu"); here it is the option
@@ -168,8 +130,7 @@ void noteIgnoredParameters(const CommandLog& log, const ArgParser& args, Method 
     if (args.has(option) && !readsParameter(method, parameter))
       ignored += (ignored.empty() ? "" : ", ") + option + " (" + methodsReading(parameter) + ")";
   };
-  for (const ParameterOption& o : kParameterOptions) note(o.option, o.parameter);
-  for (const ChoiceParameter& choice : choiceParameters()) note(std::string("--") + choice.name, choice.parameter);
+  for (const ParameterFlag& f : parameterFlags()) note(f.flag, f.spec->parameter);
   for (Method m : allMethods())
     for (const MethodOptionSpec& o : m->options)
       if (m != method && !(volumeMeshUsed && m->needsVolumeMesh) && args.has(std::string("--") + o.key))

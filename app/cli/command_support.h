@@ -27,15 +27,15 @@ std::string formatNumber(double value, int digits = 6);
 // --method (default somigliana); an unknown name throws InputError naming --method.
 Method methodOption(const ArgParser& args);
 
-// before, then the options of every command that deforms (--method, --variant, --blend, --nu, --gamma,
-// --no-traction-fix, --corotational: read them with methodOption and deformParamsOptions), then after.
+// before, then the options of every command that deforms (--method, and one per row of parameter_schema.h with
+// its aliases: read them with methodOption and deformParamsOptions), then after.
 std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const std::vector<OptionSpec>& after);
 
 // "methods (--method):" and a line per method of the registry: "  NAME  DISPLAY NAME: DESCRIPTION", for the help
 // texts of the commands that deform.
 std::string methodsHelp();
 
-// --variant, --blend, --nu, --gamma, --no-traction-fix, --corotational as DeformParams, validated for the method
+// The parameter options (parameter_schema.h, aliases first) as DeformParams, validated for the method
 // (MethodDescriptor::validateParams; InputError names the option).
 DeformParams deformParamsOptions(const ArgParser& args, Method method);
 

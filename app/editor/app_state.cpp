@@ -24,7 +24,7 @@ std::vector<ViewSpec> AppState::views() const {
 }
 
 ViewSpec AppState::singleView() const {
-  return withMethod(ViewSpec{method, {}, {}, {}, {}, {}, methodOptions}, method);
+  return withMethod(ViewSpec{method, {}, methodOptions}, method);
 }
 
 std::vector<DeformerKey> AppState::deformerKeys() const {
@@ -40,40 +40,26 @@ std::string viewLabel(const AppState& state, std::size_t v) {
   const DeformParams params = view.params(state.params);
   std::string label = method->displayName;
   char buf[160];
-  if (readsParameter(method, kParamNu)) {
-    const double nu = params.nu;
-    if (std::isinf(nu)) {
-      std::snprintf(buf, sizeof buf, "  nu=%sinf", nu < 0 ? "-" : "");
+  for (const ParameterSpec& spec : parameterSchema()) {  // parameter_schema.h: what each row's LabelShow says
+    const double value = parameterValue(spec, params);
+    const bool own = view.own.count(spec.key) > 0;
+    if (!readsParameter(method, spec.parameter) || spec.labelShow == LabelShow::Never ||
+        (spec.labelShow == LabelShow::WhenSet && value == spec.defaultValue && !own))
+      continue;
+    const std::string text = parameterText(spec, value);
+    if (spec.type == ParameterType::Number) {
+      std::snprintf(buf, sizeof buf, "%.2f", value);
+      label += "  " + std::string(spec.key) + "=" + (std::isinf(value) ? text : buf);
+    } else if (spec.type == ParameterType::Switch) {
+      label += "  " + std::string(value != 0 ? "" : "no ") + spec.label;
+    } else if (spec.labelShow == LabelShow::Always) {  // the variant: "local", or "blend 0.50" between the two
+      std::snprintf(buf, sizeof buf, " %.2f", params.blend);
+      label += "  " + text + (text == "blend" ? buf : "");
     } else {
-      std::snprintf(buf, sizeof buf, "  nu=%.2f", nu);
+      label += "  " + std::string(spec.key) + " " + text;
     }
-    label += buf;
-    if (view.nu) label += " (own)";
+    if (own) label += " (own)";
   }
-  if (readsParameter(method, kParamGamma)) {
-    std::snprintf(buf, sizeof buf, "  gamma=%.2f%s", params.gamma, view.gamma ? " (own)" : "");
-    label += buf;
-  }
-  if (readsParameter(method, kParamBlend)) {
-    const std::string variant = variantName(params);  // "blend" between the paper's two
-    if (variant != "blend") {
-      label += "  " + variant;
-    } else {
-      std::snprintf(buf, sizeof buf, "  blend %.2f", params.blend);
-      label += buf;
-    }
-    if (view.variant) label += " (own)";
-  }
-  if (readsParameter(method, kParamTractionFix) && !params.tractionCorrection)
-    label += view.tractionCorrection ? "  no traction fix (own)" : "  no traction fix";
-  for (const ChoiceParameter& choice : choiceParameters()) {  // a named choice when not the paper's, or the view's
-    const int value = choice.get(params);
-    const bool own = view.choices.count(choice.name) > 0;
-    if (readsParameter(method, choice.parameter) && (value != 0 || own))
-      label += "  " + std::string(choice.name) + " " + choice.values[static_cast<std::size_t>(value)].name +
-               (own ? " (own)" : "");
-  }
-  if (readsParameter(method, kParamCorotational) && params.corotational) label += "  corotational";
   for (const auto& [key, value] : view.options) label += "  " + key + " " + value + " (own)";
   // Which tetrahedra a volume method gets without options of its own (deformer.h: volumeMeshFor): the cage's star.
   if (method->needsVolumeMesh && view.options.count("tets") + view.options.count("tet-level") == 0 && state.scene &&
@@ -86,9 +72,9 @@ std::string viewLabel(const AppState& state, std::size_t v) {
 std::string viewShortName(const AppState& state, std::size_t v) {
   const ViewSpec view = state.views()[v];
   std::string name = view.method->displayName;
-  if (view.nu) {
+  if (const std::optional<double> nu = view.value("nu")) {
     char buf[48];
-    std::snprintf(buf, sizeof buf, " nu=%.2f", *view.nu);
+    std::snprintf(buf, sizeof buf, " nu=%.2f", *nu);
     name += buf;
   }
   for (const auto& [key, value] : view.options) name += " " + key + " " + value;

@@ -30,9 +30,12 @@ void drawCompareViews(AppState& state) {
     tooltip("The method of this pane (views of one method share its precomputed coordinates)");
     if (readsParameter(view.method, kParamNu)) {
       ImGui::SameLine();
-      bool own = view.nu.has_value();
+      bool own = view.own.count("nu") > 0;
       if (ImGui::Checkbox("own nu", &own)) {
-        view.nu = own ? std::optional<double>(std::isfinite(state.params.nu) ? state.params.nu : 0.0) : std::nullopt;
+        if (own)
+          view.own["nu"] = std::isfinite(state.params.nu) ? state.params.nu : 0.0;
+        else
+          view.own.erase("nu");
         changed = true;
       }
       tooltip(
@@ -44,12 +47,12 @@ void drawCompareViews(AppState& state) {
       if (ImGui::SmallButton("x")) removed = v;
       tooltip("Remove this pane");
     }
-    if (view.nu) {
-      float nu = static_cast<float>(*view.nu);
+    if (const std::optional<double> ownNu = view.value("nu")) {
+      float nu = static_cast<float>(*ownNu);
       ImGui::Indent();
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("nu ").x);
       if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
-        view.nu = nu;
+        view.own["nu"] = nu;
         changed = true;
       }
       tooltip("This pane's Poisson ratio nu in (-1, 0.5). Ctrl+click to type a value.");

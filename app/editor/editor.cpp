@@ -52,12 +52,9 @@ void glfwErrorCallback(int code, const char* description) {
 // Applies the command-line choices that do not depend on the scene.
 void applyOptions(AppState& state, const EditorOptions& o) {
   if (o.method) state.method = *o.method;
-  if (o.nu) state.params.nu = *o.nu;
-  if (o.gamma) state.params.gamma = *o.gamma;
-  if (o.variant) setVariant(state.params, *o.variant, "--variant");
-  if (o.blend) state.params.blend = *o.blend;
-  if (o.tractionCorrection) state.params.tractionCorrection = *o.tractionCorrection;
-  for (const auto& [choice, value] : o.choices) choice->set(state.params, value);
+  for (const ParameterSpec& spec : parameterSchema())  // variant before blend
+    if (const auto it = o.parameters.find(spec.key); it != o.parameters.end())
+      setParameter(spec, state.params, it->second);
   if (!o.views.empty()) {
     state.compare = true;
     state.compareViews = o.views;

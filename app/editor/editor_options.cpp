@@ -1,5 +1,6 @@
 #include "editor_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -13,20 +14,21 @@ namespace somicage::editor {
 
 namespace {
 
-// The choice parameter whose option (--bulging) a is, or null.
-const ChoiceParameter* findChoiceOption(const std::string& a) {
-  for (const ChoiceParameter& choice : choiceParameters())
-    if (a == std::string("--") + choice.name) return &choice;
-  return nullptr;
+// The parameter flag (parameter_schema.h) a is, or none.
+std::optional<ParameterFlag> findParameterFlag(const std::string& a) {
+  for (const ParameterFlag& f : parameterFlags())
+    if (a == f.flag) return f;
+  return std::nullopt;
 }
 
-std::string choicesUsage() {
+// "  --nu V                    Poisson ratio: ... (default 0)" per flag of the table, as the CLI's help has them.
+std::string parametersUsage() {
   std::string text;
-  for (const ChoiceParameter& choice : choiceParameters()) {
-    std::string option = "  --" + std::string(choice.name) + " NAME";
-    option.resize(28, ' ');
-    text += option + choice.description + ": " + choiceNameList(choice) + " (default " + choice.values.front().name +
-            ")\n";
+  for (const ParameterFlag& f : parameterFlags()) {
+    std::string option = "  " + f.flag + (f.fixedValue ? "" : " " + cliValueName(*f.spec));
+    option.resize(std::max<std::size_t>(option.size() + 1, 28), ' ');
+    option += parameterFlagHelp(f);
+    text += option + "\n";
   }
   return text;
 }
@@ -47,26 +49,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.help = true;
     } else if (a == "--method") {
       o.method = parseMethod(value());
-    } else if (a == "--nu") {
-      o.nu = parseNumber(value(), a);
-    } else if (a == "--gamma") {
-      o.gamma = parseNumber(value(), a);
-    } else if (a == "--blend") {
-      o.blend = parseNumber(value(), a);
-    } else if (a == "--variant") {
-      const std::string& v = value();
-      if (!somicage::findVariant(v)) throw InputError(a, -1, "'" + v + "' is not a choice", "use " + variantNameList());
-      o.variant = v;
-    } else if (a == "--local") {
-      o.blend = 1.0;
-    } else if (a == "--global") {
-      o.blend = 0.0;
-    } else if (a == "--traction-fix") {
-      const std::string& v = value();
-      if (v != "on" && v != "off") throw InputError(a, -1, "expected on or off, got '" + v + "'", "--traction-fix on");
-      o.tractionCorrection = v == "on";
-    } else if (const ChoiceParameter* choice = findChoiceOption(a)) {
-      o.choices.emplace_back(choice, parseChoice(*choice, value(), a));
+    } else if (const std::optional<ParameterFlag> f = findParameterFlag(a)) {
+      o.parameters[f->spec->key] = parseParameter(*f->spec, f->fixedValue ? f->fixedValue : value(), a);
     } else if (a == "--compare") {
       if (compareGiven || !o.views.empty())
         throw InputError(a, -1, "given twice, or with --view", "use --compare a,b or --view SPEC (repeated), not both");
@@ -167,15 +151,15 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
   if (!positional.empty()) o.meshPath = positional[0];
   if (positional.size() >= 2) o.cagePath = positional[1];
   if (positional.size() == 3) o.posedPath = positional[2];
-  {  // the engine's ranges (deformer.h), named as options
+  {  // the engine's ranges (parameter_schema.h), named as options
     DeformParams p;
-    p.nu = o.nu.value_or(p.nu);
-    p.gamma = o.gamma.value_or(p.gamma);
-    p.blend = o.blend.value_or(p.blend);
+    for (const ParameterSpec& spec : parameterSchema())
+      if (const auto it = o.parameters.find(spec.key); it != o.parameters.end()) setParameter(spec, p, it->second);
     try {
       validateDeformParams(p);
     } catch (const InputError& e) {
-      throw InputError("--" + e.source(), -1, e.problem(), e.hint());
+      const ParameterSpec* spec = findParameter(e.source());
+      throw InputError(spec ? cliFlag(*spec) : "--" + e.source(), -1, e.problem(), e.hint());
     }
   }
   for (const ViewShow& view : o.show.views) {  // the typed range must suit every shown quantity's scale
@@ -205,18 +189,12 @@ std::string editorUsage() {
          "                            Somigliana local nu = 0)\n"
          "  --session FILE.json       open a saved session\n"
          "  --method NAME             " +
-         methodNameList() + " (default " + methodName(Method()) +
-         ")\n"
-         "  --nu X                    Poisson ratio in " +
-         rangeText(kNuRange, true) + ", or inf / -inf\n" + "  --gamma X                 bulging scale in " +
-         rangeText(kGammaRange) + "\n" +
-         "  --blend T | --local | --global   0 = global variant, 1 = local variant\n"
-         "  --variant NAME            " + variantNameList() + " (affine, stable: docs/engine.md)\n"
-         "  --traction-fix on|off     traction correction (Eq. 15)\n" +
-         choicesUsage() +
+         methodNameList() + " (default " + methodName(Method()) + ")\n" + parametersUsage() +
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
-         "  --view METHOD[:nu=X][:gamma=Y][:variant=global|local|affine|stable][:traction=on|off]\n"
-         "         [:bulging=B][:normals=N][:OPTION=VALUE]\n"
+         "  --view METHOD[:KEY=VALUE]...\n"
+         "                            KEY: " +
+         viewKeyList() +
+         ", or a method's own option\n"
          "                            one side-by-side view with its own parameters (the others follow --nu\n"
          "                            etc.); give it 2 or 3 times, e.g. --view somigliana:nu=0\n"
          "                            --view somigliana:nu=0.45 (paper Fig. 3), or --view somigliana\n"

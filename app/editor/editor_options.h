@@ -1,6 +1,7 @@
 // The editor's command line: somicage [MESH CAGE [POSED]] [options]. Pure, no GL.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -19,10 +20,9 @@ struct EditorOptions {
   int demoDim = 3;                            // --demo 2d|3d|fig8
   bool demoFig8 = false;                      // --demo fig8: the paper's Fig. 8 (fig8_demo.h)
   std::optional<Method> method;               // --method
-  std::optional<double> nu, gamma, blend;     // --nu (inf allowed), --gamma, --blend
-  std::optional<std::string> variant;         // --variant NAME (deform_choices.h), before --blend
-  std::optional<bool> tractionCorrection;     // --traction-fix on|off
-  std::vector<std::pair<const ChoiceParameter*, int>> choices;  // --bulging NAME, --normals NAME (deform_choices.h)
+  // The parameter options (parameter_schema.h: --nu, --variant, --local, --no-traction-fix, ...): key -> value,
+  // the last given of a parameter's flags; applied in the table's order (variant before blend).
+  std::map<std::string, double> parameters;
   std::vector<ViewSpec> views;                // --compare a,b[,c] or --view SPEC (2 or 3); empty = one view
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH

@@ -8,10 +8,11 @@
 namespace somicage::editor {
 
 std::vector<ViewSpec> fig8Views() {
-  ViewSpec coarse{methods::phong(), {}, {}, {}, {}, {}, {}};
+  ViewSpec coarse{methods::phong(), {}, {}};
   ViewSpec fine = coarse;
   fine.options["tet-level"] = kFig8FineTetLevel;
-  const ViewSpec somigliana{methods::somigliana(), 0.0, {}, Variant::Local, {}, {}, {}};
+  const double local = parseParameter(*findParameter("variant"), "local", "the Fig. 8 demo");
+  const ViewSpec somigliana{methods::somigliana(), {{"nu", 0.0}, {"variant", local}}, {}};
   return {coarse, fine, somigliana};
 }
 

@@ -14,6 +14,7 @@
 #include "engine.h"
 #include "errors.h"
 #include "memory_estimate.h"
+#include "parameter_schema.h"
 
 namespace somicage::editor {
 
@@ -27,10 +28,7 @@ bool measuresDifference(const MeasureView& v) {
   return sourceOf(v) == QuantitySource::Difference && v.deformer && v.otherDeformer;
 }
 
-MeasureKey::Params paramsKey(const DeformParams& p) {
-  return {p.blend, p.nu, p.gamma, p.tractionCorrection, p.corotational, static_cast<int>(p.bulging),
-          static_cast<int>(p.normals)};
-}
+MeasureKey::Params paramsKey(const DeformParams& p) { return parameterValues(p); }
 
 std::vector<std::vector<int>> faceLists(const Eigen::MatrixXi& triangles) {
   std::vector<std::vector<int>> faces(static_cast<std::size_t>(triangles.rows()));

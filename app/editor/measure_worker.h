@@ -49,7 +49,7 @@ struct MeasureRequest {
 
 // What a request is of: two requests with equal keys measure the same thing.
 struct MeasureKey {
-  using Params = std::tuple<double, double, double, bool, bool, int, int>;  // DeformParams' fields
+  using Params = std::vector<double>;  // every parameter's value (parameter_schema.h: parameterValues)
   const Scene* scene = nullptr;
   std::uint64_t poseGeneration = 0;
   // deformer, quantity, vertex, face, parameters; the other view's deformer and parameters (a difference)

@@ -314,7 +314,8 @@ void drawControlPanel(AppState& state) {
   if (!infinite) {
     float nu = static_cast<float>(p.nu);
     // Typed values (Ctrl+click) are clamped too: nu in (-1, 0.5); +-infinity only through the checkbox.
-    if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) p.nu = nu;
+    const auto nuMin = static_cast<float>(kNuRange.min + 0.01), nuMax = static_cast<float>(kNuRange.max - 0.01);
+    if (ImGui::SliderFloat("nu", &nu, nuMin, nuMax, "%.3f", ImGuiSliderFlags_AlwaysClamp)) p.nu = nu;
     nuDone = ImGui::IsItemDeactivatedAfterEdit();
     tooltip(
         "Poisson ratio nu in (-1, 0.5): how much the volume is kept. It sets the traction scale\n"
@@ -323,7 +324,10 @@ void drawControlPanel(AppState& state) {
     ImGui::TextDisabled("nu = inf (Green-like limit)");
   }
   float gamma = static_cast<float>(p.gamma);
-  if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 5.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.gamma = gamma;
+  // The engine's whole range (deform_params.h), as Blender's and Python's: typed values beyond it were refused.
+  if (ImGui::SliderFloat("gamma", &gamma, static_cast<float>(kGammaRange.min), static_cast<float>(kGammaRange.max),
+                         "%.2f", ImGuiSliderFlags_AlwaysClamp))
+    p.gamma = gamma;
   const bool gammaDone = ImGui::IsItemDeactivatedAfterEdit();
   tooltip(gammaTooltip(p.bulging).c_str());
   if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) changed = "Traction fix";

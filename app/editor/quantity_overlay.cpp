@@ -74,10 +74,9 @@ MeasureRequest measureRequest(const AppState& state) {
     if (source == QuantitySource::Difference && other >= 0) {
       view.otherDeformer = deformerOf(state, static_cast<std::size_t>(other));
       view.otherParams = state.viewParams(static_cast<std::size_t>(other));
-    } else if (source == QuantitySource::Field &&
-               readsParameter(views[v].method, kParamNu)) {  // T_i(nu): Somigliana, BEM
-      view.fieldVertex = vertex;
-      view.fieldFace = face;
+    } else if (source == QuantitySource::Field) {  // the fields its descriptor says it can show
+      if (views[v].method->fields & kFieldVertex) view.fieldVertex = vertex;
+      if (views[v].method->fields & kFieldFace) view.fieldFace = face;
     }
     r.views.push_back(std::move(view));
   }
@@ -162,6 +161,17 @@ ImU32 toImColor(const Eigen::Vector3f& c) {
 
 const ImU32 kText = IM_COL32(235, 235, 240, 255);
 const char* const kUndefinedNote = "grey: undefined (outside the cage)";
+
+// "views of Somigliana or BEM only": the methods whose descriptor lists element fields (MethodDescriptor::fields).
+std::string methodsShowingFields() {
+  std::vector<std::string> names;
+  for (Method m : allMethods())
+    if (m->fields) names.emplace_back(m->displayName);
+  std::string list;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    list += (k == 0 ? "" : k + 1 == names.size() ? " or " : ", ") + names[k];
+  return "views of " + list + " only";
+}
 
 int colorMapRow(const QuantityDescriptor& d) {
   return d.scale == ColorScale::LogDiverging ? render::kDivergingMap : render::kViridisMap;
@@ -258,7 +268,7 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
     case QuantitySource::Field: {
       int vertex = -1, face = -1;
       selectedElement(state, vertex, face);
-      if (!readsParameter(state.views()[v].method, kParamNu)) return "field: views of a method with nu only";
+      if (!state.views()[v].method->fields) return "field: " + methodsShowingFields();
       if (vertex < 0 && face < 0) return "field: select a cage vertex or face";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "field of cage %s %d at nu %.3g", vertex >= 0 ? "vertex" : "face",

@@ -74,14 +74,14 @@ CudaFrameEvaluator& CudaFrameEvaluator::operator=(CudaFrameEvaluator&& other) no
 
 void CudaFrameEvaluator::evaluate(const FrameWeights& W, Eigen::MatrixXd& out) {
   SOMICAGE_ASSERT(frame_ != nullptr, "evaluate() on a moved-from CudaFrameEvaluator");
-  SOMICAGE_ASSERT(W.outputs == dim_ || W.outputs == dim_ * dim_ + dim_, "a frame has d or d^2 + d outputs");
+  SOMICAGE_ASSERT(W.outputs == frameOutputs(W.finish, dim_), "a frame has the outputs of its finish");
   SOMICAGE_ASSERT(W.main.rows() == mainColumns_ && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == columns_ - mainColumns_ && W.tail.cols() == W.outputs, "W_tail shape");
   // The kernel reads the weights of one column of C contiguously.
   const RowMatrixXd mainWeights = W.main, tailWeights = W.tail;
   RowMatrixXd result(rows_, dim_);
   cuda_device::FrameLaunch launch{mainWeights.data(), tailWeights.data(), mainColumns_, W.mainOffset, W.outputs, dim_,
-                                  {0, 0, 0}};
+                                  {0, 0, 0}, W.finish};
   for (int a = 0; a < dim_ && a < W.origin.size(); ++a) launch.origin[a] = W.origin(a);
   cuda_device::evaluateFrame(frame_, launch, result.data());
   out = result;

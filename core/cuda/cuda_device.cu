@@ -35,7 +35,7 @@ __global__ void frameKernel(const Scalar* __restrict__ C, int rows, PortableFram
 #pragma unroll
   for (int o = 0; o < kPortableMaxOutputs; ++o)
     for (int offset = kWarp / 2; offset > 0; offset /= 2) y[o] += __shfl_down_sync(0xffffffffu, y[o], offset);
-  if (lane == 0) finishFramePoint<Dim>(y, W.outputs, W.origin, out + static_cast<size_t>(p) * Dim);
+  if (lane == 0) finishFramePoint<Dim>(y, W.finish, W.origin, out + static_cast<size_t>(p) * Dim);
 }
 
 __global__ void somiglianaRowsKernel(const PortableFace* __restrict__ faces, int numFaces, int numVertices,
@@ -145,7 +145,7 @@ void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out) {
   if (blocks > 0) {
     const PortableFrameWeights W{frame->weights, frame->weights + mainCount, frame->columns, launch.mainColumns,
                                  launch.mainOffset, launch.outputs,
-                                 {launch.origin[0], launch.origin[1], launch.origin[2]}};
+                                 {launch.origin[0], launch.origin[1], launch.origin[2]}, launch.finish};
     const auto* floats = static_cast<const float*>(frame->coordinates);
     const auto* doubles = static_cast<const double*>(frame->coordinates);
     if (frame->isFloat && launch.dim == 3)

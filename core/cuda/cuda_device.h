@@ -8,6 +8,7 @@
 #include <string>
 
 #include "cuda/somigliana_row_portable.h"
+#include "frame_finish.h"
 
 namespace somicage {
 
@@ -41,8 +42,9 @@ struct FrameLaunch {
   const double* tailWeights;
   int mainColumns, mainOffset, outputs, dim;
   double origin[3];  // FrameWeights::origin, zeros when it is empty
+  FrameFinish finish;
 };
-// out: rows by dim, row-major (frame_evaluation.h: y = C W, then o + T^-1 b when outputs = d^2 + d).
+// out: rows by dim, row-major (frame_evaluation.h: y = C W, then o + T^-1 b for FrameFinish::SolveT).
 void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out);
 
 // Rows of nu-independent terms for numPoints points (row-major numPoints by 3), written column-major:

@@ -212,7 +212,9 @@ const MethodDescriptor& bem() {
       validateBemParams,
       bemLayout,
       bemWorkingBytes,
-      precomputeBem};
+      precomputeBem,
+      FrameFinish::Linear,
+      kFieldVertex | kFieldFace};  // its layers are Somigliana's Kelvin kernels at its nu
   return descriptor;
 }
 

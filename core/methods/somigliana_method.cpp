@@ -198,7 +198,8 @@ class SomiglianaDeformer final : public CageDeformer {
     const Eigen::MatrixXd& rotation = affine ? bc.faceRotations.front() : bc.global.rotation;
 
     FrameWeights W;
-    W.outputs = d * d + d;
+    W.finish = methods::somigliana().finish;
+    W.outputs = frameOutputs(W.finish, d);
     // The global variant reads T(x) = R (sum_i T_i) R^T from the per-point sums in the tail; the local one takes
     // the D part of T (alpha D I, unchanged by rotations) from the sums too, and the rest from the vertex terms.
     W.mainOffset = global ? d * d : 0;
@@ -309,7 +310,9 @@ const MethodDescriptor& somigliana() {
       validateDeformParams,
       somiglianaLayout,
       somiglianaWorkingBytes,
-      precomputeSomigliana};
+      precomputeSomigliana,
+      FrameFinish::SolveT,
+      kFieldVertex | kFieldFace};
   return descriptor;
 }
 

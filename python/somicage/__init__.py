@@ -6,8 +6,8 @@
 """
 from ._somicage import (Cage, Cancelled, Deformer, InputError, SomiCageWarning, __version__, check, choice_info,
                         cpu_kernels, load_mesh, load_posed, load_session, method_info, methods, parameter_ranges,
-                        save_obj)
+                        parameter_schema, save_obj)
 
 __all__ = ["Cage", "Cancelled", "Deformer", "InputError", "SomiCageWarning", "__version__", "check", "choice_info",
            "cpu_kernels", "load_mesh", "load_posed", "load_session", "method_info", "methods", "parameter_ranges",
-           "save_obj"]
+           "parameter_schema", "save_obj"]

@@ -92,6 +92,9 @@ def method_info() -> list[dict[str, Union[str, list[str]]]]:
     """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
 def parameter_ranges() -> dict[str, tuple[float, float]]:
     """{keyword: (min, max)} for nu (open interval, or +-inf), gamma, blend, threads: the engine's one list."""
+def parameter_schema() -> list[dict[str, object]]:
+    """The engine's parameter table, one dict per parameter: key, type, keyword, session_key, view_key, cli_flag,
+    label, tooltip, range, open_range, infinities, default, values, methods."""
 def load_mesh(path: Path, *, weld: bool = False) -> tuple[npt.NDArray[np.float64], list[list[int]]]: ...
 def save_obj(path: Path, vertices: ArrayLike, faces: Sequence[Sequence[int]] = ...) -> None:
     """The path must end in .obj (InputError otherwise, nothing written)."""

@@ -150,7 +150,7 @@ TEST(CliAnalyze, JsonNamesTheChosenOptions) {
     EXPECT_NE(r.out.find(field), std::string::npos) << field << "\n" << r.out;
   const RunResult bad = runSomicage(analyzeArgs(dataFile("cube_cage.obj"), {"--bulging", "solid_angle"}));
   EXPECT_EQ(bad.exitCode, 2) << bad;
-  EXPECT_NE(bad.err.find("--bulging: bulging 'solid_angle' is not a choice (use solid-angle, reference, swept-volume or polygon"),
+  EXPECT_NE(bad.err.find("--bulging: 'solid_angle' is not a choice (use solid-angle, reference, swept-volume or polygon"),
             std::string::npos)
       << bad;
 }

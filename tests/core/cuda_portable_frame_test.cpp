@@ -23,14 +23,14 @@ template <typename Scalar, int Dim>
 Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame, const FrameWeights& W) {
   const RowMatrixXd main = W.main, tail = W.tail;
   PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns, W.mainOffset,
-                               W.outputs,   {0, 0, 0}};
+                               W.outputs,   {0, 0, 0},          W.finish};
   for (int a = 0; a < Dim && a < W.origin.size(); ++a) weights.origin[a] = W.origin(a);
   Eigen::MatrixXd out(C.rows(), Dim);
   for (int p = 0; p < C.rows(); ++p) {
     double y[kPortableMaxOutputs] = {0};
     for (int lane = 0; lane < kLanes; ++lane) addFramePartialSums(C.row(p).data(), weights, lane, kLanes, y);
     double point[Dim];
-    finishFramePoint<Dim>(y, W.outputs, weights.origin, point);
+    finishFramePoint<Dim>(y, W.finish, weights.origin, point);
     for (int a = 0; a < Dim; ++a) out(p, a) = point[a];
   }
   blendExteriorPoints(frame.exteriorBlends, out);

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "deformer.h"
-#include "methods/method_descriptors.h"
 
 namespace somicage::test {
 
@@ -39,18 +38,22 @@ inline void expectFramesMatchCpu(
   const double diameter = cageDiameter(cage.vertices);
   const Eigen::MatrixXd posed = bentCage(cage);
   const VariantKind paper = VariantKind::Blend;
-  // The affine variant reads the tail's 18 affine terms (W.tail rows the other variants leave 0); the stable one
-  // adds a global-frame traction to every face row (issue 26).
-  for (const Case& c : std::vector<Case>{{methods::somigliana(), true, 0.0, paper},
-                                         {methods::somigliana(), true, 1.0, paper},
-                                         {methods::somigliana(), true, 0.4, paper},
-                                         {methods::somigliana(), false, 0.0, paper},
-                                         {methods::somigliana(), false, 0.5, paper},
-                                         {methods::somigliana(), true, 0.0, VariantKind::Affine},
-                                         {methods::somigliana(), false, 0.0, VariantKind::Affine},
-                                         {methods::somigliana(), false, 1.0, VariantKind::Stable},
-                                         {methods::green(), true, 0.0, paper},
-                                         {methods::mvc(), false, 0.0, paper}}) {
+  // Every method of the registry in float and double; the methods with variants (those that read the blend) at
+  // global, local and blended rotations, and the affine variant, which reads the tail's 18 affine terms (W.tail rows
+  // the other variants leave 0), and the stable one, which adds a global-frame traction to every face row (issue 26).
+  std::vector<Case> cases;
+  for (Method m : allMethods()) {
+    cases.push_back({m, true, 0.0, paper});
+    cases.push_back({m, false, 0.0, paper});
+    if (readsParameter(m, kParamBlend))
+      cases.insert(cases.end(), {{m, true, 1.0, paper},
+                                 {m, true, 0.4, paper},
+                                 {m, false, 0.5, paper},
+                                 {m, true, 0.0, VariantKind::Affine},
+                                 {m, false, 0.0, VariantKind::Affine},
+                                 {m, false, 1.0, VariantKind::Stable}});
+  }
+  for (const Case& c : cases) {
     PrecomputeOptions options;
     options.floatStorage = c.floatStorage;
     const auto deformer = makeDeformer(c.method, cage, points, options);

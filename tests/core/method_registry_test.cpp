@@ -81,6 +81,12 @@ TEST(MethodRegistry, EachLayoutIsTheShapeOfTheStoredCoordinates) {
         for (int k = 0; k < layout.faceTerms; ++k) ++hits[layout.faceColumn(j, k)];
       for (int k = 0; k < layout.tailColumns; ++k) ++hits[layout.tailColumn(k)];
       EXPECT_EQ(std::count(hits.begin(), hits.end(), 1), layout.columns());
+      // The frame finishes as the descriptor states (frame_finish.h), and every method reproduces the rest pose:
+      // the identity is in the span of each method's coordinates (x = sum of the rest vertices' weights).
+      const FrameWeights W = deformer->frameWeights(cage.vertices, DeformParams{});
+      EXPECT_EQ(W.finish, method->finish);
+      EXPECT_EQ(W.outputs, frameOutputs(method->finish, cage.dim()));
+      EXPECT_LE((deformer->deform(cage.vertices, DeformParams{}) - points).cwiseAbs().maxCoeff(), 1e-8);
     }
   }
 }

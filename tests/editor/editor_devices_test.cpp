@@ -114,7 +114,7 @@ TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
 
   // Compare views, two of one method at their own nu: one evaluator per deformer, one frame per view.
   std::vector<ViewSpec> compared = viewsOf({methods::somigliana(), methods::somigliana(), methods::green()});
-  compared[1].nu = 0.45;
+  compared[1].own["nu"] = 0.45;
   setCompareViews(state, compared);  // (turns compare on)
   installNextOutcome(state);
   ASSERT_TRUE(updateDeformation(state));

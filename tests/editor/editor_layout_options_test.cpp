@@ -42,9 +42,13 @@ TEST(EditorOptions, FilesAndParameters) {
   EXPECT_EQ(o.cagePath, "c.obj");
   EXPECT_EQ(o.posedPath, "p.obj");
   EXPECT_EQ(*o.method, methods::green());
-  EXPECT_TRUE(std::isinf(*o.nu));
-  EXPECT_EQ(*o.gamma, 1.5);
-  EXPECT_EQ(*o.blend, 1.0);
+  EXPECT_TRUE(std::isinf(o.parameters.at("nu")));
+  EXPECT_EQ(o.parameters.at("gamma"), 1.5);
+  // --local, the spelling kept from before the parameter table: the variant local, whose blend is 1.
+  DeformParams p;
+  setParameter(*findParameter("variant"), p, o.parameters.at("variant"));
+  EXPECT_EQ(p.blend, 1.0);
+  EXPECT_EQ(variantName(p), "local");
   EXPECT_EQ(o.views.size(), 3u);
   EXPECT_EQ(o.screenshotPath, "out.png");
   EXPECT_EQ(o.width, 800);

@@ -27,12 +27,14 @@ using namespace somicage::editor;
 
 namespace {
 
-ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), nu, {}, {}, {}, {}, {}}; }
+ViewSpec somiglianaAt(double nu) { return ViewSpec{methods::somigliana(), {{"nu", nu}}, {}}; }
+// A choice's value as a view holds it (parameter_schema.h): its index among the row's names.
+double choiceValue(const char* key, const char* name) { return parseParameter(*findParameter(key), name, "test"); }
 
 // The 3D demo with views: Somigliana at nu 0, Somigliana at nu 0.45, Somigliana with the panel's nu; bent.
 void loadTwoNu(AppState& state) {
   state.compare = true;
-  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}, {}, {}, {}, {}}};
+  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}}};
   state.params.nu = 0.2;
   openDemoScene(state, 3);
   ASSERT_EQ(state.deformers.size(), 1u);  // one precompute: nu never re-integrates
@@ -97,7 +99,8 @@ TEST(EditorViews, TwoViewsOfOneMethodDeformAtTheirOwnNuAndTheOthersFollowThePane
 }
 
 TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
-  ViewSpec view{methods::somigliana(), {}, 1.5, Variant::Local, false, {}, {}};
+  ViewSpec view{
+      methods::somigliana(), {{"gamma", 1.5}, {"variant", choiceValue("variant", "local")}, {"traction-fix", 0}}, {}};
   DeformParams shared;
   shared.nu = 0.3;
   shared.blend = 0.25;
@@ -108,7 +111,8 @@ TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
   EXPECT_FALSE(p.tractionCorrection);
   EXPECT_EQ(p.bulging, Bulging::SolidAngle);  // the panel's, as the view has none of its own
   // The named choices (bulging, normals) are a view's own as the numbers are.
-  view.choices = {{"bulging", static_cast<int>(Bulging::SweptVolume)}, {"normals", static_cast<int>(NormalWeights::Angle)}};
+  view.own["bulging"] = choiceValue("bulging", "swept-volume");
+  view.own["normals"] = choiceValue("normals", "angle");
   const DeformParams q = view.params(shared);
   EXPECT_EQ(q.bulging, Bulging::SweptVolume);
   EXPECT_EQ(q.normals, NormalWeights::Angle);
@@ -125,8 +129,8 @@ TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
 TEST(EditorViews, TwoViewsOfOneMethodDeformWithTheirOwnBulgingAndNormals) {
   AppState state;
   state.compare = true;
-  state.compareViews = parseEditorArgs({"--view", "somigliana", "--view",
-                                        "somigliana:bulging=reference:normals=angle"}).views;
+  state.compareViews =
+      parseEditorArgs({"--view", "somigliana", "--view", "somigliana:bulging=reference:normals=angle"}).views;
   state.params.gamma = 2.0;
   openDemoScene(state, 3);
   Eigen::MatrixXd pose = state.pose;
@@ -246,16 +250,23 @@ TEST(EditorViews, ViewOptionGivesEachViewItsOwnParameters) {
                                            "somigliana:nu=0.45:gamma=2:variant=local:traction=off", "--view", "mvc"});
   ASSERT_EQ(o.views.size(), 3u);
   EXPECT_TRUE(o.views[0] == somiglianaAt(0.0));
-  EXPECT_TRUE(o.views[1] == (ViewSpec{methods::somigliana(), 0.45, 2.0, Variant::Local, false, {}, {}}));
-  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}, {}}));
-  EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:normals=angle:bulging=swept-volume", "--view", "green"}).views[0] ==
-              (ViewSpec{methods::somigliana(), {}, {}, {}, {}, {{"bulging", 2}, {"normals", 1}}, {}}));
+  EXPECT_TRUE(
+      o.views[1] ==
+      (ViewSpec{methods::somigliana(),
+                {{"nu", 0.45}, {"gamma", 2.0}, {"variant", choiceValue("variant", "local")}, {"traction-fix", 0}},
+                {}}));
+  EXPECT_TRUE(o.views[2] == (ViewSpec{methods::mvc(), {}, {}}));
+  EXPECT_TRUE(
+      parseEditorArgs({"--view", "somigliana:normals=angle:bulging=swept-volume", "--view", "green"}).views[0] ==
+      (ViewSpec{methods::somigliana(),
+                {{"bulging", choiceValue("bulging", "swept-volume")}, {"normals", choiceValue("normals", "angle")}},
+                {}}));
   EXPECT_TRUE(parseEditorArgs({"--view", "somigliana:nu=-inf", "--view", "green"}).views[0] ==
               somiglianaAt(-std::numeric_limits<double>::infinity()));
   // A method's own options (method.h): views of Phong with their own tetrahedral mesh level.
   const EditorOptions t = parseEditorArgs({"--view", "phong:tet-level=2:nu=0.3", "--view", "phong"});
   EXPECT_EQ(t.views[0].options, (MethodOptions{{"tet-level", "2"}}));
-  EXPECT_EQ(t.views[0].nu, 0.3);
+  EXPECT_EQ(t.views[0].value("nu"), 0.3);
   EXPECT_TRUE(t.views[1].options.empty());
   // --compare is the list of views without their own values.
   const EditorOptions c = parseEditorArgs({"--compare", "somigliana,green"});
@@ -267,19 +278,21 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
       {{"--view", "somigliana:nu=0.7", "--view", "green"}, "out of range"},
       {{"--view", "somigliana:nu=abc", "--view", "green"}, "'abc' is not a number"},
       {{"--view", "somigliana:gamma=-1", "--view", "green"}, "gamma"},
-      {{"--view", "somigliana:variant=middle", "--view", "green"}, "variant must be global, local, affine or stable"},
-      {{"--view", "somigliana:traction=yes", "--view", "green"}, "traction must be on or off"},
+      {{"--view", "somigliana:variant=middle", "--view", "green"},
+       "variant: 'middle' is not a choice (use global, local, affine or stable"},
+      {{"--view", "somigliana:traction=yes", "--view", "green"}, "traction: 'yes' is not on or off"},
       {{"--view", "somigliana:nu", "--view", "green"}, "expected KEY=VALUE"},
       {{"--view", "somigliana:nu=0:nu=0.1", "--view", "green"}, "'nu' given twice"},
       {{"--view", "somigliana:color=red", "--view", "green"},
-       "unknown key 'color' in 'somigliana:color=red' (expected nu, gamma, variant, traction, bulging, normals)"},
+       "unknown key 'color' in 'somigliana:color=red' (expected variant, blend, nu, gamma, traction, corotational, "
+       "bulging, normals)"},
       {{"--view", "somigliana:bulging=squared", "--view", "green"},
-       "bulging must be solid-angle, reference, swept-volume or polygon, got 'squared'"},
+       "bulging: 'squared' is not a choice (use solid-angle, reference, swept-volume or polygon"},
       {{"--view", "somigliana:normals=angle:normals=area", "--view", "green"}, "'normals' given twice"},
       {{"--view", "green:normals=angle", "--view", "somigliana"}, "green does not read normals"},
       {{"--view", "somigliana:tet-level=2", "--view", "green"}, "unknown key 'tet-level'"},
       {{"--view", "phong:level=2", "--view", "green"},
-       "(expected nu, gamma, variant, traction, bulging, normals, or tets, tet-level)"},
+       "(expected variant, blend, nu, gamma, traction, corotational, bulging, normals, or tets, tet-level)"},
       {{"--view", "phong:tet-level=1:tet-level=2", "--view", "green"}, "'tet-level' given twice"},
       // The level is checked as the option is read, not at the precompute that makes the tetrahedra.
       {{"--view", "phong:tet-level=7", "--view", "green"},
@@ -302,11 +315,16 @@ TEST(EditorViews, BadViewOptionsNameWhatIsWrong) {
 TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   Session a;
   a.compare = true;
-  a.compareViews = {
-      somiglianaAt(1.0 / 3.0),
-      ViewSpec{methods::somigliana(), -std::numeric_limits<double>::infinity(), 0.1 + 0.2, Variant::Global, true,
-               {{"bulging", 1}, {"normals", 1}}, {}},
-      ViewSpec{methods::phong(), {}, {}, {}, {}, {}, {{"tet-level", "2"}, {"tets", "a \"b\".mesh"}}}};
+  a.compareViews = {somiglianaAt(1.0 / 3.0),
+                    ViewSpec{methods::somigliana(),
+                             {{"nu", -std::numeric_limits<double>::infinity()},
+                              {"gamma", 0.1 + 0.2},
+                              {"variant", choiceValue("variant", "global")},
+                              {"traction-fix", 1},
+                              {"bulging", choiceValue("bulging", "reference")},
+                              {"normals", choiceValue("normals", "angle")}},
+                             {}},
+                    ViewSpec{methods::phong(), {}, {{"tet-level", "2"}, {"tets", "a \"b\".mesh"}}}};
   const Session b = sessionFromJson(sessionToJson(a), "s.json");
   ASSERT_EQ(b.compareViews.size(), 3u);
   for (std::size_t v = 0; v < 3; ++v) EXPECT_TRUE(b.compareViews[v] == a.compareViews[v]) << "view " << v;
@@ -332,8 +350,10 @@ TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
   const std::vector<std::pair<std::string, std::string>> cases{
       {"{\"method\": \"green\", \"nu\": 0.3}", "\"views\" entry 1: green does not read nu"},
       {"{\"method\": \"somigliana\", \"nu\": 2}", "\"views\" entry 1: somigliana nu: Poisson ratio"},
-      {"{\"method\": \"somigliana\", \"nu\": \"x\"}", "\"views\" entry 1: field \"nu\" must be a number"},
-      {"{\"method\": \"somigliana\", \"variant\": \"mid\"}", "\"views\" entry 1: field \"variant\" must be"},
+      {"{\"method\": \"somigliana\", \"nu\": \"x\"}",
+       "\"views\" entry 1: \"nu\" must be a value in (-1, 0.5), or inf / -inf"},
+      {"{\"method\": \"somigliana\", \"variant\": \"mid\"}",
+       "\"views\" entry 1: \"variant\" must be global, local, affine or stable"},
       {"{\"method\": \"somigliana\", \"colour\": 1}", "\"views\" entry 1 has an unknown field \"colour\""},
       {"{\"method\": \"somigliana\", \"bulging\": \"squared\"}",
        "\"views\" entry 1: \"bulging\" must be solid-angle, reference, swept-volume or polygon"},
@@ -373,12 +393,12 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   state.compare = true;
   setCompareViews(state, {somiglianaAt(0.0)});  // one: refused
   EXPECT_TRUE(state.compareViews == viewsOf(defaultCompareMethods()));
-  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}, {}, {}, {}, {}}});
+  setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}}});
   ASSERT_EQ(state.views().size(), 3u);
   state.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
   removeCompareView(state, 1);
   ASSERT_EQ(state.views().size(), 2u);
-  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}, {}, {}, {}, {}}));
+  EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}}));
   EXPECT_EQ(state.quantities.show.view(1).quantity, quantityIndex("detj", "test"));  // its Show choice moved with it
   removeCompareView(state, 0);                                                       // two stay
   EXPECT_EQ(state.views().size(), 2u);
@@ -396,7 +416,7 @@ TEST(EditorViews, TheSingleViewTakesTheMethodsOwnOptionsFromThePanelAndSessions)
   EXPECT_EQ(state.deformers.begin()->second->volumeMesh()->numVertices(), cageVertices + 1) << "the star";
   setMethodOptions(state, {{"tet-level", "1"}});
   installNextOutcome(state);
-  ViewSpec level1{methods::phong(), {}, {}, {}, {}, {}, {{"tet-level", "1"}}};
+  ViewSpec level1{methods::phong(), {}, {{"tet-level", "1"}}};
   EXPECT_TRUE(state.views() == std::vector<ViewSpec>{level1});
   ASSERT_TRUE(hasDeformer(state, deformerKey(level1)));
   EXPECT_GT(state.deformers.at(deformerKey(level1))->volumeMesh()->numVertices(), cageVertices + 1) << "CGAL's";
@@ -419,10 +439,10 @@ TEST(EditorViews, TheSingleViewTakesTheMethodsOwnOptionsFromThePanelAndSessions)
 // options share one.
 TEST(EditorViews, ViewsWithTheirOwnMethodOptionsHaveTheirOwnDeformers) {
   AppState state;
-  ViewSpec star{methods::phong(), {}, {}, {}, {}, {}, {}}, level1 = star, level1AtNu = star;
+  ViewSpec star{methods::phong(), {}, {}}, level1 = star, level1AtNu = star;
   level1.options["tet-level"] = "1";
   level1AtNu.options["tet-level"] = "1";
-  level1AtNu.nu = 0.3;
+  level1AtNu.own["nu"] = 0.3;
   state.compare = true;
   state.compareViews = {star, level1, level1AtNu};
   openDemoScene(state, 3);

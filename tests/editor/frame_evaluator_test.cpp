@@ -33,7 +33,7 @@ Eigen::MatrixXd independentFrame(const FrameCoordinates& C, const FrameWeights& 
         if (k >= C.mainColumns) y(j) += c * W.tail(k - C.mainColumns, j);
       }
     }
-    if (W.outputs == d) {
+    if (W.finish == FrameFinish::Linear) {
       out.row(p) = y.transpose();
       continue;
     }
@@ -87,10 +87,21 @@ TEST_P(FrameEvaluatorTest, CpuAndOpenGlMatchAnIndependentFrameSum) {
   EXPECT_LE((gpu - cpu).rowwise().norm().maxCoeff(), 1e-5 * diameter);
 }
 
-INSTANTIATE_TEST_SUITE_P(Methods, FrameEvaluatorTest,
-                         ::testing::Values(Case{"somigliana_local", methods::somigliana(), {1.0, 0.3, 1.0, true}},
-                                           Case{"somigliana_global", methods::somigliana(), {0.0, 0.2, 0.5, true}},
-                                           Case{"mvc", methods::mvc(), {}}),
+// Every method of the registry; those with variants (that read the blend) at the global and local one.
+std::vector<Case> registryCases() {
+  std::vector<Case> cases;
+  for (Method m : allMethods()) {
+    if (!readsParameter(m, kParamBlend)) {
+      cases.push_back({m->name, m, {}});
+      continue;
+    }
+    cases.push_back({methodName(m) + "_local", m, {1.0, 0.3, 1.0, true}});
+    cases.push_back({methodName(m) + "_global", m, {0.0, 0.2, 0.5, true}});
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Methods, FrameEvaluatorTest, ::testing::ValuesIn(registryCases()),
                          [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 TEST(FrameDevices, FindsByName) {

@@ -11,7 +11,8 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -eq 0 ] && targets=(fuzz_obj_loader fuzz_session_loader fuzz_precompute_deform)
 
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON \
+gen=(); [ -f build-fuzz/CMakeCache.txt ] || gen=(-GNinja)  # as tests/run_all.sh: Ninja keeps both cores busy
+CC=clang CXX=clang++ cmake "${gen[@]}" -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSOMICAGE_WERROR=ON \
   -DSOMICAGE_FUZZ=ON -DSOMICAGE_BUILD_EDITOR=OFF -DSOMICAGE_BUILD_TESTS=OFF >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target "${targets[@]}"
 

@@ -44,7 +44,10 @@ def test_load_session_reads_every_part(session):
     assert s["mesh"] == str(session.parent / "pyramid.obj"), "resolved next to the session"
     assert s["method"] == "bem" and s["cage_path"] == "" and s["tets"] == ""
     np.testing.assert_array_equal(s["cage"].vertices, vertices)
-    assert s["params"] == dict(nu=0.3, gamma=0.0, blend=0.0, traction_fix=True, corotational=True)
+    # Every keyword of Deformer.deform (the parameter table's rows): variant, bulging and normals were missing, so a
+    # session of the affine variant or another bulging deformed as the default one.
+    assert s["params"] == dict(variant="global", blend=0.0, nu=0.3, gamma=0.0, traction_fix=True, corotational=True,
+                               bulging="solid-angle", normals="area")
     assert s["pose"] is None and sorted(s["poses"]) == ["rest", "twist"]
     assert s["timeline"]["keys"][1] == dict(frame=4.0, pose="twist", nu=0.4, gamma=None)
     # Linear keys: frame 2 is the mean pose and the mean nu, computed here independently of the engine.

@@ -1,0 +1,101 @@
+// Issue 23: the editor's front ends read the parameter table (core/parameter_schema.h) and the method registry at
+// run time. A row and a method registered from test code (core/constant_method.h) are on the editor's command line
+// and in its help, in --view specs, view labels and sessions, and in the measurement key; the spellings kept from
+// before (--local, --traction-fix off, a session's "tractionCorrection") still read as they did.
+#include <gtest/gtest.h>
+
+#include "app_state.h"
+#include "core/constant_method.h"
+#include "editor_options.h"
+#include "errors.h"
+#include "json.h"
+#include "measure_worker.h"
+#include "methods/method_descriptors.h"
+#include "session.h"
+
+namespace somicage::editor {
+namespace {
+
+using test::ConstantMethodRegistration;
+
+TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEnd) {
+  const ConstantMethodRegistration registration;
+  // Command line and help.
+  const EditorOptions o = parseEditorArgs({"--method", "constant", "--test-shift", "0.25"});
+  EXPECT_EQ(*o.method, test::constantMethod());
+  EXPECT_EQ(o.parameters.at("test-shift"), 0.25);
+  EXPECT_THROW(parseEditorArgs({"--test-shift", "3"}), InputError);  // the row's range [-1, 1]
+  EXPECT_NE(editorUsage().find("--test-shift V"), std::string::npos) << editorUsage();
+  EXPECT_NE(editorUsage().find("constant"), std::string::npos) << editorUsage();
+
+  // --view: the method and its parameter; a method that does not read it is refused.
+  const ViewSpec view = parseViewSpec("constant:test-shift=-0.5", "--view");
+  EXPECT_EQ(view.method, test::constantMethod());
+  EXPECT_EQ(view.value("test-shift"), -0.5);
+  EXPECT_EQ(view.params(DeformParams{}).extra.at("test-shift"), -0.5);
+  try {
+    parseViewSpec("somigliana:test-shift=0.5", "--view");
+    FAIL() << "somigliana does not read test-shift";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("somigliana does not read test-shift"), std::string::npos) << e.what();
+  }
+
+  // The pane's label shows the view's own value.
+  AppState state;
+  state.compare = true;
+  state.compareViews = {view, ViewSpec{methods::somigliana(), {}, {}}};
+  EXPECT_NE(viewLabel(state, 0).find("Constant  test-shift=-0.50 (own)"), std::string::npos) << viewLabel(state, 0);
+
+  // Sessions: the shared value under the row's session key, and the view's own, read back exactly.
+  Session s;
+  s.method = test::constantMethod();
+  s.params.extra["test-shift"] = 0.125;
+  s.compare = true;
+  s.compareViews = state.compareViews;
+  const std::string text = sessionToJson(s);
+  EXPECT_NE(text.find("\"testShift\": 0.125"), std::string::npos) << text;
+  const Session back = sessionFromJson(text, "s.json");
+  EXPECT_EQ(back.method, test::constantMethod());
+  EXPECT_TRUE(back.params == s.params);
+  ASSERT_EQ(back.compareViews.size(), 2u);
+  EXPECT_TRUE(back.compareViews[0] == view);
+
+  // The measurement key sees the new parameter: a changed value makes the measurements stale.
+  MeasureRequest a, b;
+  a.views.resize(1);
+  b.views = a.views;
+  b.views[0].params.extra["test-shift"] = 0.5;
+  EXPECT_TRUE(measureKey(a) != measureKey(b));
+}
+
+// The measurement key held blend, nu, gamma, the two switches and the two choices but not the variant's kind, so
+// switching global (blend 0) to affine (blend 0) kept the global variant's measurements.
+TEST(EditorParameterSchema, TheMeasurementKeyTellsVariantsOfEqualBlendApart) {
+  MeasureRequest global, affine;
+  global.views.resize(1);
+  affine.views = global.views;
+  setVariant(affine.views[0].params, "affine", "test");
+  ASSERT_EQ(affine.views[0].params.blend, global.views[0].params.blend);
+  EXPECT_TRUE(measureKey(global) != measureKey(affine));
+}
+
+TEST(EditorParameterSchema, SpellingsFromBeforeTheTableStillRead) {
+  const auto applied = [](const EditorOptions& o) {
+    DeformParams p;
+    for (const ParameterSpec& spec : parameterSchema())
+      if (o.parameters.count(spec.key)) setParameter(spec, p, o.parameters.at(spec.key));
+    return p;
+  };
+  EXPECT_EQ(variantName(applied(parseEditorArgs({"--local"}))), "local");
+  EXPECT_EQ(variantName(applied(parseEditorArgs({"--variant", "stable", "--global"}))), "global");
+  EXPECT_FALSE(applied(parseEditorArgs({"--traction-fix", "off"})).tractionCorrection);
+  EXPECT_FALSE(applied(parseEditorArgs({"--no-traction-fix"})).tractionCorrection);
+  EXPECT_TRUE(applied(parseEditorArgs({"--corotational"})).corotational);  // the editor lacked it before the table
+  // --blend after --local: the variant's kind stays the paper's, at that blend.
+  const DeformParams blended = applied(parseEditorArgs({"--local", "--blend", "0.25"}));
+  EXPECT_EQ(blended.blend, 0.25);
+  EXPECT_EQ(variantName(blended), "blend");
+}
+
+}  // namespace
+}  // namespace somicage::editor
