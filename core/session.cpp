@@ -4,6 +4,8 @@
 #include <cmath>
 #include <filesystem>
 #include <limits>
+#include <string>
+#include <string_view>
 
 #include "errors.h"
 #include "file_util.h"
@@ -315,14 +317,37 @@ Session sessionFromJson(const std::string& text, const std::string& source) {
 
 void saveSession(const std::string& path, const Session& session) { writeFileAtomic(path, sessionToJson(session)); }
 
-Session loadSession(const std::string& path) { return sessionFromJson(readTextFile(path), path); }
+namespace {
 
+// A file the session at sessionPath names: a relative name is looked up next to the session first, then as given
+// (the editor saves names as it opened them, relative to its working folder).
 std::string resolveSessionPath(const std::string& sessionPath, const std::string& name) {
   const std::filesystem::path file(name);
   if (name.empty() || file.is_absolute()) return name;
   const std::filesystem::path beside = std::filesystem::path(sessionPath).parent_path() / file;
   std::error_code error;
   return std::filesystem::exists(beside, error) ? beside.string() : name;
+}
+
+// The method's options whose value is a file name (MethodOptionSpec::value "FILE", e.g. Phong's "tets").
+void resolveFileOptions(const std::string& sessionPath, Method method, MethodOptions& options) {
+  for (const MethodOptionSpec& spec : method->options) {
+    const auto option = options.find(spec.key);
+    if (option != options.end() && std::string_view(spec.value) == "FILE")
+      option->second = resolveSessionPath(sessionPath, option->second);
+  }
+}
+
+}  // namespace
+
+// The session's files are resolved here, once, so that the editor, `animate` and Python open the same ones.
+Session loadSession(const std::string& path) {
+  Session session = sessionFromJson(readTextFile(path), path);
+  session.meshPath = resolveSessionPath(path, session.meshPath);
+  session.cagePath = resolveSessionPath(path, session.cagePath);
+  resolveFileOptions(path, session.method, session.methodOptions);
+  for (ViewSpec& view : session.compareViews) resolveFileOptions(path, view.method, view.options);
+  return session;
 }
 
 }  // namespace somicage

@@ -31,7 +31,7 @@ struct Session {
   Eigen::MatrixXd pose;  // #V by d posed cage vertices; empty = the rest pose
   Method method;         // the registry's first (method.h)
   // The method's own precompute options (MethodDescriptor::options), e.g. Phong's {"tets": "T.mesh", "tet-level":
-  // "2"}; a relative "tets" file is looked up like the mesh (resolveSessionPath).
+  // "2"}; a relative "tets" file is looked up like the mesh (loadSession).
   MethodOptions methodOptions;
   DeformParams params;
   bool compare = false;
@@ -59,10 +59,9 @@ std::string sessionToJson(const Session& session);
 Session sessionFromJson(const std::string& text, const std::string& source);
 
 void saveSession(const std::string& path, const Session& session);  // atomic
+// The files it names (mesh, cage, a method's FILE options such as Phong's "tets", the views' too) come back
+// resolved: a relative name is looked up next to the session first, then as given (the editor saves names as it
+// opened them, relative to its working folder).
 Session loadSession(const std::string& path);
-
-// A file the session at sessionPath names: a relative name is looked up next to the session first, then as given
-// (the editor saves names as it opened them, relative to its working folder).
-std::string resolveSessionPath(const std::string& sessionPath, const std::string& name);
 
 }  // namespace somicage

@@ -62,8 +62,8 @@ py::dict timelineDict(const Timeline& timeline) {
 
 py::dict loadSessionForPython(const std::string& path) {
   const Session session = loadSession(path);
-  const std::string meshPath = resolveSessionPath(path, session.meshPath);
-  const std::string cagePath = resolveSessionPath(path, session.cagePath);
+  const std::string& meshPath = session.meshPath;  // resolved next to the session by loadSession
+  const std::string& cagePath = session.cagePath;
   py::object cage = py::none();  // a demo, or an old session of a mesh opened alone (the editor generates its cage)
   if (session.restCage.numVertices() > 0) {
     cage = py::cast(makeUsableCage(session.restCage, path + " (restCage)"));
@@ -90,7 +90,7 @@ py::dict loadSessionForPython(const std::string& path) {
   out["cage"] = cage;
   out["method"] = methodName(session.method);
   const auto tets = session.methodOptions.find("tets");  // Deformer's tets=, next to the session as animate finds it
-  out["tets"] = tets == session.methodOptions.end() ? std::string() : resolveSessionPath(path, tets->second);
+  out["tets"] = tets == session.methodOptions.end() ? std::string() : tets->second;
   out["params"] = deformKeywords(session.params);
   out["pose"] = session.pose.size() > 0 ? py::cast(session.pose) : py::object(py::none());
   out["poses"] = poses;

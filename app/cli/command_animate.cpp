@@ -95,12 +95,12 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const double fps = args.number("--fps", session.timeline.fps);
   if (!(fps > 0 && fps <= 1000)) throw InputError("--fps", -1, "must be in (0, 1000]", "write e.g. --fps 24");
 
-  const std::string meshPath = resolveSessionPath(sessionPath, session.meshPath);
+  const std::string& meshPath = session.meshPath;
   const MeshDocument document = loadMeshDocument(meshPath);
   // The rest cage the editor shows: the session's inline cage, else its cage file, else (a version 1-2 session of a
   // mesh opened alone) the cage the editor generates for the mesh, with `somicage cage`'s defaults.
   const NoticeSink notices = log.sink();
-  std::string cageSource = resolveSessionPath(sessionPath, session.cagePath);
+  std::string cageSource = session.cagePath;
   Cage cage;
   if (session.restCage.numVertices() > 0) {
     cageSource = sessionPath + " (restCage)";
@@ -117,8 +117,6 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const Eigen::MatrixXd points = meshPointsFor(cage, document.geometry.vertices, meshPath, cageSource, notices);
   PrecomputeOptions options = precomputeOptions(threads);
   options.methodOptions = session.methodOptions;  // the session's, then the command line's (--tets) over them
-  if (const auto tets = options.methodOptions.find("tets"); tets != options.methodOptions.end())
-    tets->second = resolveSessionPath(sessionPath, tets->second);
   applyMethodOptions(args, session.method, cage, options, notices);
   // An OBJ sequence carries the mesh's normals by the deformation's gradient (normal_transform.h); GLB has none.
   const bool normalsByGradient =

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 #include "core/test_shapes.h"
@@ -287,4 +289,36 @@ TEST(EditorSession, MethodOptionsRoundTripAndUnknownOnesAreRefused) {
   EXPECT_NE(rejection(replaced(text, "\"2\"", "2")).find("\"tet-level\" must be a text"), std::string::npos);
   a.method = methods::green();  // green has no options of its own
   EXPECT_NE(rejection(sessionToJson(a)).find("which green does not have (it has none)"), std::string::npos);
+}
+
+// loadSession resolves the files a session names next to the session (then as given), for every front end alike:
+// the mesh, the cage, and FILE options such as Phong's "tets", the views' included; other options stay text.
+TEST(EditorSession, FilesAreResolvedNextToTheSession) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(::testing::TempDir()) / "somicage_session_beside";
+  fs::create_directories(dir);
+  for (const char* name : {"mesh.obj", "cage.obj", "cube.mesh", "fine.mesh"}) std::ofstream(dir / name) << "\n";
+  Session s = sample();
+  s.meshPath = "mesh.obj";
+  s.cagePath = "cage.obj";
+  s.method = methods::phong();
+  s.params.nu = 0.3;
+  s.methodOptions = {{"tets", "cube.mesh"}, {"tet-level", "2"}};
+  s.compareViews = viewsOf({methods::phong(), methods::somigliana()});
+  s.compareViews[0].options = {{"tets", "fine.mesh"}};
+  const fs::path path = dir / "s.json";
+  saveSession(path.string(), s);
+
+  const Session loaded = loadSession(path.string());
+  EXPECT_EQ(loaded.meshPath, (dir / "mesh.obj").string());
+  EXPECT_EQ(loaded.cagePath, (dir / "cage.obj").string());
+  EXPECT_EQ(loaded.methodOptions.at("tets"), (dir / "cube.mesh").string());
+  EXPECT_EQ(loaded.methodOptions.at("tet-level"), "2") << "not a file: kept as written";
+  EXPECT_EQ(loaded.compareViews[0].options.at("tets"), (dir / "fine.mesh").string());
+
+  // A name with no file next to the session stays as written (the editor's working folder then).
+  s.meshPath = "elsewhere/mesh.obj";
+  saveSession(path.string(), s);
+  EXPECT_EQ(loadSession(path.string()).meshPath, "elsewhere/mesh.obj");
+  fs::remove_all(dir);
 }
