@@ -52,6 +52,7 @@ void glfwErrorCallback(int code, const char* description) {
 // Applies the command-line choices that do not depend on the scene.
 void applyOptions(AppState& state, const EditorOptions& o) {
   if (o.method) state.method = *o.method;
+  if (!o.methodOptions.empty()) state.methodOptions = o.methodOptions;
   for (const ParameterSpec& spec : parameterSchema())  // variant before blend
     if (const auto it = o.parameters.find(spec.key); it != o.parameters.end())
       setParameter(spec, state.params, it->second);

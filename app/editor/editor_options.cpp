@@ -21,6 +21,14 @@ std::optional<ParameterFlag> findParameterFlag(const std::string& a) {
   return std::nullopt;
 }
 
+// The method option (MethodDescriptor::options) that the flag a ("--tet-level") names, or none.
+const MethodOptionSpec* findMethodOption(const std::string& a) {
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      if (a == std::string("--") + o.key) return &o;
+  return nullptr;
+}
+
 // "  --nu V                    Poisson ratio: ... (default 0)" per flag of the table, as the CLI's help has them.
 std::string parametersUsage() {
   std::string text;
@@ -30,6 +38,18 @@ std::string parametersUsage() {
     option += parameterFlagHelp(f);
     text += option + "\n";
   }
+  return text;
+}
+
+// "  --tets FILE               a MEDIT .mesh ...; phong only" per method option, as the CLI's help has them.
+std::string methodOptionsUsage() {
+  std::string text;
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options) {
+      std::string option = std::string("  --") + o.key + " " + o.value;
+      option.resize(std::max<std::size_t>(option.size() + 1, 28), ' ');
+      text += option + o.help + "; " + m->name + " only\n";
+    }
   return text;
 }
 
@@ -51,6 +71,16 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       o.method = parseMethod(value());
     } else if (const std::optional<ParameterFlag> f = findParameterFlag(a)) {
       o.parameters[f->spec->key] = parseParameter(*f->spec, f->fixedValue ? f->fixedValue : value(), a);
+    } else if (const MethodOptionSpec* option = findMethodOption(a)) {
+      const std::string& v = value();
+      if (option->check) {
+        try {
+          option->check(v);
+        } catch (const InputError& e) {
+          throw InputError(a, -1, e.problem(), e.hint());
+        }
+      }
+      o.methodOptions[option->key] = v;
     } else if (a == "--compare") {
       if (compareGiven || !o.views.empty())
         throw InputError(a, -1, "given twice, or with --view", "use --compare a,b or --view SPEC (repeated), not both");
@@ -189,7 +219,7 @@ std::string editorUsage() {
          "                            Somigliana local nu = 0)\n"
          "  --session FILE.json       open a saved session\n"
          "  --method NAME             " +
-         methodNameList() + " (default " + methodName(Method()) + ")\n" + parametersUsage() +
+         methodNameList() + " (default " + methodName(Method()) + ")\n" + parametersUsage() + methodOptionsUsage() +
          "  --compare a,b[,c]         side-by-side views, e.g. somigliana,bem,green\n"
          "  --view METHOD[:KEY=VALUE]...\n"
          "                            KEY: " +

@@ -23,6 +23,9 @@ struct EditorOptions {
   // The parameter options (parameter_schema.h: --nu, --variant, --local, --no-traction-fix, ...): key -> value,
   // the last given of a parameter's flags; applied in the table's order (variant before blend).
   std::map<std::string, double> parameters;
+  // The methods' own options (MethodDescriptor::options: --tets FILE, --tet-level N) for the single view, as the
+  // CLI's deform takes them; checked when given (MethodOptionSpec::check).
+  MethodOptions methodOptions;
   std::vector<ViewSpec> views;                // --compare a,b[,c] or --view SPEC (2 or 3); empty = one view
   std::string screenshotPath;                 // --screenshot: render one frame, write the PNG, exit
   int width = 1600, height = 900;             // --size WxH

@@ -99,6 +99,20 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--show", "volume"}), "--show");
   EXPECT_EQ(sourceOf({"--show"}), "--show");
   EXPECT_EQ(sourceOf({"--demo", "fig9"}), "--demo");
+  EXPECT_EQ(sourceOf({"--method", "phong", "--tet-level", "7"}), "--tet-level");  // levels 0 to 4
+  EXPECT_EQ(sourceOf({"--tet-level"}), "--tet-level");
+}
+
+// The single view takes the methods' own options as `somicage deform` does (--tets FILE, --tet-level N), and the
+// help lists every one the registry's methods declare.
+TEST(EditorOptions, MethodOptionsForTheSingleView) {
+  const EditorOptions o = parseEditorArgs({"--method", "phong", "--tet-level", "2", "--tets", "cube.mesh"});
+  EXPECT_EQ(o.methodOptions, (MethodOptions{{"tet-level", "2"}, {"tets", "cube.mesh"}}));
+  EXPECT_TRUE(parseEditorArgs({}).methodOptions.empty());
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& option : m->options)
+      EXPECT_NE(editorUsage().find(std::string("--") + option.key + " " + option.value), std::string::npos)
+          << option.key;
 }
 
 TEST(EditorOptions, ShowNamesAQuantityDescriptor) {
