@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "cage_tetrahedralization.h"
+#include "volume_mesh.h"
 
 namespace somicage::editor {
 
@@ -56,7 +56,8 @@ std::string viewLabel(const AppState& state, std::size_t v) {
   if (method->needsVolumeMesh && view.options.count("tets") + view.options.count("tet-level") == 0 &&
       state.model.scene && starVolumeMesh(state.model.scene->restCage))
     label += "  star tetrahedra";
-  if (!hasDeformer(state, deformerKey(view))) label += "  (precomputing...)";
+  if (!hasDeformer(state, deformerKey(view)))  // the scene is shown while its deformers are computed
+    label += state.jobs.precompute.busy() ? "  (precomputing...)" : "  (not precomputed)";
   return label;
 }
 

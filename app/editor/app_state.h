@@ -31,6 +31,7 @@
 #include "scene.h"
 #include "selection.h"
 #include "session.h"
+#include "thread_budget.h"
 #include "transform.h"
 #include "unsaved_changes.h"
 #include "view_quantities.h"
@@ -56,7 +57,7 @@ struct Stats {
   double lastDeformMs = 0.0;
   double lastDeformCpuMs = 0.0;  // in place on OpenGL: the CPU part (frameWeights, the W upload, the dispatches)
   double fps = 0.0;
-  int deformThreads = 1;
+  int deformThreads = availableCores();  // the UI's team for the last CPU deformation (thread_budget.h)
   FrameTimings frame;          // the frame being drawn: each stage adds its time (frame_timings.h)
   FrameTimingsHistory frames;  // the frames drawn, for Help > Frame timings
   bool timeFrames = false;     // time each stage (each pane's draw finished): the overlay or --log-frames is on
@@ -123,8 +124,8 @@ struct InputState {
   Interaction mouse;
 };
 
-// A scene load in flight: what to apply when its scene arrives (installOutcome). Present exactly while the running
-// precompute replaces the scene.
+// A scene load in flight: what to apply when its scene arrives (showLoadedScene). Present from the request until its
+// deformers arrive (installOutcome); its scene is shown as soon as the mesh has loaded.
 struct PendingLoad {
   std::optional<std::string> documentPath;  // the session being opened
   bool restored = false;                    // a crashed run's autosave: unsaved from the start
@@ -132,6 +133,7 @@ struct PendingLoad {
   std::optional<CameraState> camera;
   std::string posedPath;              // a posed cage loaded against the new cage
   std::optional<RecentEntry> recent;  // the files being loaded; recorded when they arrive
+  bool sceneShown = false;            // the loaded scene is shown (undeformed) while its deformers are computed
 };
 
 // Background work. Only the controller functions start or take jobs; the frame loop polls them.
@@ -205,11 +207,14 @@ void ensureDeformers(AppState& state);
 // without which a finished job would wait for the next mouse move to be drawn. Call it before starting any work.
 void wakeOnFinish(AppState& state, const std::function<void()>& wake);
 
-// Takes a finished worker outcome, if any, and installs it. Errors go to state.errors. Returns true when
-// something was installed.
+// Shows a load's scene as soon as its mesh has loaded (showLoadedScene), then takes a finished precompute outcome,
+// if any, and installs it. Errors go to state.status.errors. Returns true when an outcome was installed.
 bool pollWorker(AppState& state);
 // Installs an outcome (also used by the screenshot path after waiting).
 void installOutcome(AppState& state, PrecomputeOutcome outcome);
+// Makes a loaded scene the one shown, at rest and undeformed, with what state.jobs.load says (pose, camera, posed
+// cage, session, recent entry) as the new document's first step; its deformers come with installOutcome.
+void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene);
 
 // Deforms every view whose result is stale on the active device (deformOnDevice). Returns true when positions
 // changed. In place on OpenGL it only marks the views for the Renderer (bumps deformGeneration) and leaves

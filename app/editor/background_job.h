@@ -1,12 +1,21 @@
-// One job at a time on a worker thread, with progress, a stage text and cancellation, so that the UI keeps drawing
-// while it runs (the pattern of precompute_worker.h, for any outcome type). The job receives a JobContext: its
-// progress() is a core ProgressCallback (false once cancelled, so core throws Cancelled). When a job ends, its
-// outcome is stored first and then the finish callback runs (on the worker thread): the editor's wakes the frame
-// loop, which would otherwise sleep until the next input with the outcome untaken (docs/editor.md, "Idle"). No GL.
+// The editor's one job abstraction: work on a worker thread, with progress, a stage text, cancellation and a lease
+// of cores (thread_budget.h), so that the UI keeps drawing while it runs. Every background worker of the editor (the
+// precompute, the measurement and the nu sweep, Make cage's generation, the exports) is a BackgroundJob, and
+// startJobThread is the only place the editor starts a thread.
+//
+// The UI thread never waits for a job: start() supersedes the running job (cancelled; its outcome never arrives)
+// and returns at once; the new job's thread first joins the superseded one's (which stops at its next progress
+// check and gives its cores back), then takes its cores from the budget and runs. Only the destructor (at exit)
+// and wait() (scripted screenshots, tests) block. When a job ends, its outcome is stored first and then the finish
+// callback runs on the job's thread: the editor's wakes the frame loop, which would otherwise sleep until the next
+// input with the outcome untaken (docs/editor.md, "Jobs and the redraw rule"). No GL.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
+#include <condition_variable>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -14,6 +23,7 @@
 #include <utility>
 
 #include "progress.h"
+#include "thread_budget.h"
 
 namespace somicage::editor {
 
@@ -33,90 +43,138 @@ class JobContext {
     std::lock_guard<std::mutex> lock(mutex_);
     stage_ = std::move(stage);
   }
+  // The cores granted to this job: its OpenMP regions run with this many threads (core's `threads = 0`).
+  int threads() const { return threads_.load(); }
 
  private:
   template <typename>
   friend class BackgroundJob;
   std::atomic<bool> cancel_{false};
   std::atomic<double> progress_{0.0};
+  std::atomic<int> threads_{0};  // 0 while waiting for cores
   mutable std::mutex mutex_;
   std::string stage_;
 };
+
+// Starts `body` on a new thread: the only place the editor starts threads.
+std::thread startJobThread(std::function<void()> body);
 
 template <typename Outcome>
 class BackgroundJob {
  public:
   using Work = std::function<Outcome(JobContext&)>;
 
-  BackgroundJob() = default;
-  ~BackgroundJob() {  // cancels and joins
-    context_.cancel_ = true;
+  explicit BackgroundJob(ThreadBudget& budget = ThreadBudget::machine()) : budget_(&budget) {}
+  ~BackgroundJob() {  // cancels, then waits for the threads (the running job's and those it joins)
+    cancel();
     if (thread_.joinable()) thread_.join();
   }
   BackgroundJob(const BackgroundJob&) = delete;
   BackgroundJob& operator=(const BackgroundJob&) = delete;
 
-  // Called on the worker thread after each job's outcome is ready (ready() is true by then). Set it before the first
-  // start(); it must be safe to call from any thread (glfwPostEmptyEvent is).
-  void setOnFinished(std::function<void()> onFinished) { onFinished_ = std::move(onFinished); }
+  // Called on the job's thread after each job's outcome is ready (ready() is true by then), not for a superseded
+  // job. Set it before the first start(); it must be safe to call from any thread (glfwPostEmptyEvent is).
+  void setOnFinished(std::function<void()> onFinished) {
+    onFinished_ = std::make_shared<const std::function<void()>>(std::move(onFinished));
+  }
 
-  // Cancels (and joins) a running job, drops its outcome, then runs `work` on a new thread.
-  void start(Work work) {
-    context_.cancel_ = true;
-    if (thread_.joinable()) thread_.join();
-    {
-      std::lock_guard<std::mutex> lock(context_.mutex_);
-      outcome_.reset();
-      context_.stage_.clear();
-    }
-    context_.cancel_ = false;
-    context_.progress_ = 0.0;
-    busy_ = true;
-    thread_ = std::thread([this, work = std::move(work)] {
-      Outcome out = work(context_);
-      {
-        std::lock_guard<std::mutex> lock(context_.mutex_);
-        outcome_ = std::move(out);
-        busy_ = false;
-      }
-      if (onFinished_) onFinished_();
-    });
+  // Supersedes the running job (cancelled, its outcome dropped) without waiting for it, then runs `work` on a new
+  // thread with up to `threads` cores of the budget (at least 1; it waits there while none is free). The work
+  // should check context.cancelled() before anything slow: a job superseded while it waited still runs it.
+  void start(Work work, int threads) {
+    supersede();
+    cancel();
+    auto run = std::make_shared<Run>();
+    run_ = run;
+    auto previous = std::make_shared<std::thread>(std::move(thread_));  // shared: a std::function is copyable
+    thread_ = startJobThread(
+        [run, work = std::move(work), budget = budget_, threads, onFinished = onFinished_, previous]() mutable {
+          if (previous->joinable()) previous->join();  // a superseded job: it ends at its next progress check
+          run->context.threads_ = std::max(1, budget->acquire(run->lease, threads, run->context.cancel_));
+          useThreads(run->context.threads_);
+          std::optional<Outcome> out = work(run->context);
+          budget->release(run->lease);
+          bool current;
+          {
+            std::lock_guard<std::mutex> lock(run->mutex);
+            current = !run->superseded;
+            if (current) run->outcome = std::move(out);
+            run->finished = true;
+          }
+          if (current && onFinished && *onFinished) (*onFinished)();
+          {
+            std::lock_guard<std::mutex> lock(run->mutex);
+            run->settled = true;
+          }
+          run->done.notify_all();
+        });
   }
-  void cancel() { context_.cancel_ = true; }  // the job sees it at its next progress report
-  bool busy() const { return busy_.load(); }
+  // Asks the running job to stop at its next progress report; its outcome (the work's own "cancelled" one) arrives.
+  void cancel() {
+    if (!run_) return;
+    run_->context.cancel_ = true;
+    budget_->cancelled(run_->lease);
+  }
+  bool busy() const {
+    if (!run_) return false;
+    std::lock_guard<std::mutex> lock(run_->mutex);
+    return !run_->finished;
+  }
   bool ready() const {  // finished with an outcome not taken yet
-    std::lock_guard<std::mutex> lock(context_.mutex_);
-    return !busy_ && outcome_.has_value();
+    if (!run_) return false;
+    std::lock_guard<std::mutex> lock(run_->mutex);
+    return run_->finished && run_->outcome.has_value();
   }
-  double progress() const { return context_.progress_.load(); }
+  double progress() const { return run_ ? run_->context.progress_.load() : 0.0; }
   std::string stage() const {
-    std::lock_guard<std::mutex> lock(context_.mutex_);
-    return context_.stage_;
+    if (!run_) return {};
+    std::lock_guard<std::mutex> lock(run_->context.mutex_);
+    return run_->context.stage_;
   }
+  int threads() const { return run_ ? run_->context.threads() : 0; }  // the running job's cores (0: waiting)
+  int cores() const { return budget_->cores(); }                      // the budget's
   // The outcome of the finished job, once; empty while running or when already taken.
   std::optional<Outcome> poll() {
-    if (busy_) return std::nullopt;
-    std::lock_guard<std::mutex> lock(context_.mutex_);
-    std::optional<Outcome> out = std::move(outcome_);
-    outcome_.reset();
-    return out;
+    if (!run_) return std::nullopt;
+    std::lock_guard<std::mutex> lock(run_->mutex);
+    if (!run_->finished) return std::nullopt;
+    return std::exchange(run_->outcome, std::nullopt);
   }
-  // Blocks until the running job finishes; its outcome stays for poll().
+  // Blocks until the current job has finished and its finish callback has run; its outcome stays for poll(). For
+  // scripted screenshots and tests.
   void join() {
-    if (thread_.joinable()) thread_.join();
+    if (!run_) return;
+    std::unique_lock<std::mutex> lock(run_->mutex);
+    run_->done.wait(lock, [&] { return run_->settled; });
   }
-  // Blocks until the running job finishes and returns its outcome (empty when nothing ran or it was taken).
+  // Blocks until the current job finishes and returns its outcome (empty when nothing ran or it was taken).
   std::optional<Outcome> wait() {
     join();
     return poll();
   }
 
  private:
-  JobContext context_;
-  std::function<void()> onFinished_;
-  std::thread thread_;
-  std::atomic<bool> busy_{false};
-  std::optional<Outcome> outcome_;
+  // One started job, shared by its thread and (until superseded) the BackgroundJob.
+  struct Run {
+    JobContext context;
+    ThreadBudget::Lease lease;
+    std::mutex mutex;
+    std::condition_variable done;
+    bool finished = false;  // the outcome is stored
+    bool settled = false;   // and the finish callback has run
+    bool superseded = false;
+    std::optional<Outcome> outcome;
+  };
+  void supersede() {
+    if (!run_) return;
+    std::lock_guard<std::mutex> lock(run_->mutex);
+    run_->superseded = true;
+  }
+
+  ThreadBudget* budget_;
+  std::shared_ptr<const std::function<void()>> onFinished_;
+  std::shared_ptr<Run> run_;
+  std::thread thread_;  // the latest job's; it joins the one before
 };
 
 }  // namespace somicage::editor

@@ -10,25 +10,9 @@ namespace somicage::editor {
 
 CageMaker::CageMaker(CageGenerator generator) : generator_(std::move(generator)) {}
 
-CageMaker::~CageMaker() {
-  wanted_ = 0;  // the running generation stops at its next progress check
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_all();
-  if (thread_.joinable()) thread_.join();
-}
+void CageMaker::setOnFinished(std::function<void()> onFinished) { job_.setOnFinished(std::move(onFinished)); }
 
-void CageMaker::setOnFinished(std::function<void()> onFinished) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  onFinished_ = std::move(onFinished);
-}
-
-void CageMaker::setGenerator(CageGenerator generator) {
-  std::lock_guard<std::mutex> lock(mutex_);
-  generator_ = std::move(generator);
-}
+void CageMaker::setGenerator(CageGenerator generator) { generator_ = std::move(generator); }
 
 void CageMaker::open(const Eigen::MatrixXd& vertices, const Eigen::MatrixXi& triangles, const std::string& source,
                      const CageGenerationOptions& options) {
@@ -48,25 +32,36 @@ void CageMaker::start(const CageGenerationOptions& options) {
   options_ = options;
   status_ = Status::Generating;
   error_.clear();
-  const std::uint64_t id = nextId_++;
-  wanted_ = id;
-  progress_ = 0.0;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    pending_ = Job{id, vertices_, triangles_, source_, options};  // replaces a request not started yet
-    if (!thread_.joinable()) thread_ = std::thread(&CageMaker::run, this);
-  }
-  wake_.notify_all();
+  job_.start(
+      [generator = generator_, vertices = vertices_, triangles = triangles_, source = source_,
+       options](JobContext& context) {
+        Result result;
+        const auto start = std::chrono::steady_clock::now();
+        try {
+          if (context.cancelled()) throw Cancelled();  // superseded while it waited for its cores
+          CageCandidate candidate;
+          candidate.options = options;
+          candidate.generated = generator(*vertices, *triangles, options, source, context.span(0.0, 1.0));
+          candidate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          result.candidate = std::move(candidate);
+        } catch (const Cancelled&) {
+          result.cancelled = true;
+        } catch (const std::exception& e) {
+          result.error = e.what();
+        }
+        return result;
+      },
+      job_.cores() - 1);  // the UI keeps a core: the dialog and the views stay live
 }
 
 void CageMaker::cancel() {
   if (status_ != Status::Generating) return;
-  wanted_ = 0;
+  job_.cancel();
   status_ = Status::Cancelled;
 }
 
 void CageMaker::close() {
-  wanted_ = 0;
+  job_.cancel();
   status_ = Status::Closed;
   candidate_.reset();
   ++candidateGeneration_;
@@ -75,12 +70,8 @@ void CageMaker::close() {
 }
 
 void CageMaker::poll() {
-  std::optional<Result> result;
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    result.swap(result_);
-  }
-  if (!result || result->id != wanted_ || status_ != Status::Generating) return;  // superseded or cancelled
+  std::optional<Result> result = job_.poll();
+  if (!result || status_ != Status::Generating) return;  // cancelled or closed since
   if (result->candidate) {
     candidate_ = std::move(result->candidate);
     ++candidateGeneration_;
@@ -94,49 +85,8 @@ void CageMaker::poll() {
 }
 
 void CageMaker::wait() {
-  {
-    std::unique_lock<std::mutex> lock(mutex_);
-    wake_.wait(lock, [&] { return wanted_ == 0 || (result_ && result_->id == wanted_); });
-  }
+  if (status_ == Status::Generating) job_.join();
   poll();
-}
-
-void CageMaker::run() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  for (;;) {
-    wake_.wait(lock, [&] { return stopping_ || pending_.has_value(); });
-    if (stopping_) return;
-    const Job job = std::move(*pending_);
-    pending_.reset();
-    const CageGenerator generator = generator_;
-    lock.unlock();
-    Result result;
-    result.id = job.id;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      CageCandidate candidate;
-      candidate.options = job.options;
-      candidate.generated = generator(*job.vertices, *job.triangles, job.options, job.source, [&](double done) {
-        if (wanted_ != job.id) return false;  // superseded, cancelled or closed
-        progress_ = done;
-        return true;
-      });
-      candidate.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      result.candidate = std::move(candidate);
-    } catch (const Cancelled&) {
-      result.cancelled = true;
-    } catch (const std::exception& e) {
-      result.error = e.what();
-    }
-    lock.lock();
-    result_ = std::move(result);
-    wake_.notify_all();
-    if (onFinished_) {  // unlocked: the callback may take its own locks
-      lock.unlock();
-      onFinished_();
-      lock.lock();
-    }
-  }
 }
 
 void openCageMaker(AppState& state, int faces) {

@@ -2,22 +2,19 @@
 // one at a time, and makes the accepted one the scene's cage as one undo step. The dialog (cage_maker_panel.h) and
 // the renderer's preview read it; no GL, no ImGui.
 //
-// A new request (the face-count slider moved) supersedes the running one: the worker's progress callback asks it to
-// stop at its next check and then starts the newest request, so the UI never waits for a generation to end. A
-// superseded or cancelled generation never shows its result.
+// A new request (the face-count slider moved) supersedes the running one (background_job.h): its progress callback
+// asks it to stop at its next check, and the newest request runs after it, so the UI never waits for a generation to
+// end. A superseded or cancelled generation never shows its result.
 #pragma once
 
 #include <Eigen/Core>
-#include <atomic>
-#include <condition_variable>
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 
+#include "background_job.h"
 #include "cage_enclosure.h"
 #include "cage_generation.h"
 
@@ -42,12 +39,9 @@ class CageMaker {
   enum class Status { Closed, Generating, Ready, Failed, Cancelled };
 
   explicit CageMaker(CageGenerator generator = generateCage);
-  ~CageMaker();  // stops the worker (waits for the running generation's next progress check)
-  CageMaker(const CageMaker&) = delete;
-  CageMaker& operator=(const CageMaker&) = delete;
 
   void setGenerator(CageGenerator generator);  // tests; only while closed and idle
-  // Called on the worker thread after each generation's result is stored (background_job.h); set it before open().
+  // Called on the job's thread after each generation's result is stored (background_job.h); set it before open().
   void setOnFinished(std::function<void()> onFinished);
 
   // Opens the dialog for a mesh (#V by 3, #T by 3; source names it in errors) and generates with `options`.
@@ -65,7 +59,7 @@ class CageMaker {
 
   Status status() const { return status_; }
   bool isOpen() const { return status_ != Status::Closed; }
-  double progress() const { return progress_.load(); }  // of the running generation, 0..1
+  double progress() const { return job_.progress(); }  // of the running generation, 0..1
   const CageGenerationOptions& options() const { return options_; }
   // The latest finished cage (kept while a newer one is generated, so the preview does not blink); empty before.
   const std::optional<CageCandidate>& candidate() const { return candidate_; }
@@ -74,21 +68,12 @@ class CageMaker {
   std::uint64_t candidateGeneration() const { return candidateGeneration_; }
 
  private:
-  struct Job {
-    std::uint64_t id = 0;
-    std::shared_ptr<const Eigen::MatrixXd> vertices;
-    std::shared_ptr<const Eigen::MatrixXi> triangles;
-    std::string source;
-    CageGenerationOptions options;
-  };
   struct Result {
-    std::uint64_t id = 0;
     std::optional<CageCandidate> candidate;
     std::string error;
     bool cancelled = false;
   };
   void start(const CageGenerationOptions& options);
-  void run();
 
   CageGenerator generator_;
   Status status_ = Status::Closed;
@@ -99,17 +84,7 @@ class CageMaker {
   std::shared_ptr<const Eigen::MatrixXd> vertices_;
   std::shared_ptr<const Eigen::MatrixXi> triangles_;
   std::string source_;
-
-  std::thread thread_;  // started by the first request
-  std::mutex mutex_;
-  std::condition_variable wake_;  // a job arrived, a result arrived, or stopping
-  std::function<void()> onFinished_;
-  std::optional<Job> pending_;
-  std::optional<Result> result_;
-  std::atomic<std::uint64_t> wanted_{0};  // the latest request's id; 0: none (cancelled or closed)
-  std::atomic<double> progress_{0.0};
-  bool stopping_ = false;
-  std::uint64_t nextId_ = 1;
+  BackgroundJob<Result> job_;  // last: its destructor stops the generation first
 };
 
 // File > Make cage...: opens the dialog for the scene's mesh (3D scenes) with the given face count.

@@ -1,6 +1,4 @@
 // The deformation of every frame: the views' points on the active device.
-#include <omp.h>
-
 #include <algorithm>
 #include <chrono>
 
@@ -20,7 +18,8 @@ bool updateDeformation(AppState& state) {
     return true;
   }
   state.model.cpuStale.clear();
-  state.status.stats.deformThreads = omp_get_max_threads();
+  state.status.stats.deformThreads = ThreadBudget::machine().uiThreads();  // the cores no job holds
+  useThreads(state.status.stats.deformThreads);
   bool changed = false;
   const auto t0 = std::chrono::steady_clock::now();
   for (std::size_t v = 0; v < views.size(); ++v) {
@@ -52,6 +51,7 @@ void ensureCpuPoints(AppState& state, std::size_t view) {
   auto it = state.model.deformers.find(deformerKey(views[view]));
   if (it == state.model.deformers.end()) return;
   state.model.deformed.resize(views.size());
+  useThreads(ThreadBudget::machine().uiThreads());
   const auto t0 = std::chrono::steady_clock::now();
   try {
     deformOnDevice(state, it->second, views[view].params(state.document.params), state.model.deformed[view]);

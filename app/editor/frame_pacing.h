@@ -16,7 +16,9 @@ struct FrameDemand {
 class FramePacer {
  public:
   static constexpr int kSettleFrames = 3;
-  static constexpr double kBusySeconds = 1.0 / 30.0;  // progress-bar refresh while the worker runs
+  // Progress-bar refresh while a job runs: 4 Hz, since each frame also draws the scene (on a software renderer a real
+  // mesh costs tens of milliseconds of the cores the job is computing on); input still draws at once.
+  static constexpr double kBusySeconds = 1.0 / 4.0;
   static constexpr double kIdleSeconds = 1.0;         // wake-ups for the autosave clock, nothing drawn
 
   // Whether to draw a frame now.

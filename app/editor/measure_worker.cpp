@@ -89,18 +89,14 @@ bool needsWorker(const MeasureRequest& r) {
 
 void MeasureWorker::start(MeasureRequest request) {
   std::shared_ptr<Caches> caches = caches_;
-  job_.start([request = std::move(request), caches](JobContext& context) {
-    return MeasureWorker::run(request, *caches, context);
-  });
+  job_.start([request = std::move(request),
+              caches](JobContext& context) { return MeasureWorker::run(request, *caches, context); },
+             job_.cores() - 1);  // the UI keeps a core for its frames
 }
 
 void MeasureWorker::release() {
-  job_.cancel();
-  job_.wait();
-  caches_->gradients.clear();
-  caches_->field.reset();
-  caches_->gridField.reset();
-  caches_->fieldScene = nullptr;
+  job_.cancel();  // a running job keeps the old caches until it ends; never waited for here
+  caches_ = std::make_shared<Caches>();
 }
 
 std::size_t MeasureWorker::heldBytes() const {
@@ -119,6 +115,7 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
   out.key = measureKey(request);
   out.views.resize(request.views.size());
   try {
+    if (context.cancelled()) throw Cancelled();  // superseded while it waited for its cores
     const Scene& scene = *request.scene;
     // Gradients no view of this request uses are freed first (memory), those missing made (the slow part).
     std::map<const CageDeformer*, Caches::Gradients> kept;

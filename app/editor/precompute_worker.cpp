@@ -3,6 +3,7 @@
 #include <chrono>
 #include <exception>
 #include <new>
+#include <utility>
 
 #include "engine.h"
 #include "errors.h"
@@ -46,16 +47,20 @@ void requireMemoryFor(const PrecomputeRequest& request, const std::vector<Precom
 }
 
 // Loads the scene if asked, checks the memory, then builds each method's deformer; never throws.
-PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobContext& context) {
+PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobContext& context,
+                             const std::function<void(std::shared_ptr<const Scene>)>& loaded) {
   const auto t0 = std::chrono::steady_clock::now();
   PrecomputeOutcome out;
   out.id = id;
   try {
+    if (context.cancelled()) throw Cancelled();  // superseded while it waited for its cores
     if (!request.scene) {
       context.setStage("Loading files");
       request.scene = std::make_shared<const Scene>(request.loadScene());
     }
     out.scene = request.scene;
+    loaded(request.scene);
+    request.options.threads = context.threads();
     const std::vector<PrecomputeOptions> prepared = preparedOptions(request, context);
     requireMemoryFor(request, prepared);
     const std::size_t n = request.methods.size();
@@ -87,10 +92,31 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
 
 std::uint64_t PrecomputeWorker::start(PrecomputeRequest request) {
   const std::uint64_t id = nextId_++;
-  job_.start([request = std::move(request), id](JobContext& context) mutable {
-    return runRequest(std::move(request), id, context);
-  });
+  const int threads = request.threads;
+  job_.start(
+      [request = std::move(request), id, slot = loaded_, wake = wake_](JobContext& context) mutable {
+        return runRequest(std::move(request), id, context, [&](std::shared_ptr<const Scene> scene) {
+          {
+            std::lock_guard<std::mutex> lock(slot->mutex);
+            slot->id = id;
+            slot->scene = std::move(scene);
+          }
+          if (wake && *wake) (*wake)();  // the frame loop shows the mesh now
+        });
+      },
+      threads);
   return id;
+}
+
+void PrecomputeWorker::setOnFinished(std::function<void()> onFinished) {
+  wake_ = std::make_shared<const std::function<void()>>(onFinished);
+  job_.setOnFinished(std::move(onFinished));
+}
+
+std::shared_ptr<const Scene> PrecomputeWorker::takeLoadedScene() {
+  std::lock_guard<std::mutex> lock(loaded_->mutex);
+  if (loaded_->id + 1 != nextId_) return nullptr;  // an older request's
+  return std::exchange(loaded_->scene, nullptr);
 }
 
 }  // namespace somicage::editor

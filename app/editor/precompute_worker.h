@@ -1,4 +1,4 @@
-// Runs scene loading and makeDeformer() on a worker thread, with progress and cancellation, so the UI stays
+// Runs scene loading and makeDeformer() on a job (background_job.h), with progress and cancellation, so the UI stays
 // responsive and keeps showing the old scene until the new one is ready. A request whose deformers would not fit in
 // the free memory fails before any precompute, with the estimate in its error (core/memory_estimate.h). No GL.
 #pragma once
@@ -7,6 +7,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,6 +36,9 @@ struct PrecomputeRequest {
   std::vector<DeformerKey> methods;  // deformers to build, in this order (each with its options)
   PrecomputeOptions options = interactiveOptions();
   bool withGradients = false;  // a J-based quantity is shown: its gradients count in the memory check too
+  // The cores it may use (thread_budget.h): all of them while a scene loads (the UI has nothing to deform), else all
+  // but the UI's.
+  int threads = ThreadBudget::machine().cores();
 };
 
 struct PrecomputeOutcome {
@@ -48,12 +52,16 @@ struct PrecomputeOutcome {
 
 class PrecomputeWorker {
  public:
-  // Cancels (and joins) any running request, then starts this one. Returns its id.
+  // Supersedes any running request (its outcome never arrives; nothing waits for it), then starts this one. Returns
+  // its id.
   std::uint64_t start(PrecomputeRequest request);
   void cancel() { job_.cancel(); }  // asks the running request to stop; it finishes with cancelled = true
   bool busy() const { return job_.busy(); }
-  // Called on the worker thread when a request has finished (background_job.h).
-  void setOnFinished(std::function<void()> onFinished) { job_.setOnFinished(std::move(onFinished)); }
+  // Called on the job's thread when a request has finished (background_job.h), and when its scene has loaded.
+  void setOnFinished(std::function<void()> onFinished);
+  // The latest request's scene once it has loaded (before its deformers), once; null before or when taken. The
+  // editor shows it, undeformed, while the deformers are computed.
+  std::shared_ptr<const Scene> takeLoadedScene();
   double progress() const { return job_.progress(); }  // 0..1 over all methods of the request
   std::string stage() const { return job_.stage(); }   // e.g. "Loading files", "Somigliana 2/3"
   // The outcome of the last finished request, once; empty while running or when already taken.
@@ -62,7 +70,14 @@ class PrecomputeWorker {
   std::optional<PrecomputeOutcome> wait() { return job_.wait(); }
 
  private:
+  struct LoadedScene {  // written by the job, taken by the UI thread
+    std::mutex mutex;
+    std::uint64_t id = 0;
+    std::shared_ptr<const Scene> scene;
+  };
   std::uint64_t nextId_ = 1;
+  std::shared_ptr<LoadedScene> loaded_ = std::make_shared<LoadedScene>();
+  std::shared_ptr<const std::function<void()>> wake_;
   BackgroundJob<PrecomputeOutcome> job_;
 };
 

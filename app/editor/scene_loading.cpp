@@ -5,6 +5,7 @@
 #include "cage_tetrahedralization.h"
 #include "engine.h"
 #include "mesh_formats.h"
+#include "obj_io.h"
 
 namespace somicage::editor {
 
@@ -25,8 +26,11 @@ PrecomputeRequest deformerRequest(const AppState& state, std::vector<DeformerKey
 
 }  // namespace
 
+// A scene's load takes every core (thread_budget.h): until its mesh arrives the UI has nothing to deform, and then
+// only draws it at rest.
 void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load) {
   PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
+  request.threads = ThreadBudget::machine().cores();
   request.scene = std::move(scene);
   state.jobs.load = std::move(load);
   state.jobs.precompute.start(std::move(request));
@@ -34,6 +38,7 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLo
 
 void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad load) {
   PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
+  request.threads = ThreadBudget::machine().cores();
   request.loadScene = std::move(loader);
   state.jobs.load = std::move(load);
   state.jobs.precompute.start(std::move(request));
@@ -62,6 +67,7 @@ void ensureDeformers(AppState& state) {
   }
   if (missing.empty()) return;
   PrecomputeRequest request = deformerRequest(state, std::move(missing));
+  request.threads = ThreadBudget::machine().cores() - 1;  // the UI keeps a core: it deforms the views it has
   request.scene = state.model.scene;
   state.jobs.precompute.start(std::move(request));
 }
@@ -82,8 +88,76 @@ std::optional<std::string> exteriorNotice(const Scene& scene, const DeformerSet&
 
 }  // namespace
 
+void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
+  std::vector<std::string> notices;                            // for the status bar and the log
+  PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
+  if (state.jobs.load) state.jobs.load->sceneShown = true;
+  const std::shared_ptr<const Scene> previous = state.model.scene;
+  state.model.scene = std::move(scene);
+  ++state.model.sceneGeneration;
+  state.model.deformers.clear();
+  state.model.deformed.clear();
+  state.model.cpuStale.clear();
+  state.view.quantities.clearSweep();
+  state.document.pose = state.model.scene->restCage.vertices;
+  state.input.selection.resize(state.model.scene->restCage.numVertices());
+  state.input.mouse = Interaction{};
+  state.view.camera.setMode2D(state.model.scene->dim() == 2);
+  frameRest(state);
+  state.view.frameRequested = !load.camera.has_value();
+  if (load.camera) state.view.camera.setState(*load.camera);
+  if (load.pose) {
+    if (load.pose->rows() == state.document.pose.rows() && load.pose->cols() == state.document.pose.cols()) {
+      state.document.pose = *load.pose;
+    } else {
+      state.status.errors.push_back("the saved pose has " + std::to_string(load.pose->rows()) +
+                                    " vertices but the cage has " + std::to_string(state.document.pose.rows()) +
+                                    "; the rest pose is shown instead");
+    }
+  }
+  // The pose library and the keys belong to the cage they were made on: a session brings its own (they must fit its
+  // cage), anything else keeps them only on a cage of the same topology. Part of the opened state, not a step.
+  const bool sessionPoses = load.documentPath.has_value() || load.restored;
+  const std::string dropped = keepPosesThatFit(state.animation, state.model.scene->restCage,
+                                               sessionPoses || !previous ? nullptr : &previous->restCage);
+  if (!dropped.empty()) notices.push_back(dropped);
+  bool posedLoaded = false;
+  if (!load.posedPath.empty()) {
+    try {
+      state.document.pose =
+          posedVerticesFromMesh(loadAnyMesh(load.posedPath), state.model.scene->restCage, load.posedPath);
+      posedLoaded = true;
+    } catch (const std::exception& e) {
+      state.status.errors.push_back(e.what());
+    }
+  }
+  // The new document's history: the state as opened, then the posed cage loaded with it (undoable, like any
+  // "Load posed cage"). Opening loses nothing, so it starts clean, except a crashed run's restored autosave,
+  // which exists nowhere else.
+  const Document opened = currentDocument(state);
+  if (posedLoaded) state.document.pose = state.model.scene->restCage.vertices;
+  state.document.history.reset(currentDocument(state), "Open " + state.model.scene->name, !load.restored);
+  if (posedLoaded) {
+    state.document.pose = opened.pose;
+    commitEdit(state, "Load posed cage");
+    if (!load.restored) state.document.history.markSaved();
+  }
+  state.document.path = load.documentPath.value_or("");
+  ++state.document.poseGeneration;
+  notices.insert(notices.begin(), state.model.scene->notices.begin(), state.model.scene->notices.end());
+  state.status.message = "loaded " + state.model.scene->name;
+  for (const std::string& notice : notices) {
+    state.status.message += "; " + notice;
+    std::fprintf(stderr, "somicage: %s: %s\n", state.model.scene->name.c_str(), notice.c_str());
+  }
+  if (load.recent && load.recent->mesh == state.model.scene->meshPath &&
+      load.recent->cage == state.model.scene->cagePath) {
+    if (!posedLoaded) load.recent->posed.clear();
+    noteRecent(state, *load.recent);
+  }
+}
+
 void installOutcome(AppState& state, PrecomputeOutcome outcome) {
-  const bool newScene = outcome.scene && outcome.scene != state.model.scene;
   if (outcome.cancelled) {
     state.jobs.load.reset();
     state.status.message = "precomputation cancelled";
@@ -96,78 +170,18 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   }
   if (!outcome.scene) return;
   state.status.stats.precomputeSeconds = outcome.seconds;
-  std::vector<std::string> notices;  // for the status bar and the log
-  if (newScene) {
-    PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
-    state.jobs.load.reset();
-    const std::shared_ptr<const Scene> previous = state.model.scene;
-    state.model.scene = outcome.scene;
-    ++state.model.sceneGeneration;
-    state.model.deformers.clear();
-    state.model.deformed.clear();
-    state.model.cpuStale.clear();
-    state.view.quantities.clearSweep();
-    state.document.pose = state.model.scene->restCage.vertices;
-    state.input.selection.resize(state.model.scene->restCage.numVertices());
-    state.input.mouse = Interaction{};
-    state.view.camera.setMode2D(state.model.scene->dim() == 2);
-    frameRest(state);
-    state.view.frameRequested = !load.camera.has_value();
-    if (load.camera) state.view.camera.setState(*load.camera);
-    if (load.pose) {
-      if (load.pose->rows() == state.document.pose.rows() && load.pose->cols() == state.document.pose.cols()) {
-        state.document.pose = *load.pose;
-      } else {
-        state.status.errors.push_back("the saved pose has " + std::to_string(load.pose->rows()) +
-                                      " vertices but the cage has " + std::to_string(state.document.pose.rows()) +
-                                      "; the rest pose is shown instead");
-      }
-    }
-    // The pose library and the keys belong to the cage they were made on: a session brings its own (they must fit its
-    // cage), anything else keeps them only on a cage of the same topology. Part of the opened state, not a step.
-    const bool sessionPoses = load.documentPath.has_value() || load.restored;
-    const std::string dropped = keepPosesThatFit(state.animation, state.model.scene->restCage,
-                                                 sessionPoses || !previous ? nullptr : &previous->restCage);
-    if (!dropped.empty()) notices.push_back(dropped);
-    bool posedLoaded = false;
-    if (!load.posedPath.empty()) {
-      try {
-        state.document.pose =
-            posedVerticesFromMesh(loadAnyMesh(load.posedPath), state.model.scene->restCage, load.posedPath);
-        posedLoaded = true;
-      } catch (const std::exception& e) {
-        state.status.errors.push_back(e.what());
-      }
-    }
-    // The new document's history: the state as opened, then the posed cage loaded with it (undoable, like any
-    // "Load posed cage"). Opening loses nothing, so it starts clean, except a crashed run's restored autosave,
-    // which exists nowhere else.
-    const Document opened = currentDocument(state);
-    if (posedLoaded) state.document.pose = state.model.scene->restCage.vertices;
-    state.document.history.reset(currentDocument(state), "Open " + state.model.scene->name, !load.restored);
-    if (posedLoaded) {
-      state.document.pose = opened.pose;
-      commitEdit(state, "Load posed cage");
-      if (!load.restored) state.document.history.markSaved();
-    }
-    state.document.path = load.documentPath.value_or("");
-    ++state.document.poseGeneration;
-    notices.insert(notices.begin(), state.model.scene->notices.begin(), state.model.scene->notices.end());
-    if (const std::optional<std::string> outside = exteriorNotice(*state.model.scene, outcome.deformers))
-      notices.push_back(*outside);
-    state.status.message = "loaded " + state.model.scene->name;
-    for (const std::string& notice : notices) {
-      state.status.message += "; " + notice;
-      std::fprintf(stderr, "somicage: %s: %s\n", state.model.scene->name.c_str(), notice.c_str());
-    }
-    if (load.recent && load.recent->mesh == state.model.scene->meshPath &&
-        load.recent->cage == state.model.scene->cagePath) {
-      if (!posedLoaded) load.recent->posed.clear();
-      noteRecent(state, *load.recent);
-    }
-  }
+  const bool newScene = outcome.scene != state.model.scene;  // not shown while its deformers were computed
+  if (newScene) showLoadedScene(state, outcome.scene);
+  const bool completesLoad = state.jobs.load && state.jobs.load->sceneShown;
   for (auto& [m, d] : outcome.deformers) state.model.deformers[m] = d;
   state.model.deformDirty = true;
+  if (newScene || completesLoad) {  // what only the deformers tell: points outside the cage
+    if (const std::optional<std::string> outside = exteriorNotice(*state.model.scene, outcome.deformers)) {
+      state.status.message += "; " + *outside;
+      std::fprintf(stderr, "somicage: %s: %s\n", state.model.scene->name.c_str(), outside->c_str());
+    }
+  }
+  if (completesLoad) state.jobs.load.reset();
 }
 
 void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
@@ -178,10 +192,18 @@ void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
 }
 
 bool pollWorker(AppState& state) {
+  if (state.jobs.load && !state.jobs.load->sceneShown) {  // the mesh has loaded: show it while the precompute runs
+    if (std::shared_ptr<const Scene> scene = state.jobs.precompute.takeLoadedScene()) {
+      showLoadedScene(state, std::move(scene));
+      logLine(state, "scene shown");  // --log-actions: the GUI tests look for the mesh drawn from here on
+    }
+  }
   std::optional<PrecomputeOutcome> outcome = state.jobs.precompute.poll();
   if (!outcome) return false;
+  const bool cancelled = outcome->cancelled;
   installOutcome(state, std::move(*outcome));
-  if (!state.jobs.precompute.busy()) ensureDeformers(state);  // e.g. the views changed while loading
+  // e.g. the views changed while loading; not after a cancel (a scene shown early would start again at once)
+  if (!cancelled && !state.jobs.precompute.busy()) ensureDeformers(state);
   return true;
 }
 

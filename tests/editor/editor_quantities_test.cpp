@@ -295,12 +295,14 @@ TEST(EditorQuantities, GradientsThatWouldNotFitAreRefusedWithTheirSize) {
 TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
   BackgroundJob<std::string> job;
   std::atomic<bool> running{false};
-  job.start([&](JobContext& context) {
-    context.setStage("spinning");
-    running = true;
-    while (context.report(0.25)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    return std::string("stopped");
-  });
+  job.start(
+      [&](JobContext& context) {
+        context.setStage("spinning");
+        running = true;
+        while (context.report(0.25)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return std::string("stopped");
+      },
+      1);
   while (!running) std::this_thread::yield();
   EXPECT_TRUE(job.busy());
   EXPECT_EQ(job.stage(), "spinning");
@@ -313,13 +315,15 @@ TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
   EXPECT_FALSE(job.busy());
 
   running = false;
-  job.start([&](JobContext& context) {
-    running = true;
-    while (context.report(0.5)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    return std::string("superseded");
-  });
+  job.start(
+      [&](JobContext& context) {
+        running = true;
+        while (context.report(0.5)) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return std::string("superseded");
+      },
+      1);
   while (!running) std::this_thread::yield();
-  job.start([](JobContext&) { return std::string("second"); });
+  job.start([](JobContext&) { return std::string("second"); }, 1);
   EXPECT_EQ(job.wait().value_or(""), "second");  // the first one's outcome never shows
   EXPECT_FALSE(job.poll().has_value());
 }

@@ -28,7 +28,7 @@ TEST(EditorWakeup, AJobsOutcomeIsReadyWhenItsWakeUpRuns) {
     readyAtWake = job.ready();  // the frame loop, woken, must find the outcome
     ++wakes;
   });
-  job.start([](JobContext&) { return 42; });
+  job.start([](JobContext&) { return 42; }, 1);
   job.join();
   EXPECT_EQ(wakes.load(), 1);
   EXPECT_TRUE(readyAtWake.load());
@@ -40,14 +40,14 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
   std::atomic<int> wakes{0};
   wakeOnFinish(state, [&] { ++wakes; });
 
-  openDemoScene(state);  // the precompute worker: load and precompute
-  EXPECT_EQ(wakes.load(), 1) << "precompute";
+  openDemoScene(state);  // the precompute worker: load (the scene is shown at once), then precompute
+  EXPECT_EQ(wakes.load(), 2) << "precompute: its scene loaded, then its deformers";
 
   sweepNuNow(state);  // the measure worker: the nu sweep (the panel's button)
   measureViews(state);
   ASSERT_TRUE(state.view.quantities.worker.busy());
   state.view.quantities.worker.join();
-  EXPECT_EQ(wakes.load(), 2) << "nu sweep";
+  EXPECT_EQ(wakes.load(), 3) << "nu sweep";
   measureViews(state);
   EXPECT_EQ(state.view.quantities.nuSweep.size(), 25u);
 
@@ -62,14 +62,14 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
   openCageMaker(state, 80);
   state.jobs.cageMaker.wait();
   // The worker thread calls the wake-up right after storing the result, which wait() may see first.
-  for (int i = 0; i < 5000 && wakes.load() < 3; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_EQ(wakes.load(), 3) << "cage generation";
+  for (int i = 0; i < 5000 && wakes.load() < 4; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(wakes.load(), 4) << "cage generation";
   EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready);
 
   ASSERT_TRUE(
       state.jobs.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
   ASSERT_TRUE(state.jobs.exporter.wait().has_value());
-  EXPECT_EQ(wakes.load(), 4) << "export";
+  EXPECT_EQ(wakes.load(), 5) << "export";
 }
 
 }  // namespace

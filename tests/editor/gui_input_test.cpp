@@ -433,3 +433,53 @@ TEST(GuiInput, OrbitingDeformsAndUploadsNothingWhileGrabbingDoes) {
               grab.size());
   EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
 }
+
+// Issue 27 (issue 24, row 14): a scene given on the command line is drawn, mesh and cage at rest, as soon as its mesh
+// has loaded, while its coordinates are still computed; before, the viewport said "(no scene)" for the whole
+// precompute (5-7 s on FIREHYDRANT). The picture taken then is the one drawn once the deformers have arrived (the
+// rest pose deforms to the rest mesh), apart from the panes' labels.
+TEST(GuiInput, TheMeshIsDrawnWhileThePrecomputeRuns) {
+  SKIP_WITHOUT_X_TOOLS();
+  const fs::path fh = fs::path(SOMICAGE_MODELS_DIR) / "firehydrant";
+  if (!fs::exists(fh / "fireHydrant.obj")) GTEST_SKIP() << "FIREHYDRANT not found in " << fh;
+  const fs::path dir = kOut / "mesh_while_precomputing";
+  const std::string out = runScenario(
+      dir, "\"$EXE\" --size 1000x700 --log-actions --log-frames '" + (fh / "fireHydrant.obj").string() + "' '" +
+               (fh / "fireHydrant_cages_triangulated.obj").string() + "' > \"$log\" 2>&1 & pid=$!\n" +
+               "waitfor 'scene shown' 1 60 || exit 4\n"
+               // A frame drawn after it has reached the screen (a frame takes a while on llvmpipe).
+               "waitfor 'frame .* mesh_draws=1' 2 30 || exit 4\n"
+               "shot early.png; echo \"precomputes done at the shot: $(grep -c '^job precompute' \"$log\")\"\n"
+               "waitfor 'job precompute' 1 120 || exit 4; settle; shot done.png\n"
+               "xdotool key ctrl+q; finish\n");
+  // The log: "scene shown", then frames that draw the mesh, then the precompute's outcome.
+  std::istringstream log(readText(dir / "app.log"));
+  int state = 0, meshFrames = 0;  // 0: before "scene shown", 1: after it, 2: after "job precompute"
+  for (std::string line; std::getline(log, line);) {
+    if (line == "scene shown" && state == 0) state = 1;
+    if (line.rfind("job precompute", 0) == 0) state = std::max(state, 2);
+    if (state == 1 && line.rfind("frame ", 0) == 0 && line.find(" mesh_draws=0") == std::string::npos) ++meshFrames;
+  }
+  ASSERT_EQ(state, 2) << out;
+  EXPECT_GE(meshFrames, 1) << "no frame drew the mesh while the precompute ran\n" << out;
+  std::printf("%d frames drew the mesh before the precompute had finished\n", meshFrames);
+  if (out.find("precomputes done at the shot: 0") == std::string::npos) {
+    std::printf("the precompute ended before the early picture was taken: its pixels are not compared\n");
+    return;
+  }
+  const Image early = load(dir / "early.png"), done = load(dir / "done.png");
+  ASSERT_FALSE(early.rgb.empty() || done.rgb.empty()) << out;
+  const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
+  const double differs = changedShare(early, done, view, 40);  // the margin leaves the pane's label out
+  // What the mesh and cage cover: the pixels of `done` unlike the pane's background (its corner's colour).
+  Image background = done;
+  const std::size_t corner = 3 * (static_cast<std::size_t>(view.y + 45) * done.width + view.x + 45);
+  for (std::size_t i = 0; i < background.rgb.size(); ++i) background.rgb[i] = done.rgb[corner + i % 3];
+  const double covered = changedShare(done, background, view, 40);
+  ASSERT_GT(covered, 0.05) << "the finished picture shows too little of the mesh to compare\n" << out;
+  EXPECT_LT(differs, 0.01) << "the picture during the precompute is not the scene's\n" << out;
+  std::printf(
+      "the scene covers %.1f %% of the pane; %.3f %% of its pixels differ between the picture during the "
+      "precompute and after it\n",
+      100 * covered, 100 * differs);
+}
