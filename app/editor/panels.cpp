@@ -17,6 +17,7 @@
 #include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
+#include "thread_budget.h"
 
 namespace somicage::editor {
 
@@ -439,8 +440,14 @@ std::string statusBarText(const AppState& state) {
     std::snprintf(device, sizeof device, "%s (compute shader, %.2f ms on the CPU)", active.c_str(),
                   state.status.stats.lastDeformCpuMs);
   } else if (active == kCpuDevice) {
-    std::snprintf(device, sizeof device, "%s (OpenMP, %d thread%s)", active.c_str(), state.status.stats.deformThreads,
-                  state.status.stats.deformThreads == 1 ? "" : "s");
+    // The UI's share of the cores at its last deformation (thread_budget.h): "1 of 2 threads" while a job holds one.
+    const int threads = state.status.stats.deformThreads, cores = ThreadBudget::machine().cores();
+    if (threads < cores) {
+      std::snprintf(device, sizeof device, "%s (OpenMP, %d of %d threads)", active.c_str(), threads, cores);
+    } else {
+      std::snprintf(device, sizeof device, "%s (OpenMP, %d thread%s)", active.c_str(), threads,
+                    threads == 1 ? "" : "s");
+    }
   } else {
     std::snprintf(device, sizeof device, "%s", active.c_str());
   }

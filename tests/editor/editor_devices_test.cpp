@@ -15,10 +15,11 @@
 #include "engine.h"
 #include "errors.h"
 #include "frame_device_evaluators.h"
-#include "panels.h"
 #include "methods/method_descriptors.h"
+#include "panels.h"
 #include "precompute_worker.h"
 #include "somigliana_coordinates.h"
+#include "thread_budget.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -307,11 +308,27 @@ TEST(EditorDevices, TheStatusBarCountsThreadsInGoodEnglish) {
   AppState state;
   state.model.scene = std::make_shared<const Scene>(makeDemoScene(2));
   state.status.message = "loaded demo";
-  state.status.stats.deformThreads = 1;
+  const int cores = ThreadBudget::machine().cores();
+  state.status.stats.deformThreads = 1;  // a job holds the other cores
   const std::string one = statusBarText(state);
-  EXPECT_NE(one.find("cpu (OpenMP, 1 thread)"), std::string::npos) << one;
+  const std::string oneText =
+      cores == 1 ? "cpu (OpenMP, 1 thread)" : "cpu (OpenMP, 1 of " + std::to_string(cores) + " threads)";
+  EXPECT_NE(one.find(oneText), std::string::npos) << one;
   EXPECT_EQ(one.rfind("loaded demo   |", 0), 0u) << one;
-  state.status.stats.deformThreads = 2;
-  const std::string two = statusBarText(state);
-  EXPECT_NE(two.find("cpu (OpenMP, 2 threads)"), std::string::npos) << two;
+  state.status.stats.deformThreads = cores;
+  const std::string all = statusBarText(state);
+  const std::string allText = "cpu (OpenMP, " + std::to_string(cores) + (cores == 1 ? " thread)" : " threads)");
+  EXPECT_NE(all.find(allText), std::string::npos) << all;
+}
+
+// Issue 27: the status bar said "1 threads" on a 2-core machine before the first deformation (the count started at
+// 1); it starts at the machine's cores.
+TEST(EditorDevices, TheStatusBarCountsTheMachinesCoresBeforeTheFirstDeformation) {
+  AppState state;
+  state.model.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  EXPECT_EQ(state.status.stats.deformThreads, availableCores());
+  const std::string text = statusBarText(state);
+  if (availableCores() > 1) {
+    EXPECT_EQ(text.find("OpenMP, 1 thread"), std::string::npos) << text;
+  }
 }

@@ -147,7 +147,7 @@ TEST(EditorFramePacing, DrawsForInputThenSettlesThenSleeps) {
   FrameDemand busy;
   busy.busy = true;
   EXPECT_TRUE(pacer.shouldDraw(busy));
-  EXPECT_EQ(pacer.waitSeconds(busy), FramePacer::kBusySeconds);  // the progress bar at 4 Hz, not a spin
+  EXPECT_EQ(pacer.waitSeconds(busy), FramePacer::kBusySeconds);  // the progress bar at 2 Hz, not a spin
   FrameDemand pending;
   pending.changing = true;
   EXPECT_TRUE(pacer.shouldDraw(pending));
