@@ -252,6 +252,10 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
     state.pendingRecent.reset();
   }
   for (auto& [m, d] : outcome.deformers) state.deformers[m] = d;
+  for (const std::string& notice : outcome.notices) {  // e.g. Phong's tetrahedral mesh is TetGen's, not Mesh_3's
+    state.statusMessage += (state.statusMessage.empty() ? "" : "; ") + notice;
+    std::fprintf(stderr, "somicage: %s\n", notice.c_str());
+  }
   state.deformDirty = true;
 }
 

@@ -338,3 +338,31 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   EXPECT_EQ(state.statusMessage, "precomputation cancelled");
   expectSceneKept(state, kept);
 }
+
+// When Mesh_3 does not finish the tetrahedral mesh asked for (here: a millisecond's bound at level 3) and TetGen's
+// comes instead, the user is told: the outcome carries the warning and installing it puts it in the status bar.
+TEST(EditorWorker, AMesh3FallbackToTetGenIsShownInTheStatusBar) {
+  AppState state;
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> loaded = state.worker.wait();
+  ASSERT_TRUE(loaded.has_value());
+  installOutcome(state, std::move(*loaded));
+  ASSERT_TRUE(state.scene);
+  PrecomputeRequest request;
+  request.scene = state.scene;
+  request.methods = {methods::phong()};
+  request.options.volumeMesher = [](const Cage& cage, const MethodOptions&, const ProgressCallback& progress) {
+    return tetrahedralizeCage(cage, 3, progress, {1e-3, 500000});
+  };
+  PrecomputeWorker worker;
+  worker.start(request);
+  std::optional<PrecomputeOutcome> out = worker.wait();
+  ASSERT_TRUE(out.has_value() && out->error.empty()) << (out ? out->error : "");
+  ASSERT_EQ(out->notices.size(), 1u);
+  EXPECT_NE(out->notices[0].find("Phong: warning: CGAL's Mesh_3 did not finish"), std::string::npos)
+      << out->notices[0];
+  state.statusMessage.clear();
+  installOutcome(state, std::move(*out));
+  EXPECT_NE(state.statusMessage.find("TetGen's constrained tetrahedralization"), std::string::npos)
+      << state.statusMessage;
+}
