@@ -42,8 +42,8 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
 
   // The pane's label shows the view's own value.
   AppState state;
-  state.compare = true;
-  state.compareViews = {view, ViewSpec{methods::somigliana(), {}, {}}};
+  state.view.compare = true;
+  state.view.compareViews = {view, ViewSpec{methods::somigliana(), {}, {}}};
   EXPECT_NE(viewLabel(state, 0).find("Constant  test-shift=-0.50 (own)"), std::string::npos) << viewLabel(state, 0);
 
   // Sessions: the shared value under the row's session key, and the view's own, read back exactly.
@@ -51,7 +51,7 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
   s.method = test::constantMethod();
   s.params.extra["test-shift"] = 0.125;
   s.compare = true;
-  s.compareViews = state.compareViews;
+  s.compareViews = state.view.compareViews;
   const std::string text = sessionToJson(s);
   EXPECT_NE(text.find("\"testShift\": 0.125"), std::string::npos) << text;
   const Session back = sessionFromJson(text, "s.json");
