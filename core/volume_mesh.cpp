@@ -7,8 +7,8 @@
 #include <cstdio>
 #include <map>
 
+#include "cage_proximity.h"
 #include "errors.h"
-#include "exterior_points.h"
 
 namespace somicage {
 
