@@ -1,8 +1,9 @@
 // Headless screenshot tests: run the real somicage executable under xvfb-run (Mesa llvmpipe), read the PNG
 // back, and check properties of the picture. They skip visibly when neither xvfb-run nor a display exists.
 //
-// The checks use generous bounds (coverage between a few percent and most of the view), so that driver
-// differences do not matter; gui_golden_screenshot_test.cpp compares whole pictures with references.
+// The meshes' silhouettes are checked against where the editor's camera puts the mesh `somicage deform` makes (an
+// independent front end), to a few percent of outline pixels, so that driver differences do not matter;
+// gui_golden_screenshot_test.cpp compares whole pictures with references.
 #include <gtest/gtest.h>
 
 #include <algorithm>
