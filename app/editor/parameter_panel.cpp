@@ -77,6 +77,12 @@ float imguiTextWidth(const char* text) { return ImGui::CalcTextSize(text).x; }
 
 }  // namespace
 
+void sliderSpan(const ParameterSpec& spec, float& min, float& max) {
+  const double inset = spec.openRange ? std::min(0.01, 0.01 * (spec.range.max - spec.range.min)) : 0.0;
+  min = static_cast<float>(spec.range.min + inset);
+  max = static_cast<float>(spec.range.max - inset);
+}
+
 std::vector<ParameterWidget> parameterWidgets(const AppState& state, float panelWidth,
                                               float (*textWidth)(const char* text)) {
   unsigned shownParameters = 0;  // the parameters some shown view's method reads
@@ -93,9 +99,7 @@ std::vector<ParameterWidget> parameterWidgets(const AppState& state, float panel
       case ParameterType::Number: {
         w.kind = ParameterWidgetKind::Slider;
         w.label = spec.key;
-        const double inset = spec.openRange ? std::min(0.01, 0.01 * (spec.range.max - spec.range.min)) : 0.0;
-        w.min = static_cast<float>(spec.range.min + inset);
-        w.max = static_cast<float>(spec.range.max - inset);
+        sliderSpan(spec, w.min, w.max);
         w.infinite = spec.infinities && std::isinf(parameterValue(spec, state.params));
         w.tooltip += " Ctrl+click to type a value.";
         break;

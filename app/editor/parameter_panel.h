@@ -26,6 +26,9 @@ struct ParameterWidget {
   bool infinite = false;   // Slider of a row taking +-inf: the value is infinite (the slider gives way to a box)
 };
 
+// The span a slider of a Number row covers: its range, an open range's ends left out (they are refused).
+void sliderSpan(const ParameterSpec& spec, float& min, float& max);
+
 // One widget per row of parameterSchema(), in its order, for the state's parameters and shown views.
 // `panelWidth`: the width radio buttons must fit in (pixels; <= 0: always a combo box), with `textWidth` measuring
 // a label (ImGui's CalcTextSize in the panel; a fixed width per character in tests).
