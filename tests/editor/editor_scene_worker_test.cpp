@@ -11,6 +11,7 @@
 #include "cage_tetrahedralization.h"
 #include "cage_validation.h"
 #include "core/constant_method.h"
+#include "errors.h"
 #include "memory_estimate.h"
 #include "methods/method_descriptors.h"
 #include "precompute_worker.h"
