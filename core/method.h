@@ -125,6 +125,16 @@ bool readsParameter(Method method, DeformParameter parameter);
 // The names of the methods that read it, for help texts: "somigliana only", "somigliana and bem".
 std::string methodsReading(DeformParameter parameter);
 
+// A method's option as a command-line flag, for every front end's parser and help text: "--tets", its spec, and
+// "a MEDIT .mesh volume mesh of the cage (...); phong only".
+struct MethodOptionFlag {
+  std::string flag;
+  const MethodOptionSpec* spec;
+  std::string help;
+};
+// Every registered method's options, in registry order.
+std::vector<MethodOptionFlag> methodOptionFlags();
+
 // The layout of C that `method` stores for a cage, and for a method that needs a volume mesh, that mesh's vertex
 // count (layoutVertices: the cage's own otherwise).
 CoordinateLayout coordinateLayout(Method method, const Cage& cage, int layoutVertices = -1);

@@ -52,6 +52,14 @@ Method::Method() : descriptor_(&allMethods().front().descriptor()) {}
 
 std::string methodName(Method method) { return method->name; }
 
+std::vector<MethodOptionFlag> methodOptionFlags() {
+  std::vector<MethodOptionFlag> flags;
+  for (Method m : allMethods())
+    for (const MethodOptionSpec& o : m->options)
+      flags.push_back({std::string("--") + o.key, &o, std::string(o.help) + "; " + m->name + " only"});
+  return flags;
+}
+
 std::optional<Method> findMethod(const std::string& name) {
   for (Method m : allMethods())
     if (name == m->name) return m;

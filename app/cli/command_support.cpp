@@ -83,17 +83,14 @@ std::vector<OptionSpec> withDeformParams(std::vector<OptionSpec> before, const s
 
 std::vector<OptionSpec> methodOptionSpecs() {
   std::vector<OptionSpec> specs;
-  for (Method m : allMethods())
-    for (const MethodOptionSpec& o : m->options)
-      specs.push_back({std::string("--") + o.key, o.value, std::string(o.help) + "; " + m->name + " only"});
+  for (const MethodOptionFlag& f : methodOptionFlags()) specs.push_back({f.flag, f.spec->value, f.help});
   return specs;
 }
 
 void applyMethodOptions(const ArgParser& args, Method method, const Cage& cage, PrecomputeOptions& options,
                         const NoticeSink& notices) {
-  for (Method m : allMethods())
-    for (const MethodOptionSpec& o : m->options)
-      if (args.has(std::string("--") + o.key)) options.methodOptions[o.key] = args.text(std::string("--") + o.key);
+  for (const MethodOptionFlag& f : methodOptionFlags())
+    if (args.has(f.flag)) options.methodOptions[f.spec->key] = args.text(f.flag);
   options.volumeMesher = tetrahedralizeCageWithOptions;
   prepareVolumeMesh(method, cage, options, notices);
 }

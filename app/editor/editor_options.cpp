@@ -23,33 +23,29 @@ std::optional<ParameterFlag> findParameterFlag(const std::string& a) {
 
 // The method option (MethodDescriptor::options) that the flag a ("--tet-level") names, or none.
 const MethodOptionSpec* findMethodOption(const std::string& a) {
-  for (Method m : allMethods())
-    for (const MethodOptionSpec& o : m->options)
-      if (a == std::string("--") + o.key) return &o;
+  for (const MethodOptionFlag& f : methodOptionFlags())
+    if (a == f.flag) return f.spec;
   return nullptr;
+}
+
+// An option and its help on one line, aligned as the CLI's help aligns them.
+std::string usageLine(std::string option, const std::string& help) {
+  option.resize(std::max<std::size_t>(option.size() + 1, 28), ' ');
+  return option + help + "\n";
 }
 
 // "  --nu V                    Poisson ratio: ... (default 0)" per flag of the table, as the CLI's help has them.
 std::string parametersUsage() {
   std::string text;
-  for (const ParameterFlag& f : parameterFlags()) {
-    std::string option = "  " + f.flag + (f.fixedValue ? "" : " " + cliValueName(*f.spec));
-    option.resize(std::max<std::size_t>(option.size() + 1, 28), ' ');
-    option += parameterFlagHelp(f);
-    text += option + "\n";
-  }
+  for (const ParameterFlag& f : parameterFlags())
+    text += usageLine("  " + f.flag + (f.fixedValue ? "" : " " + cliValueName(*f.spec)), parameterFlagHelp(f));
   return text;
 }
 
 // "  --tets FILE               a MEDIT .mesh ...; phong only" per method option, as the CLI's help has them.
 std::string methodOptionsUsage() {
   std::string text;
-  for (Method m : allMethods())
-    for (const MethodOptionSpec& o : m->options) {
-      std::string option = std::string("  --") + o.key + " " + o.value;
-      option.resize(std::max<std::size_t>(option.size() + 1, 28), ' ');
-      text += option + o.help + "; " + m->name + " only\n";
-    }
+  for (const MethodOptionFlag& f : methodOptionFlags()) text += usageLine("  " + f.flag + " " + f.spec->value, f.help);
   return text;
 }
 
