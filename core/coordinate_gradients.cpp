@@ -6,9 +6,11 @@
 
 #include "affine_terms.h"
 #include "bem_layer_integrals.h"
+#include "cpu_dispatch.h"
 #include "dual_number.h"
 #include "edge_integrals.h"
 #include "point_blocks.h"
+#include "simd_math.h"
 #include "somigliana_coordinates.h"
 #include "triangle_integrals.h"
 
@@ -170,11 +172,53 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
       });
 }
 
+#if SOMICAGE_SIMD_PACKS
+using DualPack = dual::Dual<3, simd::Pack>;
+
+// The gradient rows of simd::kLanes points at once: the coordinates' row kernel (integrateSomiglianaRowPack) on the
+// points as dual numbers of packs, the whole pack in one dispatched call (cpu_dispatch.h).
+SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces, int numVertices,
+                                                          const DualPack x[3], DualPack* rows) {
+  integrateSomiglianaRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows, 1);
+}
+
+void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                             const ProgressCallback& progress, const GradientRowSink& sink) {
+  const std::vector<PortableFace> faces = portableFaces(cage, cageFrames(cage));
+  const int numPoints = static_cast<int>(points.rows());
+  const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
+  struct Buffers {
+    std::vector<DualPack> packed;
+    std::vector<double> split;  // the 3 gradient rows of one lane
+  };
+  forEachPointPack(
+      points, cage.numFaces(), threads, progress,
+      [columns] { return Buffers{std::vector<DualPack>(columns), std::vector<double>(3 * columns)}; },
+      [&](Buffers& buffers, int first, const simd::Pack x[3]) {
+        const DualPack xd[3] = {DualPack::variable(x[0], 0), DualPack::variable(x[1], 1), DualPack::variable(x[2], 2)};
+        integrateSomiglianaGradientRowPack(faces, cage.numVertices(), xd, buffers.packed.data());
+        for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
+          const double* rows[3];
+          for (int a = 0; a < 3; ++a) {
+            double* out = buffers.split.data() + a * columns;
+            for (std::size_t k = 0; k < columns; ++k) out[k] = buffers.packed[k].g[a].v[l];
+            rows[a] = out;
+          }
+          sink(first + l, rows);
+        }
+      });
+}
+#endif
+
 }  // namespace
 
 void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                  const ProgressCallback& progress, const GradientRowSink& sink) {
+                                  const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel) {
   assertCageAndPoints(cage, points);
+#if SOMICAGE_SIMD_PACKS
+  if (cage.dim() == 3 && !scalarKernel) return somiglianaGradientPacks(cage, points, threads, progress, sink);
+#endif
+  (void)scalarKernel;
   if (cage.dim() == 3)
     somiglianaGradients<3>(cage, points, threads, progress, sink);
   else

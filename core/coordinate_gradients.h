@@ -16,9 +16,13 @@ namespace somicage {
 using GradientRowSink = std::function<void(int point, const double* const* rows)>;
 
 // Somigliana: rows in the layout of SomiglianaCoordinates::values (somiglianaLayout's main columns), always from the
-// closed form (also for a deformer whose coordinates came from the Gauss baseline).
+// closed form (also for a deformer whose coordinates came from the Gauss baseline). A 3D cage runs the coordinates'
+// pack kernel on dual numbers of packs (simd::kLanes points at once, as the precompute); scalarKernel = true (and 2D
+// cages, and builds without packs) runs the dual-number kernel one point at a time, the reference. The two agree to
+// a few units of rounding (simd_math.h's logarithms and angles; coordinate_gradients_test.cpp).
 void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                  const ProgressCallback& progress, const GradientRowSink& sink);
+                                  const ProgressCallback& progress, const GradientRowSink& sink,
+                                  bool scalarKernel = false);
 
 // Green: rows [phi (#V) | psi (#F)] (green_coordinates.h). phi_i and psi_j are the double layer of the hats and
 // the single layer of the faces, the integrals D_k and S that the Somigliana kernels compute as well.

@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "parallel_failure.h"
 #include "progress.h"
+#include "simd_pack.h"
 
 namespace somicage {
 
@@ -44,5 +45,25 @@ void forEachPointInBlocks(int numPoints, int facesPerPoint, int threads, const P
   }
   progress(1.0);
 }
+
+#if SOMICAGE_SIMD_PACKS
+// forEachPointInBlocks over packs of simd::kLanes points (simd_pack.h): perPack(state, first, x) with x[a] the
+// coordinate a of points first .. first + kLanes - 1, the last pack repeating the last point (its extra lanes are
+// the caller's to drop: first + l >= numPoints). Points is an Eigen matrix (#P by 3).
+template <typename Points, typename MakeState, typename PerPack>
+void forEachPointPack(const Points& points, int facesPerPoint, int threads, const ProgressCallback& progress,
+                      MakeState makeState, PerPack perPack) {
+  constexpr int lanes = simd::kLanes;
+  const int numPoints = static_cast<int>(points.rows());
+  forEachPointInBlocks((numPoints + lanes - 1) / lanes, facesPerPoint * lanes, threads, progress, makeState,
+                       [&](auto& state, int pack) {
+                         const int first = pack * lanes;
+                         simd::Pack x[3];
+                         for (int l = 0; l < lanes; ++l)
+                           for (int a = 0; a < 3; ++a) x[a].v[l] = points(std::min(first + l, numPoints - 1), a);
+                         perPack(state, first, x);
+                       });
+}
+#endif
 
 }  // namespace somicage

@@ -78,12 +78,13 @@ inline Pack select(const Mask& m, const Pack& a, const Pack& b) {
   return Pack::fromBits(((VecI)a.v & m.bits) | ((VecI)b.v & ~m.bits));
 }
 
-// branch_select.h for packs: only the branch some lane takes runs, both when the lanes disagree.
+// branch_select.h for packs (and dual numbers of packs, whose select is dual_number.h's): only the branch some
+// lane takes runs, both when the lanes disagree.
 template <typename Then, typename Else>
-inline ScalarPair<Pack> branchSelect(const Mask& m, Then then, Else otherwise) {
+inline auto branchSelect(const Mask& m, Then then, Else otherwise) -> decltype(then()) {
   if (m.all()) return then();
   if (!m.any()) return otherwise();
-  const ScalarPair<Pack> a = then(), b = otherwise();
+  const auto a = then(), b = otherwise();
   return {select(m, a.first, b.first), select(m, a.second, b.second)};
 }
 

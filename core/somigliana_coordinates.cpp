@@ -7,7 +7,6 @@
 
 #include "affine_terms.h"
 #include "cpu_dispatch.h"
-#include "cuda/somigliana_row_portable.h"
 #include "edge_integrals.h"
 #include "errors.h"
 #include "kelvin_kernels.h"
@@ -113,6 +112,15 @@ void addVertexTerms(const EdgeIntegrals& I, const int ends[2], const CoordinateL
   }
 }
 
+std::vector<PortableFace> portableFaces(const Cage& cage, const std::vector<TriangleFrame>& frames) {
+  std::vector<PortableFace> faces(frames.size());
+  for (std::size_t j = 0; j < frames.size(); ++j) {
+    faces[j].frame = frames[j].kernel;
+    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(static_cast<int>(j), k);
+  }
+  return faces;
+}
+
 namespace {
 
 // Adds one triangle's integrals to the row of point x (3D terms, see vertexTermCount; in the layout of C), its
@@ -153,28 +161,20 @@ SOMICAGE_DISPATCH void integrateSomiglianaRowPack(const std::vector<PortableFace
 // are the scalar closed form's to a few units of rounding (simd_math.h), independent of the thread count.
 void integrateSomiglianaPacks(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<TriangleFrame>& frames,
                               int threads, const ProgressCallback& progress, const CoordinateRowSink& sink) {
-  constexpr int lanes = simd::kLanes;
-  std::vector<PortableFace> faces(frames.size());
-  for (std::size_t j = 0; j < frames.size(); ++j) {
-    faces[j].frame = frames[j].kernel;
-    for (int k = 0; k < 3; ++k) faces[j].corners[k] = cage.faces(static_cast<int>(j), k);
-  }
+  const std::vector<PortableFace> faces = portableFaces(cage, frames);
   const int numPoints = static_cast<int>(points.rows());
   const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   struct Buffers {
     std::vector<simd::Pack> packed;
     std::vector<double> row;
   };
-  forEachPointInBlocks(
-      (numPoints + lanes - 1) / lanes, cage.numFaces() * lanes, threads, progress,
+  forEachPointPack(
+      points, cage.numFaces(), threads, progress,
       [columns] { return Buffers{std::vector<simd::Pack>(columns), std::vector<double>(columns)}; },
-      [&](Buffers& buffers, int pack) {
-        const int first = pack * lanes;
-        simd::Pack x[3], winding;
-        for (int l = 0; l < lanes; ++l)
-          for (int a = 0; a < 3; ++a) x[a].v[l] = points(std::min(first + l, numPoints - 1), a);
+      [&](Buffers& buffers, int first, const simd::Pack x[3]) {
+        simd::Pack winding;
         integrateSomiglianaRowPack(faces, cage.numVertices(), x, buffers.packed.data(), winding);
-        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
+        for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
           for (int k = 0; k < columns; ++k) buffers.row[k] = buffers.packed[k].v[l];
           sink(first + l, buffers.row.data(), winding.v[l]);
         }

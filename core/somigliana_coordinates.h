@@ -12,9 +12,11 @@
 
 #include <Eigen/Core>
 #include <functional>
+#include <vector>
 
 #include "cage.h"
 #include "coordinate_layout.h"
+#include "cuda/somigliana_row_portable.h"
 #include "edge_integrals.h"
 #include "integration_options.h"
 #include "progress.h"
@@ -76,6 +78,9 @@ struct SomiglianaCoordinates {
 void addVertexTerms(const TriangleIntegrals& integrals, const Eigen::Vector3d& n, const int corners[3],
                     const CoordinateLayout& layout, double* row);
 void addVertexTerms(const EdgeIntegrals& integrals, const int ends[2], const CoordinateLayout& layout, double* row);
+
+// The faces of a 3D cage as the row kernels take them (cuda/somigliana_row_portable.h), from its frames (one per face).
+std::vector<PortableFace> portableFaces(const Cage& cage, const std::vector<TriangleFrame>& frames);
 
 // Integrates the coordinates of every point (#P by d) against the cage. Points on the cage are singular.
 // Throws somicage::Cancelled when progress returns false. The result does not depend on the thread count.

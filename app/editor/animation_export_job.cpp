@@ -27,7 +27,7 @@ void finish(AppState& state, const std::string& message) {
   setParams(state, job.savedParams);
   state.animation.frame = job.savedFrame;
   state.animation.exportJob.reset();
-  state.statusMessage = message;
+  state.status.message = message;
 }
 
 void moveImagesIntoPlace(const AnimationExportJob& job) {
@@ -44,21 +44,22 @@ void moveImagesIntoPlace(const AnimationExportJob& job) {
 
 void startAnimationExport(AppState& state, AnimationExportJob::Kind kind, const std::string& out) {
   const Timeline& timeline = state.animation.timeline;
-  if (!state.scene || !state.scene->document) {
-    state.errors.push_back("Export animation: open a mesh file first (the built-in demos have no file to export)");
+  if (!state.model.scene || !state.model.scene->document) {
+    state.status.errors.push_back(
+        "Export animation: open a mesh file first (the built-in demos have no file to export)");
     return;
   }
   if (timeline.keys.empty()) {
-    state.errors.push_back("Export animation: the timeline has no keys (Timeline panel: Key pose)");
+    state.status.errors.push_back("Export animation: the timeline has no keys (Timeline panel: Key pose)");
     return;
   }
   if (kind != AnimationExportJob::Kind::PngSequence) {
     if (ExportWorker::Job job = makeAnimationExportJob(state, kind, out)) {
-      state.exporter.start(out,
-                           "exported the animation (" + std::to_string(timeline.lastFrame - timeline.firstFrame + 1) +
-                               " frames) to " + out,
-                           std::move(job));
-      state.statusMessage = "exporting the animation to " + out;
+      state.jobs.exporter.start(out,
+                                "exported the animation (" +
+                                    std::to_string(timeline.lastFrame - timeline.firstFrame + 1) + " frames) to " + out,
+                                std::move(job));
+      state.status.message = "exporting the animation to " + out;
     }
     return;
   }
@@ -66,20 +67,20 @@ void startAnimationExport(AppState& state, AnimationExportJob::Kind kind, const 
   job.out = out;
   job.first = job.next = timeline.firstFrame;
   job.last = timeline.lastFrame;
-  job.savedPose = state.pose;
-  job.savedParams = state.params;
+  job.savedPose = state.document.pose;
+  job.savedParams = state.document.params;
   job.savedFrame = state.animation.frame;
   fs::path target(out);
   if (target.filename().empty()) target = target.parent_path();
   std::error_code error;
   if (fs::exists(target, error) && (!fs::is_directory(target, error) || !fs::is_empty(target, error))) {
-    state.errors.push_back(out + ": exists and is not an empty folder; give a new folder for the images");
+    state.status.errors.push_back(out + ": exists and is not an empty folder; give a new folder for the images");
     return;
   }
   const fs::path parent = target.parent_path().empty() ? fs::path(".") : target.parent_path();
   std::string pattern = (parent / (target.filename().string() + ".tmp-XXXXXX")).string();
   if (!::mkdtemp(pattern.data())) {
-    state.errors.push_back(out + ": cannot create a folder next to it");
+    state.status.errors.push_back(out + ": cannot create a folder next to it");
     return;
   }
   job.pngFolder = pattern;
@@ -110,7 +111,7 @@ void captureExportFrame(AppState& state, int framebufferWidth, int framebufferHe
     job.pngFolder.clear();
     finish(state, "exported the animation (" + std::to_string(job.last - job.first + 1) + " frames) to " + job.out);
   } catch (const std::exception& e) {
-    state.errors.push_back(e.what());
+    state.status.errors.push_back(e.what());
     finish(state, "animation export failed; nothing was written");
   }
 }

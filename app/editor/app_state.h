@@ -1,7 +1,8 @@
-// AppState: everything the editor knows, in one place (scene, pose, selection, method and parameters,
-// undo history, camera, precomputed deformers, the worker, statistics, pending errors). No globals, no GL,
-// no ImGui: the panels (panels.h) and the input handler (input.h) are functions of AppState&, and the
-// Renderer (editor_renderer.h) reads it.
+// AppState: everything the editor knows, in parts of one concern each (the document and its history, the scene and
+// its deformers, the views, the selection and interaction, the animation, the background jobs, the files, the
+// status), and the controller functions that change it. No globals, no GL, no ImGui: the panels (panels.h) and the
+// input handler (input.h) are functions of AppState&, and the Renderer (editor_renderer.h) reads it. The functions
+// are defined by concern: scene_loading.cpp, deformation.cpp, edits.cpp, state_files.cpp.
 #pragma once
 
 #include <Eigen/Core>
@@ -61,25 +62,26 @@ struct Stats {
   bool timeFrames = false;     // time each stage (each pane's draw finished): the overlay or --log-frames is on
 };
 
-struct AppState {
-  // ---- scene ----
-  std::shared_ptr<const Scene> scene;
-  std::uint64_t sceneGeneration = 0;  // bumps when the scene (topology) changes
-  Eigen::MatrixXd pose;               // #V by d posed cage
-  std::uint64_t poseGeneration = 0;   // bumps when pose or selection changes (cage upload)
-  Selection selection;
-  ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
+// The state's parts, one concern each (docs/editor.md, "The state's parts", says who may change which).
 
-  // ---- method and parameters ----
-  Method method;  // the registry's first (method.h)
-  // The single view's method options (sessions' "methodOptions"; the panel's tetrahedra for Phong); those the
-  // method has apply (withMethod), e.g. Phong's {"tet-level": "2"}.
-  MethodOptions methodOptions;
+// Document and history: what the user edits and undo restores (document.h), changed through the edit functions below
+// (setPose / setParams / setMethod, then commitEdit; applyDocument, undo, redo) and never directly by a panel.
+struct DocumentState {
+  Eigen::MatrixXd pose;              // #V by d posed cage
+  std::uint64_t poseGeneration = 0;  // bumps when pose or selection changes (cage upload)
+  Method method;                     // the registry's first (method.h)
   DeformParams params;
-  bool compare = false;
-  std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
+  History history;
+  std::string path;            // the session file the document was opened from or saved to; "" none
+  UnsavedPrompt unsaved;       // the Save / Don't save / Cancel question (unsaved_changes.h)
+  bool quitRequested = false;  // set by the (guarded) quit command; the frame loop ends, then the autosave goes
+};
 
-  // ---- deformation ----
+// Scene and deformers: the scene shown, its precomputed deformers and the deformed points. Replaced only by
+// installOutcome (a finished precompute) and replaceRestCage; the points by updateDeformation / ensureCpuPoints.
+struct SceneState {
+  std::shared_ptr<const Scene> scene;
+  std::uint64_t sceneGeneration = 0;      // bumps when the scene (topology) changes
   DeformerSet deformers;                  // for `scene`, one per method (views of one method share it)
   std::vector<Eigen::MatrixXd> deformed;  // latest deformed points per view (views())
   std::uint64_t deformGeneration = 0;     // bumps when `deformed` changes (position upload)
@@ -88,62 +90,88 @@ struct AppState {
   // In place on OpenGL: views whose `deformed` entry is stale (the Renderer deformed them on the GPU);
   // ensureCpuPoints() computes them on the CPU when something needs the numbers (framing, export).
   std::vector<std::size_t> cpuStale;
-  // ---- quantities shown on the meshes (view_quantity.h) ----
-  ViewQuantities quantities;  // what each view shows, measured on a worker
+};
 
-  // ---- editing (document.h: what undo restores) ----
-  History history;
-  std::string documentPath;                        // the session file the document was opened from or saved to; "" none
-  std::optional<std::string> pendingDocumentPath;  // the session being opened (the scene loads on the worker)
-  bool pendingRestored = false;  // the loading scene is a crashed run's autosave: unsaved from the start
-  UnsavedPrompt unsaved;
-  AnimationState animation;  // pose library, timeline, playback (pose_keys.h)
+// Views and quantities: what is shown and how (view state: no edit, not undone). Panels and input change it freely;
+// a change that needs deformers goes through setCompare / setCompareViews / setMethodOptions (they precompute).
+struct ViewState {
+  // The single view's method options (sessions' "methodOptions"; the panel's tetrahedra for Phong); those the
+  // method has apply (withMethod), e.g. Phong's {"tet-level": "2"}.
+  MethodOptions methodOptions;
+  bool compare = false;
+  std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
+  ViewQuantities quantities;  // what each view shows, measured on a worker (view_quantity.h)
   OrbitCamera camera;
-  Interaction interaction;
-
-  // ---- background work ----
-  PrecomputeWorker worker;
-  CageMaker cageMaker;                         // File > Make cage... (its dialog and the preview)
-  ExportWorker exporter;                       // File > Export deformed mesh / animation (export_jobs.h)
-  bool loadingScene = false;                   // the running request replaces the scene
-  std::optional<Eigen::MatrixXd> pendingPose;  // applied when the loading scene arrives
-  std::optional<CameraState> pendingCamera;
-  std::string pendingPosedPath;              // loaded against the new cage when it arrives
-  std::optional<RecentEntry> pendingRecent;  // the files being loaded; recorded when they arrive
-
-  // ---- recent files (the Open panel) ----
-  RecentFiles recent;
-  std::string recentPath;  // where `recent` is saved after each change; "" keeps it in memory (tests, --screenshot)
-
-  // ---- crash recovery (autosave.h) ----
-  std::optional<Session> restoreOffer;  // a crashed run's session: the Restore / Discard modal asks about it
-  std::string restoreOfferTime;         // when it was saved, "2026-11-23 19:40"
-
-  // ---- status and messages ----
-  Stats stats;
-  std::vector<std::string> errors;  // shown one at a time in a modal
-  std::string statusMessage;        // last action ("saved ...")
-  std::string glRenderer;           // for the status bar
-
-  // ---- UI flags and requests handled by the frame loop ----
-  FileDialogState dialog;
-  bool showHistoryPanel = false;
-  bool showShortcuts = false;  // F1
-  bool showFrameTimings = false;  // Help > Frame timings
-  bool logFrames = false;         // --log-frames: each frame's timings on stdout (frame_timings.h)
-  bool hideUi = false;
+  double viewAspect = 1.6;      // width / height of the first viewport, set by the frame loop
+  bool frameRequested = false;  // frame the rest scene once the viewports are known
   bool showCage = true;
   bool showMesh = true;
   bool showTets = false;  // the posed tetrahedra of views with a volume mesh (Phong), as a wireframe
-  int wireframe = -1;  // -1: automatic (on in 2D), 0 off, 1 on
+  int wireframe = -1;     // -1: automatic (on in 2D), 0 off, 1 on
   bool flatShading = false;
+  bool hideUi = false;
+  bool showHistoryPanel = false;
+  bool showShortcuts = false;     // F1
+  bool showFrameTimings = false;  // Help > Frame timings
   std::string screenshotRequest;  // non-empty: write the next frame to this PNG
-  bool quitRequested = false;     // set by the (guarded) quit command; the frame loop ends, then the autosave goes
-  bool logActions = false;        // --log-actions: keyboard commands are printed to stdout
-  std::string hoverLogged;        // --log-actions: the hover readout line printed last (quantity_overlay.h)
-  double viewAspect = 1.6;        // width / height of the first viewport, set by the frame loop
-  bool frameRequested = false;    // frame the rest scene once the viewports are known
+};
+
+// Selection and interaction: what is selected and the mouse interaction under way (input.cpp, gizmo.cpp).
+struct InputState {
+  Selection selection;
+  ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
+  Interaction mouse;
+};
+
+// A scene load in flight: what to apply when its scene arrives (installOutcome). Present exactly while the running
+// precompute replaces the scene.
+struct PendingLoad {
+  std::optional<std::string> documentPath;  // the session being opened
+  bool restored = false;                    // a crashed run's autosave: unsaved from the start
+  std::optional<Eigen::MatrixXd> pose;      // the pose to show on the new cage
+  std::optional<CameraState> camera;
+  std::string posedPath;              // a posed cage loaded against the new cage
+  std::optional<RecentEntry> recent;  // the files being loaded; recorded when they arrive
+};
+
+// Background work. Only the controller functions start or take jobs; the frame loop polls them.
+struct JobsState {
+  PrecomputeWorker precompute;  // scene loading and the deformers' precompute
+  CageMaker cageMaker;          // File > Make cage... (its dialog and the preview)
+  ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
+  std::optional<PendingLoad> load;
+};
+
+// Files and recent: the file dialog, recent files, dropped files, the crash-recovery offer (autosave.h).
+struct FilesState {
+  FileDialogState dialog;
+  RecentFiles recent;
+  std::string recentPath;  // where `recent` is saved after each change; "" keeps it in memory (tests, --screenshot)
   std::vector<std::string> droppedPaths;  // files dropped on the window (GLFW callback), opened by the frame loop
+  std::optional<Session> restoreOffer;    // a crashed run's session: the Restore / Discard modal asks about it
+  std::string restoreOfferTime;           // when it was saved, "2026-11-23 19:40"
+};
+
+// Status: statistics, the status line, errors, logs. Anyone may add a message or an error.
+struct StatusState {
+  Stats stats;
+  std::vector<std::string> errors;  // shown one at a time in a modal
+  std::string message;              // last action ("saved ...")
+  std::string glRenderer;           // for the status bar
+  bool logActions = false;          // --log-actions: keyboard commands are printed to stdout
+  bool logFrames = false;           // --log-frames: each frame's timings on stdout (frame_timings.h)
+  std::string hoverLogged;          // --log-actions: the hover readout line printed last (quantity_overlay.h)
+};
+
+struct AppState {
+  DocumentState document;
+  SceneState model;
+  ViewState view;
+  InputState input;
+  AnimationState animation;  // pose library, timeline, playback (pose_keys.h)
+  JobsState jobs;
+  FilesState files;
+  StatusState status;
 
   // The views shown, one per viewport: the compare view's list, or the current method with the shared parameters.
   std::vector<ViewSpec> views() const;
@@ -152,17 +180,21 @@ struct AppState {
   // The distinct deformers of the views (method and method options), one deformer each.
   std::vector<DeformerKey> deformerKeys() const;
   // The parameters view v deforms with (its own, else the panel's).
-  DeformParams viewParams(std::size_t v) const { return views()[v].params(params); }
-  int dim() const { return scene ? scene->dim() : 3; }
+  DeformParams viewParams(std::size_t v) const { return views()[v].params(document.params); }
+  int dim() const { return model.scene ? model.scene->dim() : 3; }
+  bool loadingScene() const { return jobs.load.has_value(); }  // the running precompute replaces the scene
 };
 
 // ---- controller functions (pure logic, used by the panels, the input handler and tests) ----
 
-// Starts loading/precomputing a new scene on the worker. The current scene stays usable until it arrives.
-void requestScene(AppState& state, std::shared_ptr<const Scene> scene);
+// Starts loading/precomputing a new scene on the worker; `load` is applied when it arrives (state.jobs.load holds it
+// meanwhile). The current scene stays usable until then.
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load = {});
+// The same with a loader run on the worker (the files read there).
+void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad load = {});
 void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
                        const std::string& posedPath = "");
-void requestDemo(AppState& state, int dim);
+void requestDemo(AppState& state, int dim, PendingLoad load = {});
 
 // Starts precomputing the deformers the views need but do not have yet (no-op when nothing is missing or a
 // scene is loading).
@@ -231,7 +263,9 @@ void frameRest(AppState& state);
 
 // Sessions and files (errors go to state.errors, never thrown).
 Session makeSession(const AppState& state);
-void applySession(AppState& state, const Session& session);
+// A session of another scene loads it on the worker (what `load` says is applied when it arrives, with the session's
+// pose and camera); one of the scene shown is applied at once as the edit "Load session".
+void applySession(AppState& state, const Session& session, PendingLoad load = {});
 // Each returns true on success. They write where they are told: the dialogs check the paths (file_dialog.h).
 bool savePosedCage(AppState& state, const std::string& path);
 bool loadPosedCage(AppState& state, const std::string& path);  // committed: "Load posed cage"

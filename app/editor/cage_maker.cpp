@@ -140,28 +140,29 @@ void CageMaker::run() {
 }
 
 void openCageMaker(AppState& state, int faces) {
-  if (!state.scene || state.loadingScene) {
-    state.errors.push_back("Make cage: wait until the scene has loaded");
+  if (!state.model.scene || state.loadingScene()) {
+    state.status.errors.push_back("Make cage: wait until the scene has loaded");
     return;
   }
-  if (state.scene->dim() != 3 || state.scene->meshTriangles.rows() == 0) {
-    state.errors.push_back("Make cage needs a 3D mesh with faces; this scene's mesh has none");
+  if (state.model.scene->dim() != 3 || state.model.scene->meshTriangles.rows() == 0) {
+    state.status.errors.push_back("Make cage needs a 3D mesh with faces; this scene's mesh has none");
     return;
   }
-  CageGenerationOptions options = state.cageMaker.options();
+  CageGenerationOptions options = state.jobs.cageMaker.options();
   options.maxFaces = faces;
-  state.cageMaker.open(state.scene->meshVertices, state.scene->meshTriangles, state.scene->name, options);
+  state.jobs.cageMaker.open(state.model.scene->meshVertices, state.model.scene->meshTriangles, state.model.scene->name,
+                            options);
 }
 
 bool acceptGeneratedCage(AppState& state) {
-  if (!state.scene || !state.cageMaker.candidate()) return false;
-  const GeneratedCage generated = state.cageMaker.candidate()->generated;
-  state.cageMaker.close();
+  if (!state.model.scene || !state.jobs.cageMaker.candidate()) return false;
+  const GeneratedCage generated = state.jobs.cageMaker.candidate()->generated;
+  state.jobs.cageMaker.close();
   state.animation.poses = PoseLibrary{};  // poses of the old cage's vertices
   state.animation.timeline.keys.clear();
   replaceRestCage(state, generated.cage);
   commitEdit(state, "Make cage");
-  state.statusMessage = "made a cage of " + std::to_string(generated.cage.numFaces()) + " faces (undo: Ctrl+Z)";
+  state.status.message = "made a cage of " + std::to_string(generated.cage.numFaces()) + " faces (undo: Ctrl+Z)";
   return true;
 }
 

@@ -27,7 +27,7 @@ void drawNumbers(const CageCandidate& candidate) {
 }  // namespace
 
 void drawCageMakerDialog(AppState& state) {
-  CageMaker& maker = state.cageMaker;
+  CageMaker& maker = state.jobs.cageMaker;
   if (!maker.isOpen()) return;
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowPos(ImVec2(ImGui::GetIO().DisplaySize.x - 350, 40), ImGuiCond_FirstUseEver);

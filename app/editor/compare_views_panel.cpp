@@ -11,7 +11,7 @@
 namespace somicage::editor {
 
 void drawCompareViews(AppState& state) {
-  std::vector<ViewSpec> views = state.compareViews;
+  std::vector<ViewSpec> views = state.view.compareViews;
   bool changed = false;
   std::optional<std::size_t> removed;
   for (std::size_t v = 0; v < views.size(); ++v) {
@@ -34,7 +34,7 @@ void drawCompareViews(AppState& state) {
       bool own = view.own.count("nu") > 0;
       if (ImGui::Checkbox("own nu", &own)) {
         if (own)
-          view.own["nu"] = std::isfinite(state.params.nu) ? state.params.nu : 0.0;
+          view.own["nu"] = std::isfinite(state.document.params.nu) ? state.document.params.nu : 0.0;
         else
           view.own.erase("nu");
         changed = true;

@@ -51,22 +51,22 @@ void glfwErrorCallback(int code, const char* description) {
 
 // Applies the command-line choices that do not depend on the scene.
 void applyOptions(AppState& state, const EditorOptions& o) {
-  if (o.method) state.method = *o.method;
-  if (!o.methodOptions.empty()) state.methodOptions = o.methodOptions;
+  if (o.method) state.document.method = *o.method;
+  if (!o.methodOptions.empty()) state.view.methodOptions = o.methodOptions;
   for (const ParameterSpec& spec : parameterSchema())  // variant before blend
     if (const auto it = o.parameters.find(spec.key); it != o.parameters.end())
-      setParameter(spec, state.params, it->second);
+      setParameter(spec, state.document.params, it->second);
   if (!o.views.empty()) {
-    state.compare = true;
-    state.compareViews = o.views;
+    state.view.compare = true;
+    state.view.compareViews = o.views;
   }
-  state.hideUi = o.hideUi;
-  state.flatShading = o.flatShading;
-  state.quantities.show = o.show;
+  state.view.hideUi = o.hideUi;
+  state.view.flatShading = o.flatShading;
+  state.view.quantities.show = o.show;
   for (const ViewShow& view : o.show.views)
-    if (o.range && view.quantity > 0) state.quantities.show.ranges[view.quantity] = RangeSetting{true, *o.range};
-  state.showCage = !o.hideCage;
-  state.showTets = o.showTets;
+    if (o.range && view.quantity > 0) state.view.quantities.show.ranges[view.quantity] = RangeSetting{true, *o.range};
+  state.view.showCage = !o.hideCage;
+  state.view.showTets = o.showTets;
 }
 
 // The devices the editor offers, whether the in-place OpenGL one can run in this context, and the default: opengl on
@@ -76,11 +76,11 @@ void chooseDevices(AppState& state, const EditorOptions& options, const FrameDev
   std::string glProblem;
   const bool gl = render::GpuDeformer::available(&glProblem);
   const bool software = gl && render::GpuDeformer::softwareRenderer();
-  state.devices.note =
-      software ? "this OpenGL renders on the CPU (" + state.glRenderer + "): opengl works but is slower than cpu here"
-               : "";
-  const std::string refused =
-      chooseDevice(state.devices, devices, options.device, gl && !software ? kInPlaceDevice : kCpuDevice, glProblem);
+  state.model.devices.note = software ? "this OpenGL renders on the CPU (" + state.status.glRenderer +
+                                            "): opengl works but is slower than cpu here"
+                                      : "";
+  const std::string refused = chooseDevice(state.model.devices, devices, options.device,
+                                           gl && !software ? kInPlaceDevice : kCpuDevice, glProblem);
   if (!refused.empty())
     std::fprintf(stderr, "somicage: --device %s: %s; deforming on the CPU\n", options.device->c_str(), refused.c_str());
 }
@@ -131,7 +131,7 @@ void dropCallback(GLFWwindow* window, int count, const char** paths) {
   if (!l || !l->state) return;
   std::vector<std::string> dropped;
   for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
-  l->state->droppedPaths = std::move(dropped);  // one drop per event; a newer one replaces an unhandled one
+  l->state->files.droppedPaths = std::move(dropped);  // one drop per event; a newer one replaces an unhandled one
   l->activity = true;
 }
 
@@ -185,22 +185,23 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
   };
   const auto frameStart = Clock::now();
-  FrameTimings& timings = state.stats.frame;
+  FrameTimings& timings = state.status.stats.frame;
   timings = FrameTimings{};
-  timings.frame = state.stats.frames.last().frame + 1;
-  state.stats.timeFrames = state.showFrameTimings || state.logFrames;
+  timings.frame = state.status.stats.frames.last().frame + 1;
+  state.status.stats.timeFrames = state.view.showFrameTimings || state.status.logFrames;
   feedInput(window, queue);
   if (pollWorker(state)) logLine(state, "job precompute");  // --log-actions: the GUI tests wait for it
-  const std::uint64_t candidateShown = state.cageMaker.candidateGeneration();
-  state.cageMaker.poll();
-  if (state.logActions && state.cageMaker.candidateGeneration() != candidateShown && state.cageMaker.candidate()) {
-    std::printf("cage candidate %d faces\n", state.cageMaker.candidate()->generated.cage.numFaces());  // GUI tests
+  const std::uint64_t candidateShown = state.jobs.cageMaker.candidateGeneration();
+  state.jobs.cageMaker.poll();
+  if (state.status.logActions && state.jobs.cageMaker.candidateGeneration() != candidateShown &&
+      state.jobs.cageMaker.candidate()) {
+    std::printf("cage candidate %d faces\n", state.jobs.cageMaker.candidate()->generated.cage.numFaces());  // GUI tests
     std::fflush(stdout);
   }
   pollExport(state);
-  if (!state.droppedPaths.empty()) {
+  if (!state.files.droppedPaths.empty()) {
     std::vector<std::string> dropped;
-    dropped.swap(state.droppedPaths);
+    dropped.swap(state.files.droppedPaths);
     openDroppedFiles(state, dropped);
   }
 
@@ -210,14 +211,14 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   ImGui::NewFrame();
   const ImGuiIO& io = ImGui::GetIO();
 
-  const double top = state.hideUi ? 0.0 : menuBarHeight();
-  const double left = state.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
+  const double top = state.view.hideUi ? 0.0 : menuBarHeight();
+  const double left = state.view.hideUi ? 0.0 : panelWidth(io.DisplaySize.x);
   const double bottom =
-      state.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
+      state.view.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.views().size()));
-  state.viewAspect = views.front().width / views.front().height;
-  if (!state.hideUi) {
+  state.view.viewAspect = views.front().width / views.front().height;
+  if (!state.view.hideUi) {
     drawMainMenu(state);
     drawControlPanel(state);
     drawStatusBar(state);
@@ -232,7 +233,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     drawAnimationExportDialogs(state);
     drawCageMakerDialog(state);
     drawExportProgress(state);
-    drawFrameTimingsWindow(state.stats.frames, &state.showFrameTimings);
+    drawFrameTimingsWindow(state.status.stats.frames, &state.view.showFrameTimings);
   }
   drawErrorModal(state);
   drawRestoreModal(state);
@@ -242,9 +243,9 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   showNextExportFrame(state);
   timings.uiMs += msSince(uiStart);
   updateDeformation(state);
-  if (state.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
+  if (state.view.frameRequested) {  // after the deformation: the deformed mesh and the posed cage are both framed
     frameAll(state);
-    state.frameRequested = false;
+    state.view.frameRequested = false;
   }
   const auto measureStart = Clock::now();
   measureViews(state);
@@ -258,21 +259,21 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   int fbWidth = 0, fbHeight = 0;
   glfwGetFramebufferSize(window, &fbWidth, &fbHeight);
   const double scale = io.DisplaySize.x > 0 ? fbWidth / static_cast<double>(io.DisplaySize.x) : 1.0;
-  renderer.draw(state, views, fbWidth, fbHeight, scale, state.stats.timeFrames ? &timings : nullptr);
+  renderer.draw(state, views, fbWidth, fbHeight, scale, state.status.stats.timeFrames ? &timings : nullptr);
   captureExportFrame(state, fbWidth, fbHeight);  // the views without the panels
   uiStart = Clock::now();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (state.stats.timeFrames) render::finishGl();
+  if (state.status.stats.timeFrames) render::finishGl();
   timings.uiMs += msSince(uiStart);
 
-  if (!state.screenshotRequest.empty()) {
-    const std::string path = state.screenshotRequest;
-    state.screenshotRequest.clear();
+  if (!state.view.screenshotRequest.empty()) {
+    const std::string path = state.view.screenshotRequest;
+    state.view.screenshotRequest.clear();
     try {
       writePng(path, fbWidth, fbHeight, render::readPixelsRgba(fbWidth, fbHeight));
-      state.statusMessage = "saved screenshot " + path;
+      state.status.message = "saved screenshot " + path;
     } catch (const std::exception& e) {
-      state.errors.push_back(e.what());
+      state.status.errors.push_back(e.what());
     }
   }
   const auto swapStart = Clock::now();
@@ -280,8 +281,8 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   timings.swapMs = msSince(swapStart);
   updateTitle(window, state, title);
   timings.totalMs = msSince(frameStart);
-  state.stats.frames.add(timings);
-  if (state.logFrames) {  // --log-frames: tests and benchmarks read these lines
+  state.status.stats.frames.add(timings);
+  if (state.status.logFrames) {  // --log-frames: tests and benchmarks read these lines
     std::printf("%s\n", frameLogLine(timings).c_str());
     std::fflush(stdout);
   }
@@ -291,7 +292,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
 void printLegends(const AppState& state) {
   std::vector<int> printed;
   for (std::size_t v = 0; v < state.views().size(); ++v) {
-    const int quantity = state.quantities.show.view(v).quantity;
+    const int quantity = state.view.quantities.show.view(v).quantity;
     if (quantity == 0 || std::find(printed.begin(), printed.end(), quantity) != printed.end()) continue;
     printed.push_back(quantity);
     const ColorRange range = shownRange(state, quantity);
@@ -301,30 +302,30 @@ void printLegends(const AppState& state) {
 
 // Anything that needs frames without new input.
 bool changing(const AppState& state) {
-  return state.deformDirty || !state.screenshotRequest.empty() || !state.droppedPaths.empty() || state.frameRequested ||
-         state.interaction.mode != Interaction::Mode::Idle;
+  return state.model.deformDirty || !state.view.screenshotRequest.empty() || !state.files.droppedPaths.empty() ||
+         state.view.frameRequested || state.input.mouse.mode != Interaction::Mode::Idle;
 }
 
 // Writes the session when the interval has passed and it changed; not while a scene loads (the pose would not match
 // the files) or while a crashed session waits for Restore / Discard (it would be overwritten).
 void autosaveTick(Autosave& autosave, AppState& state) {
-  if (!state.scene || state.loadingScene || state.restoreOffer) return;
+  if (!state.model.scene || state.loadingScene() || state.files.restoreOffer) return;
   try {
     autosave.tick(makeSession(state), glfwGetTime());
   } catch (const std::exception& e) {
-    state.statusMessage = std::string("autosave failed: ") + e.what();
+    state.status.message = std::string("autosave failed: ") + e.what();
   }
 }
 
 // Waits until the worker has delivered every deformer the views need (or failed).
 bool waitForScene(AppState& state) {
   for (int round = 0; round < 8; ++round) {
-    std::optional<PrecomputeOutcome> outcome = state.worker.wait();
+    std::optional<PrecomputeOutcome> outcome = state.jobs.precompute.wait();
     if (outcome) installOutcome(state, std::move(*outcome));
-    if (!state.errors.empty()) return false;
-    if (!state.scene) return false;
+    if (!state.status.errors.empty()) return false;
+    if (!state.model.scene) return false;
     ensureDeformers(state);
-    if (!state.worker.busy()) return true;
+    if (!state.jobs.precompute.busy()) return true;
   }
   return false;
 }
@@ -407,16 +408,16 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
       jobFinished->store(true);
       glfwPostEmptyEvent();
     });
-    state.glRenderer = glRenderer;
+    state.status.glRenderer = glRenderer;
     applyOptions(state, options);
     chooseDevices(state, options, devices);
     // Recent files persist only in interactive use: a --screenshot run must not touch the user's list.
     if (!headless) {
-      state.recentPath = recentFilesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
-      state.recent = loadRecentFiles(state.recentPath);
+      state.files.recentPath = recentFilesPath(std::getenv("XDG_CONFIG_HOME"), std::getenv("HOME"));
+      state.files.recent = loadRecentFiles(state.files.recentPath);
     }
-    state.logActions = options.logActions;
-    state.logFrames = options.logFrames;
+    state.status.logActions = options.logActions;
+    state.status.logFrames = options.logFrames;
     // Events are polled only inside this block, so the pointer never outlives `state`.
     WindowLink windowLink;
     windowLink.state = &state;
@@ -432,15 +433,15 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     } else if (options.restoreAutosave) {
       leftover = findAutosaveLeftover(autosaveFiles);
     }
-    if (!leftover.error.empty()) state.errors.push_back(leftover.error);
+    if (!leftover.error.empty()) state.status.errors.push_back(leftover.error);
     if (leftover.otherEditorRunning)
-      state.statusMessage = "another SomiCage editor is running: this one does not autosave";
-    state.restoreOffer = leftover.session;
-    state.restoreOfferTime = leftover.savedAt;
-    if (options.restoreAutosave && !state.restoreOffer)
+      state.status.message = "another SomiCage editor is running: this one does not autosave";
+    state.files.restoreOffer = leftover.session;
+    state.files.restoreOfferTime = leftover.savedAt;
+    if (options.restoreAutosave && !state.files.restoreOffer)
       std::fprintf(stderr, "somicage: --restore-autosave: no session of a crashed run to restore\n");
 
-    if (options.restoreAutosave && state.restoreOffer) {
+    if (options.restoreAutosave && state.files.restoreOffer) {
       acceptRestoreOffer(state);
     } else if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
@@ -453,40 +454,40 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
 
     if (headless) {
       if (!waitForScene(state)) {
-        for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+        for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
         rc = 2;
       } else {
-        if (options.showFieldVertex >= state.scene->restCage.numVertices()) {
+        if (options.showFieldVertex >= state.model.scene->restCage.numVertices()) {
           std::fprintf(stderr, "somicage: --show field:%d: the cage has %d vertices (0 .. %d)\n",
-                       options.showFieldVertex, state.scene->restCage.numVertices(),
-                       state.scene->restCage.numVertices() - 1);
+                       options.showFieldVertex, state.model.scene->restCage.numVertices(),
+                       state.model.scene->restCage.numVertices() - 1);
           rc = 2;
         } else {
-          if (options.showFieldVertex >= 0) state.selection.setIndices({options.showFieldVertex});
+          if (options.showFieldVertex >= 0) state.input.selection.setIndices({options.showFieldVertex});
           if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
             openCageMaker(state, options.makeCageFaces);
-            state.cageMaker.wait();
-            if (const auto& candidate = state.cageMaker.candidate()) {
+            state.jobs.cageMaker.wait();
+            if (const auto& candidate = state.jobs.cageMaker.candidate()) {
               const GeneratedCage& g = candidate->generated;
               std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
                           g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
             } else {
-              state.errors.push_back("make cage: " + state.cageMaker.error());
+              state.status.errors.push_back("make cage: " + state.jobs.cageMaker.error());
             }
           }
           // A few frames let ImGui settle its layout before the capture; the measurements are waited for.
           for (int i = 0; i < 4; ++i) {
             if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
             if (i >= 1) waitForMeasurements(state);
-            if (i == 3) state.screenshotRequest = options.screenshotPath;
+            if (i == 3) state.view.screenshotRequest = options.screenshotPath;
             frame(window, state, renderer, title, windowLink.queue);
           }
-          if (!state.errors.empty()) {
-            for (const std::string& e : state.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+          if (!state.status.errors.empty()) {
+            for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
             rc = 1;
           } else {
             std::printf("wrote %s (deformation device: %s)\n", options.screenshotPath.c_str(),
-                        state.devices.active().c_str());
+                        state.model.devices.active().c_str());
             printLegends(state);
           }
         }
@@ -494,12 +495,13 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     } else {
       FramePacer pacer;
       auto last = std::chrono::steady_clock::now();
-      while (!state.quitRequested) {
+      while (!state.document.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.worker.busy() || state.exporter.busy() || state.quantities.worker.busy() ||
-                      state.quantities.worker.ready() || state.quantities.sweepRequested || state.loadingScene ||
-                      state.animation.playing || state.cageMaker.status() == CageMaker::Status::Generating ||
+        demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() ||
+                      state.view.quantities.worker.busy() || state.view.quantities.worker.ready() ||
+                      state.view.quantities.sweepRequested || state.loadingScene() || state.animation.playing ||
+                      state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);
@@ -518,11 +520,12 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
           const auto now = std::chrono::steady_clock::now();
           const double dt = std::chrono::duration<double>(now - last).count();
           last = now;
-          if (dt > 0 && dt < 1.0) state.stats.fps = state.stats.fps > 0 ? 0.9 * state.stats.fps + 0.1 / dt : 1.0 / dt;
+          if (dt > 0 && dt < 1.0)
+            state.status.stats.fps = state.status.stats.fps > 0 ? 0.9 * state.status.stats.fps + 0.1 / dt : 1.0 / dt;
         }
         if (autosave) autosaveTick(*autosave, state);
       }
-      state.worker.cancel();
+      state.jobs.precompute.cancel();
       // The user chose to quit (and answered the unsaved-changes question): only now the autosave goes.
       if (autosave) autosave->finish();
     }

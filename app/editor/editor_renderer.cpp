@@ -37,7 +37,7 @@ Renderer::Renderer() = default;
 
 bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, bool newScene) {
   const ViewSpec view = state.views()[v];
-  const std::shared_ptr<const CageDeformer>& deformer = state.deformers.at(deformerKey(view));
+  const std::shared_ptr<const CageDeformer>& deformer = state.model.deformers.at(deformerKey(view));
   if (!slot.gpu) slot.gpu = std::make_unique<render::GpuDeformer>();
   const bool newDeformer = slot.uploaded != deformer;
   if (newDeformer) {
@@ -45,15 +45,15 @@ bool Renderer::syncGpu(MeshSlot& slot, const AppState& state, std::size_t v, boo
     slot.gpu->upload(*deformer);
     slot.uploaded = deformer;
   }
-  const bool current = slot.onGpu && slot.view == view && slot.deformGeneration == state.deformGeneration;
+  const bool current = slot.onGpu && slot.view == view && slot.deformGeneration == state.model.deformGeneration;
   if (!newScene && !newDeformer && current) return false;
-  slot.gpu->deform(state.pose, view.params(state.params), *slot.mesh);
+  slot.gpu->deform(state.document.pose, view.params(state.document.params), *slot.mesh);
   slot.onGpu = true;
   return true;
 }
 
 void Renderer::sync(AppState& state) {
-  if (!state.scene) return;
+  if (!state.model.scene) return;
   const std::vector<ViewSpec> views = state.views();
   if (meshes_.size() < views.size()) meshes_.resize(views.size());
   for (std::size_t v = views.size(); v < meshes_.size(); ++v) {  // hidden views give their GPU memory back
@@ -61,21 +61,21 @@ void Renderer::sync(AppState& state) {
     meshes_[v].uploaded.reset();
     meshes_[v].onGpu = false;
   }
-  const bool inPlace = state.devices.inPlace();
+  const bool inPlace = state.model.devices.inPlace();
   double gpuMs = 0.0, cpuMs = 0.0;
   bool ranOnGpu = false, timed = false;
   for (std::size_t v = 0; v < views.size(); ++v) {
     MeshSlot& slot = meshes_[v];
     if (!slot.mesh) slot.mesh = std::make_unique<render::MeshRenderer>();
-    const bool newScene = slot.sceneGeneration != state.sceneGeneration;
-    if (newScene) slot.mesh->setTopology(state.scene->meshTriangles);
-    if (state.devices.inPlace() && hasDeformer(state, deformerKey(views[v]))) {  // (a failure turns it off)
+    const bool newScene = slot.sceneGeneration != state.model.sceneGeneration;
+    if (newScene) slot.mesh->setTopology(state.model.scene->meshTriangles);
+    if (state.model.devices.inPlace() && hasDeformer(state, deformerKey(views[v]))) {  // (a failure turns it off)
       try {
         if (syncGpu(slot, state, v, newScene)) {
           ranOnGpu = true;
           cpuMs += slot.gpu->lastCpuMilliseconds();
-          state.stats.frame.deformMs += slot.gpu->lastCpuMilliseconds();
-          ++state.stats.frame.deforms;
+          state.status.stats.frame.deformMs += slot.gpu->lastCpuMilliseconds();
+          ++state.status.stats.frame.deforms;
         }
         const double ms = slot.gpu->lastGpuMilliseconds();
         if (std::isfinite(ms)) {
@@ -83,16 +83,16 @@ void Renderer::sync(AppState& state) {
           timed = true;
         }
       } catch (const InputError& e) {  // bad parameters: as on the CPU path
-        state.errors.push_back(std::string("deformation failed: ") + e.what());
+        state.status.errors.push_back(std::string("deformation failed: ") + e.what());
       } catch (const std::exception& e) {  // the GPU cannot do it (shader, memory): fall back to the CPU for good
         deviceFailed(state, kInPlaceDevice, e.what());
-        state.deformDirty = true;
+        state.model.deformDirty = true;
         slot.gpu.reset();
         slot.uploaded.reset();
         slot.onGpu = false;
       }
-      slot.sceneGeneration = state.sceneGeneration;
-      slot.deformGeneration = state.deformGeneration;
+      slot.sceneGeneration = state.model.sceneGeneration;
+      slot.deformGeneration = state.model.deformGeneration;
       slot.view = views[v];
       slot.showedDeformed = true;
       continue;
@@ -101,34 +101,35 @@ void Renderer::sync(AppState& state) {
       slot.gpu.reset();
       slot.uploaded.reset();
     }
-    const bool deformed = hasDeformer(state, deformerKey(views[v])) && v < state.deformed.size() &&
-                          state.deformed[v].rows() == state.scene->meshVertices.rows();
-    if (newScene || slot.view != views[v] || slot.deformGeneration != state.deformGeneration ||
+    const bool deformed = hasDeformer(state, deformerKey(views[v])) && v < state.model.deformed.size() &&
+                          state.model.deformed[v].rows() == state.model.scene->meshVertices.rows();
+    if (newScene || slot.view != views[v] || slot.deformGeneration != state.model.deformGeneration ||
         slot.showedDeformed != deformed || slot.onGpu) {
-      uploadPositions(*slot.mesh, displayedPoints(state, v), state.scene->meshTriangles, state.stats.frame);
-      slot.sceneGeneration = state.sceneGeneration;
-      slot.deformGeneration = state.deformGeneration;
+      uploadPositions(*slot.mesh, displayedPoints(state, v), state.model.scene->meshTriangles,
+                      state.status.stats.frame);
+      slot.sceneGeneration = state.model.sceneGeneration;
+      slot.deformGeneration = state.model.deformGeneration;
       slot.view = views[v];
       slot.showedDeformed = deformed;
       slot.onGpu = false;
     }
   }
-  syncScalars(state, state.stats.frame);
+  syncScalars(state, state.status.stats.frame);
   for (std::size_t v = 0; v < views.size(); ++v) syncTets(meshes_[v], state, v);
-  if (ranOnGpu) state.stats.lastDeformCpuMs = cpuMs;
-  if (inPlace && state.devices.inPlace())
-    state.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
-  if (cageScene_ != state.sceneGeneration) {
-    cage_.setTopology(state.scene->restCage.faces);
-    cageScene_ = state.sceneGeneration;
+  if (ranOnGpu) state.status.stats.lastDeformCpuMs = cpuMs;
+  if (inPlace && state.model.devices.inPlace())
+    state.status.stats.lastDeformMs = timed ? gpuMs : std::numeric_limits<double>::quiet_NaN();
+  if (cageScene_ != state.model.sceneGeneration) {
+    cage_.setTopology(state.model.scene->restCage.faces);
+    cageScene_ = state.model.sceneGeneration;
     cagePose_ = ~0ull;
   }
-  if (cagePose_ != state.poseGeneration) {
-    cage_.setPositions(state.pose);
-    cage_.setSelection(state.selection.flags());
-    cagePose_ = state.poseGeneration;
+  if (cagePose_ != state.document.poseGeneration) {
+    cage_.setPositions(state.document.pose);
+    cage_.setSelection(state.input.selection.flags());
+    cagePose_ = state.document.poseGeneration;
   }
-  const CageMaker& maker = state.cageMaker;
+  const CageMaker& maker = state.jobs.cageMaker;
   if (previewGeneration_ != maker.candidateGeneration()) {
     previewGeneration_ = maker.candidateGeneration();
     if (maker.candidate()) {
@@ -139,9 +140,9 @@ void Renderer::sync(AppState& state) {
 }
 
 void Renderer::syncTets(MeshSlot& slot, const AppState& state, std::size_t v) {
-  const auto found = state.deformers.find(deformerKey(state.views()[v]));
-  const std::shared_ptr<const CageDeformer> deformer = found == state.deformers.end() ? nullptr : found->second;
-  slot.tetsShown = state.showTets && deformer && deformer->volumeMesh();
+  const auto found = state.model.deformers.find(deformerKey(state.views()[v]));
+  const std::shared_ptr<const CageDeformer> deformer = found == state.model.deformers.end() ? nullptr : found->second;
+  slot.tetsShown = state.view.showTets && deformer && deformer->volumeMesh();
   if (!slot.tetsShown) return;
   if (!slot.tets) slot.tets = std::make_unique<render::CageRenderer>();
   if (slot.tetsDeformer != deformer) {
@@ -149,10 +150,10 @@ void Renderer::syncTets(MeshSlot& slot, const AppState& state, std::size_t v) {
     slot.tetsDeformer = deformer;
     slot.tetsGeneration = ~0ull;
   }
-  if (slot.tetsGeneration == state.deformGeneration) return;
+  if (slot.tetsGeneration == state.model.deformGeneration) return;
   try {  // the Steiner vertices where this frame puts them (a solve as small as the mesh)
-    slot.tets->setPositions(deformer->posedVolumeMesh(state.pose, state.viewParams(v)));
-    slot.tetsGeneration = state.deformGeneration;
+    slot.tets->setPositions(deformer->posedVolumeMesh(state.document.pose, state.viewParams(v)));
+    slot.tetsGeneration = state.model.deformGeneration;
   } catch (const InputError&) {  // parameters the method refuses: the deformation reports them
     slot.tetsShown = false;
   }
@@ -162,17 +163,17 @@ void Renderer::syncScalars(const AppState& state, FrameTimings& timings) {
   const std::vector<ViewSpec> views = state.views();
   for (std::size_t v = 0; v < views.size() && v < meshes_.size(); ++v) {
     MeshSlot& slot = meshes_[v];
-    const int quantity = state.quantities.show.view(v).quantity;
+    const int quantity = state.view.quantities.show.view(v).quantity;
     const QuantityDescriptor& d = quantityDescriptor(quantity);
     const ColorRange range = quantity > 0 ? shownRange(state, quantity) : ColorRange{};
-    if (slot.quantityGeneration == state.quantities.generation && slot.view == views[v] && slot.quantity == quantity &&
-        slot.range.lo == range.lo && slot.range.hi == range.hi)
+    if (slot.quantityGeneration == state.view.quantities.generation && slot.view == views[v] &&
+        slot.quantity == quantity && slot.range.lo == range.lo && slot.range.hi == range.hi)
       continue;
-    slot.quantityGeneration = state.quantities.generation;
+    slot.quantityGeneration = state.view.quantities.generation;
     slot.quantity = quantity;
     slot.range = range;
-    const ViewMeasurement* m = quantity > 0 ? state.quantities.measurement(v) : nullptr;
-    if (!m || m->values.size() != state.scene->meshVertices.rows()) {
+    const ViewMeasurement* m = quantity > 0 ? state.view.quantities.measurement(v) : nullptr;
+    if (!m || m->values.size() != state.model.scene->meshVertices.rows()) {
       slot.colorMap = -1;
       continue;
     }
@@ -190,13 +191,13 @@ void Renderer::syncScalars(const AppState& state, FrameTimings& timings) {
 void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, int framebufferWidth,
                     int framebufferHeight, double framebufferScale, FrameTimings* timings) {
   render::clearFramebuffer(framebufferWidth, framebufferHeight, kBackground);
-  if (!state.scene) return;
+  if (!state.model.scene) return;
   render::ViewMatrices matrices;
-  matrices.view = state.camera.viewMatrix().cast<float>();
-  matrices.orthographic = state.camera.mode2D();
+  matrices.view = state.view.camera.viewMatrix().cast<float>();
+  matrices.orthographic = state.view.camera.mode2D();
   render::MeshStyle meshStyle;
-  meshStyle.wireframe = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
-  meshStyle.flat = state.flatShading;
+  meshStyle.wireframe = state.view.wireframe < 0 ? state.dim() == 2 : state.view.wireframe > 0;
+  meshStyle.flat = state.view.flatShading;
   render::CageStyle cageStyle;
   if (state.dim() == 2) cageStyle.edgeColor = Eigen::Vector4f(0.25f, 0.45f, 0.95f, 1.0f);
   render::CageStyle previewStyle;  // Make cage's candidate: green, no handles (it cannot be edited yet)
@@ -217,16 +218,16 @@ void Renderer::draw(const AppState& state, const std::vector<ViewRect>& views, i
     rect.y =
         framebufferHeight - static_cast<int>(std::lround(r.y * framebufferScale)) - rect.height;  // GL: bottom-left
     render::beginViewport(rect, &kViewBackground);
-    matrices.projection = state.camera.projectionMatrix(r.width / r.height).cast<float>();
-    meshStyle.colorMap = state.quantities.show.view(v).quantity > 0 ? meshes_[v].colorMap : -1;
-    if (state.showMesh && meshes_[v].mesh) {
+    matrices.projection = state.view.camera.projectionMatrix(r.width / r.height).cast<float>();
+    meshStyle.colorMap = state.view.quantities.show.view(v).quantity > 0 ? meshes_[v].colorMap : -1;
+    if (state.view.showMesh && meshes_[v].mesh) {
       meshes_[v].mesh->draw(matrices, meshStyle);
       if (timings) ++timings->meshDraws;
     }
     if (meshes_[v].tetsShown) meshes_[v].tets->draw(matrices, tetsStyle);
-    if (state.cageMaker.isOpen() && state.cageMaker.candidate()) {
+    if (state.jobs.cageMaker.isOpen() && state.jobs.cageMaker.candidate()) {
       preview_.draw(matrices, previewStyle);  // in place of the scene's cage
-    } else if (state.showCage) {
+    } else if (state.view.showCage) {
       cage_.draw(matrices, cageStyle);
     }
     if (timings) {  // the pane's commands run now, not at the swap (llvmpipe rasterises at the flush)

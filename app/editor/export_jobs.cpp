@@ -11,16 +11,16 @@
 namespace somicage::editor {
 
 void pollExport(AppState& state) {
-  std::optional<ExportOutcome> outcome = state.exporter.poll();
+  std::optional<ExportOutcome> outcome = state.jobs.exporter.poll();
   if (!outcome) return;
   if (outcome->cancelled) {
-    state.statusMessage = "export cancelled; nothing was written to " + outcome->target;
+    state.status.message = "export cancelled; nothing was written to " + outcome->target;
   } else if (!outcome->error.empty()) {
-    state.errors.push_back(outcome->error);
-    state.statusMessage = "export failed; nothing was written to " + outcome->target;
+    state.status.errors.push_back(outcome->error);
+    state.status.message = "export failed; nothing was written to " + outcome->target;
   } else {
-    for (const std::string& note : outcome->notes) state.errors.push_back("export: " + note);
-    state.statusMessage = outcome->doneMessage;
+    for (const std::string& note : outcome->notes) state.status.errors.push_back("export: " + note);
+    state.status.message = outcome->doneMessage;
   }
 }
 
@@ -38,14 +38,14 @@ ExportWorker::Job makeMeshExportJob(AppState& state, const std::string& path) {
   ensureCpuPoints(state, 0);
   const Eigen::MatrixXd& points = displayedPoints(state, 0);
   const Method method = state.views().front().method;
-  const std::shared_ptr<const Scene> scene = state.scene;
+  const std::shared_ptr<const Scene> scene = state.model.scene;
   ExportWorker::Job job;
   if (scene->document) {  // a file: everything of it but the positions is kept (core/mesh_formats.h)
     Eigen::MatrixXd positions = scene->document->geometry.vertices;  // a 2D scene keeps z
     positions.leftCols(points.cols()) = points;
     std::shared_ptr<const CageDeformer> deformer;
-    if (hasDeformer(state, method) && scene->document->normalCount > 0) deformer = state.deformers.at(method);
-    job = [scene, deformer, positions, path, pose = state.pose,
+    if (hasDeformer(state, method) && scene->document->normalCount > 0) deformer = state.model.deformers.at(method);
+    job = [scene, deformer, positions, path, pose = state.document.pose,
            params = state.viewParams(0)](const ProgressCallback& progress) {
       std::vector<std::string> notes;
       Eigen::MatrixXd normals;  // empty: recomputed by the writer
@@ -78,41 +78,43 @@ ExportWorker::Job makeMeshExportJob(AppState& state, const std::string& path) {
 }
 
 bool exportDeformedMesh(AppState& state, const std::string& path) {
-  if (!state.scene) return false;
-  if (state.exporter.busy()) {
-    state.errors.push_back("Export: another export is running; wait for it or cancel it");
+  if (!state.model.scene) return false;
+  if (state.jobs.exporter.busy()) {
+    state.status.errors.push_back("Export: another export is running; wait for it or cancel it");
     return false;
   }
-  state.exporter.start(
+  state.jobs.exporter.start(
       path, "exported the deformed mesh (" + std::string(state.views().front().method->displayName) + ") to " + path,
       makeMeshExportJob(state, path));
-  state.statusMessage = "exporting the deformed mesh to " + path;
+  state.status.message = "exporting the deformed mesh to " + path;
   return true;
 }
 
 ExportWorker::Job makeAnimationExportJob(AppState& state, AnimationExportJob::Kind kind, const std::string& out) {
   if (kind == AnimationExportJob::Kind::Glb && !writesGlb(out)) {
-    state.errors.push_back("Export animation: " + out + " does not end in .glb; give a file name like animation.glb");
+    state.status.errors.push_back("Export animation: " + out +
+                                  " does not end in .glb; give a file name like animation.glb");
     return {};
   }
   if (kind == AnimationExportJob::Kind::ObjSequence && writesGlb(out)) {
-    state.errors.push_back("Export animation: " + out + " ends in .glb; give a new folder for the OBJ sequence");
+    state.status.errors.push_back("Export animation: " + out + " ends in .glb; give a new folder for the OBJ sequence");
     return {};
   }
-  if (!hasDeformer(state, state.method)) {
-    state.errors.push_back("Export animation: the coordinates are still being computed; export when they are ready");
+  if (!hasDeformer(state, state.document.method)) {
+    state.status.errors.push_back(
+        "Export animation: the coordinates are still being computed; export when they are ready");
     return {};
   }
-  if (state.exporter.busy()) {
-    state.errors.push_back("Export animation: another export is running; wait for it or cancel it");
+  if (state.jobs.exporter.busy()) {
+    state.status.errors.push_back("Export animation: another export is running; wait for it or cancel it");
     return {};
   }
-  const std::shared_ptr<const Scene> scene = state.scene;
-  const std::shared_ptr<const CageDeformer> deformer = state.deformers.at(state.method);
+  const std::shared_ptr<const Scene> scene = state.model.scene;
+  const std::shared_ptr<const CageDeformer> deformer = state.model.deformers.at(state.document.method);
   const AnimationState& a = state.animation;
   const int first = a.timeline.firstFrame, last = a.timeline.lastFrame;
   const bool carryNormals = kind == AnimationExportJob::Kind::ObjSequence && scene->document->normalCount > 0;
-  return [scene, deformer, timeline = a.timeline, poses = a.poses, params = state.params, out, first, last,
+  return [scene, deformer, timeline = a.timeline, poses = a.poses, params = state.document.params, out, first, last,
           carryNormals](const ProgressCallback& progress) {
     const MeshDocument& document = *scene->document;
     const std::vector<Eigen::MatrixXd> frames =

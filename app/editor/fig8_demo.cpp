@@ -32,12 +32,13 @@ void requestFig8Demo(AppState& state, bool keepViews) {
   auto scene = std::make_shared<Scene>(makeDemoScene(3));
   scene->name = "Fig. 8 demo (3D bar)";
   if (!keepViews) {  // set before the request, which precomputes the views' deformers
-    state.compareViews = fig8Views();
-    state.compare = true;
-    state.quantities.clearSweep();
+    state.view.compareViews = fig8Views();
+    state.view.compare = true;
+    state.view.quantities.clearSweep();
   }
-  state.pendingPose = fig8Pose(scene->restCage);
-  requestScene(state, std::move(scene));
+  PendingLoad load;
+  load.pose = fig8Pose(scene->restCage);
+  requestScene(state, std::move(scene), std::move(load));
 }
 
 }  // namespace somicage::editor

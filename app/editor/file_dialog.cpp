@@ -69,7 +69,7 @@ bool act(AppState& state, FileDialogPurpose purpose, const std::string& path) {
       guardUnsaved(state, "open " + path, [path](AppState& s) { loadSessionFile(s, path); });
       return true;
     case FileDialogPurpose::Screenshot:
-      state.screenshotRequest = path;
+      state.view.screenshotRequest = path;
       return true;
     case FileDialogPurpose::OpenScene:
     case FileDialogPurpose::None:
@@ -79,15 +79,15 @@ bool act(AppState& state, FileDialogPurpose purpose, const std::string& path) {
 }
 
 void close(AppState& state, bool saved) {
-  const bool sessionDialog = state.dialog.purpose == FileDialogPurpose::SaveSession;
-  state.dialog.purpose = FileDialogPurpose::None;
-  state.dialog.message.clear();
-  state.dialog.confirmPath.clear();
+  const bool sessionDialog = state.files.dialog.purpose == FileDialogPurpose::SaveSession;
+  state.files.dialog.purpose = FileDialogPurpose::None;
+  state.files.dialog.message.clear();
+  state.files.dialog.confirmPath.clear();
   if (sessionDialog) sessionDialogFinished(state, saved);
 }
 
 bool submitScene(AppState& state) {
-  FileDialogState& d = state.dialog;
+  FileDialogState& d = state.files.dialog;
   if (d.recentChoice && d.recentChoice->kind == RecentEntry::Kind::Session) {
     const RecentEntry entry = *d.recentChoice;
     close(state, false);
@@ -126,9 +126,9 @@ const char* purposeTitle(FileDialogPurpose purpose) { return info(purpose).title
 
 std::string defaultWriteFolder(const AppState& state) {
   std::vector<std::string> candidates;
-  if (!state.documentPath.empty()) {
+  if (!state.document.path.empty()) {
     std::error_code ec;
-    candidates.push_back(fs::absolute(state.documentPath, ec).lexically_normal().parent_path().string());
+    candidates.push_back(fs::absolute(state.document.path, ec).lexically_normal().parent_path().string());
   }
   candidates.push_back(currentFolder());
   if (const char* home = std::getenv("HOME")) candidates.emplace_back(home);
@@ -142,7 +142,7 @@ std::string writePath(const AppState& state, const std::string& path) {
 }
 
 void openFileDialog(AppState& state, FileDialogPurpose purpose) {
-  FileDialogState& d = state.dialog;
+  FileDialogState& d = state.files.dialog;
   d.purpose = purpose;
   d.justOpened = true;
   d.message.clear();
@@ -165,9 +165,9 @@ void openFileDialog(AppState& state, FileDialogPurpose purpose) {
   } else {
     d.name = p.name;
   }
-  if (purpose == FileDialogPurpose::OpenScene && state.scene && !state.scene->isDemo() && d.mesh.empty()) {
-    d.mesh = state.scene->meshPath;
-    d.cage = state.scene->cagePath;
+  if (purpose == FileDialogPurpose::OpenScene && state.model.scene && !state.model.scene->isDemo() && d.mesh.empty()) {
+    d.mesh = state.model.scene->meshPath;
+    d.cage = state.model.scene->cagePath;
   }
 }
 
@@ -179,7 +179,7 @@ std::string dialogPath(const FileDialogState& dialog, const std::string& name) {
 }
 
 bool submitFileDialog(AppState& state, bool overwriteConfirmed) {
-  FileDialogState& d = state.dialog;
+  FileDialogState& d = state.files.dialog;
   if (d.purpose == FileDialogPurpose::None) return true;
   if (d.purpose == FileDialogPurpose::OpenScene) return submitScene(state);
   const FileKind kind = purposeKind(d.purpose);
@@ -196,8 +196,8 @@ bool submitFileDialog(AppState& state, bool overwriteConfirmed) {
     return false;
   }
   if (!act(state, d.purpose, check.path)) {
-    d.message = state.errors.empty() ? "failed" : state.errors.back();
-    if (!state.errors.empty()) state.errors.pop_back();  // shown in the dialog instead of a second modal
+    d.message = state.status.errors.empty() ? "failed" : state.status.errors.back();
+    if (!state.status.errors.empty()) state.status.errors.pop_back();  // shown in the dialog instead of a second modal
     return false;
   }
   remember(d, kind, check.path);
@@ -230,13 +230,13 @@ namespace {
 // list grows); entries with a missing file are greyed out (the tooltip names it). A click chooses an entry, a double
 // click (returns true) opens it.
 bool drawRecentFiles(AppState& state) {
-  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
+  const std::vector<RecentEntry> entries = state.files.recent.entries();  // a copy: opening one reorders the list
   ImGui::Spacing();
   ImGui::TextColored(ImVec4(0.55f, 0.75f, 1.0f, 1.0f), "Recent");
   ImGui::BeginChild("##recentFiles", ImVec2(0, 5.5f * ImGui::GetTextLineHeightWithSpacing()), true);
   if (entries.empty()) ImGui::TextDisabled("(none yet: the scenes and sessions you open or save)");
   bool opened = false;
-  FileDialogState& d = state.dialog;
+  FileDialogState& d = state.files.dialog;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const RecentEntry& e = entries[i];
     const std::string missing = missingRecentPath(e);
@@ -313,13 +313,13 @@ bool drawBrowser(FileDialogState& d, const std::string& extension, std::string& 
 }  // namespace
 
 void drawFileDialog(AppState& state) {
-  FileDialogState& d = state.dialog;
+  FileDialogState& d = state.files.dialog;
   if (d.purpose == FileDialogPurpose::None) return;
   const char* title = purposeTitle(d.purpose);
   if (d.justOpened) {
     ImGui::OpenPopup(title);
     d.justOpened = false;
-    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
+    if (state.status.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
   }
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   // Height 0, always: the dialog grows with its message and never clips its buttons.

@@ -42,15 +42,15 @@ std::string chooseDevice(DeviceState& state, FrameDevices devices, const std::op
 }
 
 void deviceFailed(AppState& state, const std::string& name, const std::string& what) {
-  state.devices.unavailable[name] = "failed: " + what;
-  state.devices.evaluators.clear();
-  state.errors.push_back("the " + name + " deformation failed, using the CPU: " + what);
+  state.model.devices.unavailable[name] = "failed: " + what;
+  state.model.devices.evaluators.clear();
+  state.status.errors.push_back("the " + name + " deformation failed, using the CPU: " + what);
 }
 
 void deformOnDevice(AppState& state, const std::shared_ptr<const CageDeformer>& deformer, const DeformParams& params,
                     Eigen::MatrixXd& out) {
-  const FrameWeights W = deformer->frameWeights(state.pose, params);  // bad parameters throw here
-  DeviceState& devices = state.devices;
+  const FrameWeights W = deformer->frameWeights(state.document.pose, params);  // bad parameters throw here
+  DeviceState& devices = state.model.devices;
   const std::string name = devices.inPlace() ? kCpuDevice : devices.active();
   if (name != kCpuDevice) {
     try {

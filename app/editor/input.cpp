@@ -23,75 +23,77 @@ Eigen::Vector2d mousePos() {
   return {m.x, m.y};
 }
 
-void selectionChanged(AppState& state) { ++state.poseGeneration; }
+void selectionChanged(AppState& state) { ++state.document.poseGeneration; }
 
 // --log-actions: the keyboard commands, one line each, as they run (the GUI tests count them).
 void logAction(const AppState& state, const char* id) {
-  if (!state.logActions) return;
+  if (!state.status.logActions) return;
   std::printf("action %s\n", id);
   std::fflush(stdout);
 }
 
 double cageSize(const AppState& state) {
-  const Eigen::MatrixXd& rest = state.scene->restCage.vertices;
+  const Eigen::MatrixXd& rest = state.model.scene->restCage.vertices;
   return rest.rows() > 0 ? (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm() : 1.0;
 }
 
 void startModal(AppState& state, TransformKind kind, const std::vector<ViewRect>& views, int view) {
   if (views.empty()) return;
-  if (state.selection.empty()) {
-    state.statusMessage = std::string(transformName(kind)) + ": nothing selected (click a handle, or A for all)";
+  if (state.input.selection.empty()) {
+    state.status.message = std::string(transformName(kind)) + ": nothing selected (click a handle, or A for all)";
     return;
   }
   const ViewRect& r = views[static_cast<std::size_t>(view < 0 ? 0 : view)];
-  state.interaction.mode = Interaction::Mode::Modal;
-  state.interaction.view = view < 0 ? 0 : view;
-  state.interaction.transform =
-      beginTransform(kind, state.selection.indices(), state.pose, mousePos() - r.origin(), r.size());
-  state.interaction.transform->gridStep = gridStepFor(cageSize(state));
+  state.input.mouse.mode = Interaction::Mode::Modal;
+  state.input.mouse.view = view < 0 ? 0 : view;
+  state.input.mouse.transform =
+      beginTransform(kind, state.input.selection.indices(), state.document.pose, mousePos() - r.origin(), r.size());
+  state.input.mouse.transform->gridStep = gridStepFor(cageSize(state));
 }
 
 void clearSelected(AppState& state, ClearKind kind) {
-  if (state.selection.empty()) {
-    state.statusMessage = std::string(clearKindName(kind)) + ": nothing selected";
+  if (state.input.selection.empty()) {
+    state.status.message = std::string(clearKindName(kind)) + ": nothing selected";
     return;
   }
-  setPose(state, clearTransform(kind, state.scene->restCage.vertices, state.pose, state.selection.indices()));
-  state.statusMessage = commitEdit(state, clearKindName(kind)) ? clearKindName(kind)
-                                                               : std::string(clearKindName(kind)) + ": already at rest";
+  setPose(state, clearTransform(kind, state.model.scene->restCage.vertices, state.document.pose,
+                                state.input.selection.indices()));
+  state.status.message = commitEdit(state, clearKindName(kind))
+                             ? clearKindName(kind)
+                             : std::string(clearKindName(kind)) + ": already at rest";
 }
 
 void confirmTransform(AppState& state) {
-  if (state.interaction.transform) commitEdit(state, transformName(state.interaction.transform->kind));
-  state.interaction.transform.reset();
-  state.interaction.mode = Interaction::Mode::Idle;
+  if (state.input.mouse.transform) commitEdit(state, transformName(state.input.mouse.transform->kind));
+  state.input.mouse.transform.reset();
+  state.input.mouse.mode = Interaction::Mode::Idle;
 }
 
 void cancelTransform(AppState& state) {
-  if (state.interaction.transform) setPose(state, state.interaction.transform->original);
-  state.interaction.transform.reset();
-  state.interaction.mode = Interaction::Mode::Idle;
+  if (state.input.mouse.transform) setPose(state, state.input.mouse.transform->original);
+  state.input.mouse.transform.reset();
+  state.input.mouse.mode = Interaction::Mode::Idle;
 }
 
 void updateTransform(AppState& state, const std::vector<ViewRect>& views) {
-  if (!state.interaction.transform) return;
-  state.interaction.transform->fine = ImGui::GetIO().KeyShift;
-  state.interaction.transform->snap = ImGui::GetIO().KeyCtrl;
+  if (!state.input.mouse.transform) return;
+  state.input.mouse.transform->fine = ImGui::GetIO().KeyShift;
+  state.input.mouse.transform->snap = ImGui::GetIO().KeyCtrl;
   const ViewRect& r =
-      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
-  const Eigen::MatrixXd pose = applyTransform(*state.interaction.transform, state.camera, mousePos() - r.origin());
-  if (pose != state.pose) setPose(state, pose);
+      views[static_cast<std::size_t>(std::min<int>(state.input.mouse.view, static_cast<int>(views.size()) - 1))];
+  const Eigen::MatrixXd pose = applyTransform(*state.input.mouse.transform, state.view.camera, mousePos() - r.origin());
+  if (pose != state.document.pose) setPose(state, pose);
 }
 
 }  // namespace
 
 std::string transformHeader(const AppState& state, const std::vector<ViewRect>& views) {
-  const Interaction& it = state.interaction;
+  const Interaction& it = state.input.mouse;
   const bool modal = it.mode == Interaction::Mode::Modal;
   if (!it.transform || views.empty() || (!modal && it.mode != Interaction::Mode::HandleDrag)) return "";
   const ViewRect& r = views[static_cast<std::size_t>(std::min<int>(it.view, static_cast<int>(views.size()) - 1))];
   if (!modal && (mousePos() - it.pressMouse).norm() < kDragThreshold) return "";  // a click, not a drag yet
-  const std::string text = describeTransform(*it.transform, state.camera, mousePos() - r.origin());
+  const std::string text = describeTransform(*it.transform, state.view.camera, mousePos() - r.origin());
   return modal ? text : text.substr(0, text.find("   ["));  // a drag: no keys to list, the release confirms
 }
 
@@ -101,7 +103,7 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
   const std::string text = transformHeader(state, views);
   if (text.empty()) return;
   const ViewRect& r =
-      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+      views[static_cast<std::size_t>(std::min<int>(state.input.mouse.view, static_cast<int>(views.size()) - 1))];
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const ImVec2 size = ImGui::CalcTextSize(text.c_str());
   const ImVec2 pos(static_cast<float>(r.x + 0.5 * (r.width - size.x)), static_cast<float>(r.y + 34));
@@ -112,15 +114,15 @@ void drawTransformHeader(const AppState& state, const std::vector<ViewRect>& vie
 
 // The active axis as a line through the pivot, in the axis colour (x red, y green, z blue), across the view.
 void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
-  const std::optional<TransformSession>& t = state.interaction.transform;
+  const std::optional<TransformSession>& t = state.input.mouse.transform;
   if (!t || t->axis == Axis::None || (t->axis == Axis::Z && state.dim() == 2)) return;
   const ViewRect& r =
-      views[static_cast<std::size_t>(std::min<int>(state.interaction.view, static_cast<int>(views.size()) - 1))];
+      views[static_cast<std::size_t>(std::min<int>(state.input.mouse.view, static_cast<int>(views.size()) - 1))];
   Eigen::Vector3d dir = Eigen::Vector3d::Zero();
   dir[static_cast<int>(t->axis) - 1] = 1.0;
   Eigen::Vector2d centre;
-  const Eigen::Vector2d screenDir(dir.dot(state.camera.right()), -dir.dot(state.camera.up()));
-  if (!state.camera.project(t->pivot, r.width, r.height, centre) || screenDir.norm() < 1e-3) return;
+  const Eigen::Vector2d screenDir(dir.dot(state.view.camera.right()), -dir.dot(state.view.camera.up()));
+  if (!state.view.camera.project(t->pivot, r.width, r.height, centre) || screenDir.norm() < 1e-3) return;
   const Eigen::Vector2d a = centre - 4000.0 * screenDir.normalized(), b = centre + 4000.0 * screenDir.normalized();
   const ImU32 colours[3] = {IM_COL32(235, 70, 70, 220), IM_COL32(90, 210, 90, 220), IM_COL32(80, 140, 255, 220)};
   // The background list: over the 3D picture, under the panels and dialogs.
@@ -135,16 +137,16 @@ void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
 
 // The selection's gizmo (gizmo.h) in view `r`; `hot` is the part under the mouse (drawn brighter).
 bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
-  if (state.selection.empty()) return false;
-  const Eigen::VectorXd c = state.selection.centroid(state.pose);
+  if (state.input.selection.empty()) return false;
+  const Eigen::VectorXd c = state.input.selection.centroid(state.document.pose);
   Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
   for (Eigen::Index k = 0; k < std::min<Eigen::Index>(c.size(), 3); ++k) pivot[k] = c[k];
-  return layoutGizmo(state.camera, pivot, state.dim(), r.width, r.height, g);
+  return layoutGizmo(state.view.camera, pivot, state.dim(), r.width, r.height, g);
 }
 
 void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
   GizmoLayout g;
-  if (!state.showCage || !selectionGizmo(state, r, g)) return;  // the handles' gizmo goes with the cage
+  if (!state.view.showCage || !selectionGizmo(state, r, g)) return;  // the handles' gizmo goes with the cage
   const auto at = [&](const Eigen::Vector2d& p) {
     return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
   };
@@ -175,9 +177,9 @@ void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {
 
 // What a click would pick (element_pick.h), outlined under the mouse.
 void drawHover(const AppState& state, const ViewRect& r, const Eigen::Vector2d& mouse) {
-  const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+  const std::vector<ScreenPoint> pts = projectPoints(state.view.camera, state.document.pose, r.width, r.height);
   const std::vector<int> hit =
-      pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+      pickElement(state.input.elementMode, pts, state.model.scene->restCage.faces, mouse - r.origin(), kPickRadius);
   if (hit.empty()) return;
   const auto at = [&](int v) {
     const Eigen::Vector2d& p = pts[static_cast<std::size_t>(v)].position;
@@ -197,10 +199,11 @@ void drawHover(const AppState& state, const ViewRect& r, const Eigen::Vector2d& 
 
 // The selected edges (both vertices selected) in the selection's colour, over the cage's own edges.
 void drawSelectedEdges(const AppState& state, const ViewRect& r) {
-  if (!state.showCage || state.selection.empty()) return;
-  const std::vector<std::pair<int, int>> edges = selectedEdges(state.scene->restCage.faces, state.selection.flags());
+  if (!state.view.showCage || state.input.selection.empty()) return;
+  const std::vector<std::pair<int, int>> edges =
+      selectedEdges(state.model.scene->restCage.faces, state.input.selection.flags());
   if (edges.empty()) return;
-  const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+  const std::vector<ScreenPoint> pts = projectPoints(state.view.camera, state.document.pose, r.width, r.height);
   const auto at = [&](int v) {
     const Eigen::Vector2d& p = pts[static_cast<std::size_t>(v)].position;
     return ImVec2(static_cast<float>(r.x + p.x()), static_cast<float>(r.y + p.y()));
@@ -210,9 +213,9 @@ void drawSelectedEdges(const AppState& state, const ViewRect& r) {
 }
 
 void setElementMode(AppState& state, ElementMode mode) {
-  state.elementMode = mode;
-  state.statusMessage = std::string("a click selects ") + elementModeName(mode) +
-                        (mode == ElementMode::Vertex ? "" : " (their vertices)");
+  state.input.elementMode = mode;
+  state.status.message = std::string("a click selects ") + elementModeName(mode) +
+                         (mode == ElementMode::Vertex ? "" : " (their vertices)");
 }
 
 // Digits, '.', '-' and Backspace during G / R / S (Blender's numeric input).
@@ -226,14 +229,14 @@ void typeNumbers(AppState& state, const std::vector<ViewRect>& views) {
       {GLFW_KEY_PERIOD, '.'},    {GLFW_KEY_KP_DECIMAL, '.'}, {GLFW_KEY_MINUS, '-'}, {GLFW_KEY_KP_SUBTRACT, '-'},
       {GLFW_KEY_BACKSPACE, '\b'}};
   for (const auto& [key, c] : kKeys) {
-    if (ImGui::IsKeyPressed(key) && typeIntoTransform(*state.interaction.transform, c)) updateTransform(state, views);
+    if (ImGui::IsKeyPressed(key) && typeIntoTransform(*state.input.mouse.transform, c)) updateTransform(state, views);
   }
 }
 
 void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hoveredView) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool ctrl = io.KeyCtrl, shift = io.KeyShift, alt = io.KeyAlt;
-  Interaction& it = state.interaction;
+  Interaction& it = state.input.mouse;
 
   if (it.mode == Interaction::Mode::Modal) {
     if (ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) {
@@ -283,12 +286,12 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
   static const ViewKey kViewKeys[] = {
       {GLFW_KEY_A, kNoMods, "select_all",
        [](AppState& s, const std::vector<ViewRect>&, int) {
-         s.selection.selectAll();
+         s.input.selection.selectAll();
          selectionChanged(s);
        }},
       {GLFW_KEY_A, kAlt, "select_none",
        [](AppState& s, const std::vector<ViewRect>&, int) {
-         s.selection.clear();
+         s.input.selection.clear();
          selectionChanged(s);
        }},
       {GLFW_KEY_G, kNoMods, "grab",
@@ -323,9 +326,9 @@ void handleKeys(AppState& state, const std::vector<ViewRect>& views, int hovered
 
 void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (!state.scene || views.empty()) return;
+  if (!state.model.scene || views.empty()) return;
 
-  Interaction& it = state.interaction;
+  Interaction& it = state.input.mouse;
   const Eigen::Vector2d mouse = mousePos();
   const int hovered = viewAt(views, mouse);
   if (!io.WantCaptureKeyboard) handleKeys(state, views, hovered);
@@ -347,14 +350,14 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   switch (it.mode) {
     case Interaction::Mode::Orbit:
       if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        state.camera.orbit(delta.x(), delta.y());
+        state.view.camera.orbit(delta.x(), delta.y());
       } else {
         it.mode = Interaction::Mode::Idle;
       }
       return;
     case Interaction::Mode::Pan:
       if (ImGui::IsMouseDown(ImGuiMouseButton_Middle) || ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
-        state.camera.pan(delta.x(), delta.y(), views[static_cast<std::size_t>(it.view)].height);
+        state.view.camera.pan(delta.x(), delta.y(), views[static_cast<std::size_t>(it.view)].height);
       } else {
         it.mode = Interaction::Mode::Idle;
       }
@@ -393,11 +396,11 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
       }
       const ViewRect& r = views[static_cast<std::size_t>(it.view)];
       if ((mouse - it.pressMouse).norm() < kDragThreshold) {
-        if (!it.boxAdditive) state.selection.clear();  // click on the background
+        if (!it.boxAdditive) state.input.selection.clear();  // click on the background
       } else {
-        const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
-        state.selection.apply(pointsInRect(pts, it.pressMouse - r.origin(), mouse - r.origin()),
-                              it.boxAdditive ? Selection::Mode::Add : Selection::Mode::Replace);
+        const std::vector<ScreenPoint> pts = projectPoints(state.view.camera, state.document.pose, r.width, r.height);
+        state.input.selection.apply(pointsInRect(pts, it.pressMouse - r.origin(), mouse - r.origin()),
+                                    it.boxAdditive ? Selection::Mode::Add : Selection::Mode::Replace);
       }
       selectionChanged(state);
       it.mode = Interaction::Mode::Idle;
@@ -420,14 +423,14 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   if (!overView) return;
   const ViewRect& r = views[static_cast<std::size_t>(hovered)];
   if (hot.kind == GizmoPart::Kind::None) drawHover(state, r, mouse);
-  if (io.MouseWheel != 0.0f) state.camera.zoom(io.MouseWheel);
+  if (io.MouseWheel != 0.0f) state.view.camera.zoom(io.MouseWheel);
 
   const bool middle = ImGui::IsMouseClicked(ImGuiMouseButton_Middle);
   const bool left = ImGui::IsMouseClicked(ImGuiMouseButton_Left);
   if (middle || (left && io.KeyAlt)) {
     it.view = hovered;
     it.pressMouse = mouse;
-    const bool pan = io.KeyShift || state.camera.mode2D();
+    const bool pan = io.KeyShift || state.view.camera.mode2D();
     it.mode = pan ? Interaction::Mode::Pan : Interaction::Mode::Orbit;
     return;
   }
@@ -437,8 +440,8 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
     it.view = hovered;
     it.pressMouse = mouse;
     it.mode = Interaction::Mode::HandleDrag;
-    it.transform = beginTransform(kinds[static_cast<int>(hot.kind)], state.selection.indices(), state.pose,
-                                  mouse - r.origin(), r.size());
+    it.transform = beginTransform(kinds[static_cast<int>(hot.kind)], state.input.selection.indices(),
+                                  state.document.pose, mouse - r.origin(), r.size());
     it.transform->axis = hot.axis;
     it.transform->gridStep = gridStepFor(cageSize(state));
     if (hot.kind == GizmoPart::Kind::Scale) it.transform->scalePixels = GizmoLayout::kArrowPixels;
@@ -447,22 +450,22 @@ void handleInput(AppState& state, const std::vector<ViewRect>& views) {
   if (left) {
     it.view = hovered;
     it.pressMouse = mouse;
-    const std::vector<ScreenPoint> pts = projectPoints(state.camera, state.pose, r.width, r.height);
+    const std::vector<ScreenPoint> pts = projectPoints(state.view.camera, state.document.pose, r.width, r.height);
     const std::vector<int> hit =
-        pickElement(state.elementMode, pts, state.scene->restCage.faces, mouse - r.origin(), kPickRadius);
+        pickElement(state.input.elementMode, pts, state.model.scene->restCage.faces, mouse - r.origin(), kPickRadius);
     if (!hit.empty()) {
       if (io.KeyShift) {
-        state.selection.apply(hit, Selection::Mode::Toggle);
+        state.input.selection.apply(hit, Selection::Mode::Toggle);
         selectionChanged(state);
         return;
       }
-      if (!std::all_of(hit.begin(), hit.end(), [&](int v) { return state.selection.isSelected(v); })) {
-        state.selection.apply(hit, Selection::Mode::Replace);
+      if (!std::all_of(hit.begin(), hit.end(), [&](int v) { return state.input.selection.isSelected(v); })) {
+        state.input.selection.apply(hit, Selection::Mode::Replace);
         selectionChanged(state);
       }
       it.mode = Interaction::Mode::HandleDrag;
-      it.transform =
-          beginTransform(TransformKind::Grab, state.selection.indices(), state.pose, mouse - r.origin(), r.size());
+      it.transform = beginTransform(TransformKind::Grab, state.input.selection.indices(), state.document.pose,
+                                    mouse - r.origin(), r.size());
     } else {
       it.mode = Interaction::Mode::Box;
       it.boxAdditive = io.KeyShift;

@@ -50,7 +50,7 @@ namespace {
 // File > Open Recent: the recent scenes and sessions (the Open panel's list), most recent first; an entry whose file
 // is gone is greyed out and its tooltip names the file.
 void drawOpenRecentMenu(AppState& state) {
-  const std::vector<RecentEntry> entries = state.recent.entries();  // a copy: opening one reorders the list
+  const std::vector<RecentEntry> entries = state.files.recent.entries();  // a copy: opening one reorders the list
   if (!ImGui::BeginMenu("Open Recent", !entries.empty())) return;
   for (std::size_t i = 0; i < entries.size(); ++i) {
     const RecentEntry& e = entries[i];
@@ -87,10 +87,10 @@ void drawMainMenu(AppState& state) {
     if (ImGui::MenuItem("Load posed cage...")) openFileDialog(state, FileDialogPurpose::LoadPose);
     if (ImGui::MenuItem("Save posed cage...")) openFileDialog(state, FileDialogPurpose::SavePose);
     commandItem(state, "Export deformed mesh...", "export");
-    const bool meshReady = state.scene && !state.loadingScene && state.dim() == 3;
+    const bool meshReady = state.model.scene && !state.loadingScene() && state.dim() == 3;
     if (ImGui::MenuItem("Make cage...", nullptr, false, meshReady)) {  // cage_maker.h
-      openCageMaker(state, std::clamp(state.scene->restCage.numFaces(), CageGenerationOptions::kMinFaces, 2000));
-      if (state.logActions) std::printf("dialog Make cage\n"), std::fflush(stdout);
+      openCageMaker(state, std::clamp(state.model.scene->restCage.numFaces(), CageGenerationOptions::kMinFaces, 2000));
+      if (state.status.logActions) std::printf("dialog Make cage\n"), std::fflush(stdout);
     }
     if (ImGui::MenuItem("Export animation...")) {
       state.animation.exportDialogRequested = true;
@@ -108,36 +108,36 @@ void drawMainMenu(AppState& state) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit")) {
-    commandItem(state, "Undo", "undo", state.history.canUndo());
-    commandItem(state, "Redo", "redo", state.history.canRedo());
-    ImGui::MenuItem("Undo History", shortcutLabel("history"), &state.showHistoryPanel);
+    commandItem(state, "Undo", "undo", state.document.history.canUndo());
+    commandItem(state, "Redo", "redo", state.document.history.canRedo());
+    ImGui::MenuItem("Undo History", shortcutLabel("history"), &state.view.showHistoryPanel);
     ImGui::Separator();
     if (ImGui::MenuItem("Select all", shortcutLabel("select_all"))) {
-      state.selection.selectAll();
-      ++state.poseGeneration;
+      state.input.selection.selectAll();
+      ++state.document.poseGeneration;
     }
     if (ImGui::MenuItem("Select none", shortcutLabel("select_none"))) {
-      state.selection.clear();
-      ++state.poseGeneration;
+      state.input.selection.clear();
+      ++state.document.poseGeneration;
     }
     commandItem(state, "Reset pose", "reset_pose");
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
     commandItem(state, "Frame all", "frame");
-    bool compare = state.compare;
+    bool compare = state.view.compare;
     if (ImGui::MenuItem("Compare methods", nullptr, &compare)) setCompare(state, compare);
-    ImGui::MenuItem("Show cage", nullptr, &state.showCage);
-    ImGui::MenuItem("Show mesh", nullptr, &state.showMesh);
-    ImGui::MenuItem("Show tetrahedra", nullptr, &state.showTets);
+    ImGui::MenuItem("Show cage", nullptr, &state.view.showCage);
+    ImGui::MenuItem("Show mesh", nullptr, &state.view.showMesh);
+    ImGui::MenuItem("Show tetrahedra", nullptr, &state.view.showTets);
     tooltip("Draw the tetrahedral mesh of each Phong view as a wireframe, posed (its Steiner vertices follow the\n"
             "cage as the frame moves them).");
     ImGui::MenuItem("Timeline and pose library", nullptr, &state.animation.showPanels);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    ImGui::MenuItem("Shortcuts", shortcutLabel("shortcuts"), &state.showShortcuts);
-    ImGui::MenuItem("Frame timings", nullptr, &state.showFrameTimings);
+    ImGui::MenuItem("Shortcuts", shortcutLabel("shortcuts"), &state.view.showShortcuts);
+    ImGui::MenuItem("Frame timings", nullptr, &state.view.showFrameTimings);
     tooltip("Where each frame's time goes: deformation, normals, uploads, each pane's draw, the UI\n"
             "(the latest frame and the mean of the last 60). --log-frames prints it per frame.");
     ImGui::Separator();
@@ -157,18 +157,18 @@ namespace {
 // The single view's tetrahedra for a volume method (Phong): the default (the cage's star when it is star-shaped,
 // else level 1) or a level (docs/engine.md, "Phong deformation"). Sessions keep it ("methodOptions").
 void drawTetrahedraChoice(AppState& state) {
-  const auto level = state.methodOptions.find("tet-level");
-  const std::string current = level == state.methodOptions.end() ? "default" : "level " + level->second;
+  const auto level = state.view.methodOptions.find("tet-level");
+  const std::string current = level == state.view.methodOptions.end() ? "default" : "level " + level->second;
   if (ImGui::BeginCombo("tetrahedra", current.c_str())) {
-    if (ImGui::Selectable("default", level == state.methodOptions.end())) {
-      MethodOptions options = state.methodOptions;
+    if (ImGui::Selectable("default", level == state.view.methodOptions.end())) {
+      MethodOptions options = state.view.methodOptions;
       options.erase("tet-level");
       setMethodOptions(state, options);
     }
     for (int l = 0; l < kTetLevels; ++l) {
       const std::string name = "level " + std::to_string(l);
       if (ImGui::Selectable(name.c_str(), name == current)) {
-        MethodOptions options = state.methodOptions;
+        MethodOptions options = state.view.methodOptions;
         options["tet-level"] = std::to_string(l);
         setMethodOptions(state, options);
       }
@@ -193,7 +193,7 @@ void drawControlPanel(AppState& state) {
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoTitleBar;
   ImGui::Begin("Controls", nullptr, flags);
 
-  ImGui::TextUnformatted(state.scene ? state.scene->name.c_str() : "(no scene)");
+  ImGui::TextUnformatted(state.model.scene ? state.model.scene->name.c_str() : "(no scene)");
   if (ImGui::Button("3D demo")) openDemo(state, 3);
   tooltip("Open the built-in 3D demo: a bar in a box cage (Ctrl+N). Asks first when there are unsaved changes.");
   ImGui::SameLine();
@@ -205,9 +205,9 @@ void drawControlPanel(AppState& state) {
 
   sectionHeader("Method");
   const std::vector<Method>& all = allMethods();
-  if (ImGui::BeginCombo("method", state.method->displayName)) {
+  if (ImGui::BeginCombo("method", state.document.method->displayName)) {
     for (Method m : all) {
-      if (ImGui::Selectable(m->displayName, m == state.method)) {
+      if (ImGui::Selectable(m->displayName, m == state.document.method)) {
         setMethod(state, m);
         commitEdit(state, "Method");
       }
@@ -218,65 +218,65 @@ void drawControlPanel(AppState& state) {
       "The cage coordinates that deform the mesh. Somigliana: x~ = T(x)^-1 [sum R_i T_i R_i^T v~_i +\n"
       "sum s_j R_j K_j n_j] (Eq. 11); Green: Lipman et al. 2008; MVC: mean value coordinates;\n"
       "BEM: the linear-elastic solution of the pose (boundary elements, the same nu), a reference.");
-  if (state.method->needsVolumeMesh && !state.compare) drawTetrahedraChoice(state);
-  bool compare = state.compare;
+  if (state.document.method->needsVolumeMesh && !state.view.compare) drawTetrahedraChoice(state);
+  bool compare = state.view.compare;
   if (ImGui::Checkbox("compare side by side", &compare)) setCompare(state, compare);
   tooltip(
       "Show two or three views side by side with the same pose (View > Compare methods): each a method, with\n"
       "its own nu or the panel's. A view setting: not an edit, not undone.");
-  if (state.compare) drawCompareViews(state);
+  if (state.view.compare) drawCompareViews(state);
 
   sectionHeader("Parameters");
   // One widget per row of the parameter table (parameter_panel.h); a row no shown view reads is greyed out.
   bool parametersUsed = false;
   for (const DeformerKey& key : state.deformerKeys()) parametersUsed |= key.method->parameters != 0;
   drawParameterWidgets(state);
-  if (!parametersUsed) ImGui::TextDisabled("(%s ignores these)", state.method->displayName);
+  if (!parametersUsed) ImGui::TextDisabled("(%s ignores these)", state.document.method->displayName);
   drawNuPlot(state);
 
   sectionHeader("Pose");
   if (ImGui::Button("Reset pose")) resetPose(state);
   tooltip("Every handle back to its rest position (Alt+Shift+R). One undo step.");
   ImGui::SameLine();
-  if (!state.history.canUndo()) ImGui::BeginDisabled();
+  if (!state.document.history.canUndo()) ImGui::BeginDisabled();
   if (ImGui::Button("Undo")) undo(state);
-  if (!state.history.canUndo()) ImGui::EndDisabled();
+  if (!state.document.history.canUndo()) ImGui::EndDisabled();
   tooltip("Undo the last change (Ctrl+Z). Edit > Undo History lists every step.");
   ImGui::SameLine();
-  if (!state.history.canRedo()) ImGui::BeginDisabled();
+  if (!state.document.history.canRedo()) ImGui::BeginDisabled();
   if (ImGui::Button("Redo")) redo(state);
-  if (!state.history.canRedo()) ImGui::EndDisabled();
+  if (!state.document.history.canRedo()) ImGui::EndDisabled();
   tooltip("Redo (Ctrl+Shift+Z or Ctrl+Y)");
   ImGui::SameLine();
   if (ImGui::Button("Frame (F)")) frameAll(state);
   tooltip("Frame the mesh and the posed cage in the views (F)");
-  ImGui::Text("%d of %d cage vertices selected", state.selection.count(), state.selection.size());
-  int pickMode = static_cast<int>(state.elementMode);
+  ImGui::Text("%d of %d cage vertices selected", state.input.selection.count(), state.input.selection.size());
+  int pickMode = static_cast<int>(state.input.elementMode);
   const char* pickNames[] = {"vertex", "edge", "face"};
   const char* pickTips[] = {"A click selects one cage vertex (1)", "A click selects an edge: its two vertices (2)",
                             "A click selects a face: its vertices (3)"};
   for (int m = 0; m < 3; ++m) {
     if (m > 0) ImGui::SameLine();
-    if (ImGui::RadioButton(pickNames[m], pickMode == m)) state.elementMode = static_cast<ElementMode>(m);
+    if (ImGui::RadioButton(pickNames[m], pickMode == m)) state.input.elementMode = static_cast<ElementMode>(m);
     tooltip(pickTips[m]);
   }
-  ImGui::Checkbox("show cage", &state.showCage);
+  ImGui::Checkbox("show cage", &state.view.showCage);
   tooltip("Draw the cage and its handles");
   ImGui::SameLine();
-  ImGui::Checkbox("show mesh", &state.showMesh);
+  ImGui::Checkbox("show mesh", &state.view.showMesh);
   tooltip("Draw the deformed mesh");
   ImGui::SameLine();
-  bool wire = state.wireframe < 0 ? state.dim() == 2 : state.wireframe > 0;
-  if (ImGui::Checkbox("wireframe", &wire)) state.wireframe = wire ? 1 : 0;
+  bool wire = state.view.wireframe < 0 ? state.dim() == 2 : state.view.wireframe > 0;
+  if (ImGui::Checkbox("wireframe", &wire)) state.view.wireframe = wire ? 1 : 0;
   tooltip("Draw the mesh's edges");
-  ImGui::Checkbox("flat shading", &state.flatShading);
+  ImGui::Checkbox("flat shading", &state.view.flatShading);
   tooltip("Faceted shading (one normal per triangle) instead of smooth");
   drawShowChoice(state);
   tooltip("Colour the meshes by a quantity of the pose (measured when the pose settles; one range for all views)");
 
   sectionHeader("Deformation device");
   {
-    const DeviceState& devices = state.devices;
+    const DeviceState& devices = state.model.devices;
     const std::string active = devices.active();
     for (std::size_t i = 0; i < devices.offered.size(); ++i) {
       const std::string& name = devices.offered[i].name;
@@ -295,14 +295,14 @@ void drawControlPanel(AppState& state) {
   }
 
   sectionHeader("Precompute");
-  if (state.worker.busy()) {
-    const std::string stage = state.worker.stage();
+  if (state.jobs.precompute.busy()) {
+    const std::string stage = state.jobs.precompute.stage();
     ImGui::TextUnformatted(stage.empty() ? "starting..." : stage.c_str());
-    ImGui::ProgressBar(static_cast<float>(state.worker.progress()), ImVec2(-1.0f, 0.0f));
-    if (ImGui::Button("Cancel")) state.worker.cancel();
+    ImGui::ProgressBar(static_cast<float>(state.jobs.precompute.progress()), ImVec2(-1.0f, 0.0f));
+    if (ImGui::Button("Cancel")) state.jobs.precompute.cancel();
     tooltip("Stop the precomputation; the previous scene stays (Esc)");
   } else {
-    ImGui::Text("ready (%.2f s)", state.stats.precomputeSeconds);
+    ImGui::Text("ready (%.2f s)", state.status.stats.precomputeSeconds);
   }
 
   sectionHeader("Help");
@@ -315,30 +315,31 @@ void drawControlPanel(AppState& state) {
 }
 
 std::string statusBarText(const AppState& state) {
-  if (!state.scene) return "loading...   " + state.statusMessage;
+  if (!state.model.scene) return "loading...   " + state.status.message;
   char fps[32] = "- FPS";
-  if (state.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.stats.fps);
+  if (state.status.stats.fps > 0) std::snprintf(fps, sizeof fps, "%.0f FPS", state.status.stats.fps);
   char device[96];
-  const std::string active = state.devices.active();
-  if (state.devices.inPlace()) {
+  const std::string active = state.model.devices.active();
+  if (state.model.devices.inPlace()) {
     std::snprintf(device, sizeof device, "%s (compute shader, %.2f ms on the CPU)", active.c_str(),
-                  state.stats.lastDeformCpuMs);
+                  state.status.stats.lastDeformCpuMs);
   } else if (active == kCpuDevice) {
-    std::snprintf(device, sizeof device, "%s (OpenMP, %d thread%s)", active.c_str(), state.stats.deformThreads,
-                  state.stats.deformThreads == 1 ? "" : "s");
+    std::snprintf(device, sizeof device, "%s (OpenMP, %d thread%s)", active.c_str(), state.status.stats.deformThreads,
+                  state.status.stats.deformThreads == 1 ? "" : "s");
   } else {
     std::snprintf(device, sizeof device, "%s", active.c_str());
   }
   char deform[32] = "deform - ms";  // GPU: until the first timer query has finished
-  if (std::isfinite(state.stats.lastDeformMs))
-    std::snprintf(deform, sizeof deform, "deform %.2f ms", state.stats.lastDeformMs);
+  if (std::isfinite(state.status.stats.lastDeformMs))
+    std::snprintf(deform, sizeof deform, "deform %.2f ms", state.status.stats.lastDeformMs);
   char stats[320];
-  std::snprintf(stats, sizeof stats, "%s   mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s",
-                hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.scene->meshVertices.rows()),
-                static_cast<long long>(state.scene->meshTriangles.rows()), state.scene->restCage.numVertices(),
-                state.scene->restCage.numFaces(), state.stats.precomputeSeconds, deform, fps, device);
+  std::snprintf(
+      stats, sizeof stats, "%s   mesh %lld V / %lld F   cage %d V / %d F   precompute %.2f s   %s   %s   %s",
+      hasUnsavedChanges(state) ? "  unsaved" : "", static_cast<long long>(state.model.scene->meshVertices.rows()),
+      static_cast<long long>(state.model.scene->meshTriangles.rows()), state.model.scene->restCage.numVertices(),
+      state.model.scene->restCage.numFaces(), state.status.stats.precomputeSeconds, deform, fps, device);
   // The last action first: in a narrow window the statistics are what gets cut off.
-  return state.statusMessage + (state.statusMessage.empty() ? "" : "   |") + stats;
+  return state.status.message + (state.status.message.empty() ? "" : "   |") + stats;
 }
 
 void drawStatusBar(AppState& state) {
@@ -354,10 +355,10 @@ void drawStatusBar(AppState& state) {
   const std::string text = statusBarText(state);
   ImGui::TextUnformatted(text.c_str());
   // A long message (a notice naming both files) runs off the bar: the whole of it on hover, wrapped.
-  if (!state.statusMessage.empty() && ImGui::IsWindowHovered()) {
+  if (!state.status.message.empty() && ImGui::IsWindowHovered()) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(std::min(vp->Size.x * 0.8f, 900.0f));
-    ImGui::TextUnformatted(state.statusMessage.c_str());
+    ImGui::TextUnformatted(state.status.message.c_str());
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
   }
@@ -390,15 +391,15 @@ void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views) {
 }
 
 void drawHistoryPanel(AppState& state) {
-  if (!state.showHistoryPanel) return;
+  if (!state.view.showHistoryPanel) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x - 270.0f, vp->Pos.y + 40.0f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(250.0f, 300.0f), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Undo History", &state.showHistoryPanel, ImGuiWindowFlags_NoSavedSettings)) {
+  if (!ImGui::Begin("Undo History", &state.view.showHistoryPanel, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::End();
     return;
   }
-  const History& h = state.history;
+  const History& h = state.document.history;
   std::size_t jump = h.cursor();
   for (std::size_t i = 0; i < h.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
@@ -414,22 +415,22 @@ void drawHistoryPanel(AppState& state) {
 }
 
 void drawUnsavedModal(AppState& state) {
-  if (!state.unsaved.asking) return;
+  if (!state.document.unsaved.asking) return;
   const char* title = "Unsaved changes";
   if (!ImGui::IsPopupOpen(title)) {
     ImGui::OpenPopup(title);
-    if (state.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
+    if (state.status.logActions) std::printf("dialog %s\n", title), std::fflush(stdout);
   }
   ImGui::SetNextWindowSize(ImVec2(440, 0), ImGuiCond_Appearing);
   if (!ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) return;
   ImGui::TextWrapped("\"%s\" has unsaved changes. Save them before you %s?", documentName(state).c_str(),
-                     state.unsaved.asking->what.c_str());
+                     state.document.unsaved.asking->what.c_str());
   // Keys as in most desktop dialogs: S or Enter saves, D does not, Esc cancels.
   std::optional<UnsavedChoice> choice;
   const bool enter = ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter), false);
   if (ImGui::Button("Save (S)") || ImGui::IsKeyPressed(GLFW_KEY_S, false) || enter) choice = UnsavedChoice::Save;
-  tooltip(state.documentPath.empty() ? "Choose a session file, save, then go on (S or Enter)"
-                                     : "Save the session, then go on (S or Enter)");
+  tooltip(state.document.path.empty() ? "Choose a session file, save, then go on (S or Enter)"
+                                      : "Save the session, then go on (S or Enter)");
   ImGui::SameLine();
   if (ImGui::Button("Don't save (D)") || ImGui::IsKeyPressed(GLFW_KEY_D, false)) choice = UnsavedChoice::DontSave;
   tooltip("Go on and lose the changes (D)");
@@ -445,12 +446,12 @@ void drawUnsavedModal(AppState& state) {
 }
 
 void drawShortcutSheet(AppState& state) {
-  if (!state.showShortcuts) return;
+  if (!state.view.showShortcuts) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x + vp->Size.x * 0.5f, vp->Pos.y + vp->Size.y * 0.5f), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(200, 100), ImVec2(vp->Size.x - 20, vp->Size.y - 40));
-  if (!ImGui::Begin("Shortcuts (F1)", &state.showShortcuts,
+  if (!ImGui::Begin("Shortcuts (F1)", &state.view.showShortcuts,
                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::End();
     return;
@@ -470,13 +471,13 @@ void drawShortcutSheet(AppState& state) {
 }
 
 void drawRestoreModal(AppState& state) {
-  if (!state.restoreOffer || !state.errors.empty()) return;  // one modal at a time: the errors first
+  if (!state.files.restoreOffer || !state.status.errors.empty()) return;  // one modal at a time: the errors first
   const char* title = "Restore session";
   if (!ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
   ImGui::SetNextWindowSize(ImVec2(480, 0), ImGuiCond_Appearing);
   if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoSavedSettings)) {
     ImGui::TextWrapped("SomiCage did not exit cleanly last time. Restore the session from %s?",
-                       state.restoreOfferTime.c_str());
+                       state.files.restoreOfferTime.c_str());
     if (ImGui::Button("Restore") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
       acceptRestoreOffer(state);
       ImGui::CloseCurrentPopup();
@@ -491,19 +492,20 @@ void drawRestoreModal(AppState& state) {
 }
 
 void drawErrorModal(AppState& state) {
-  if (state.errors.empty()) return;
+  if (state.status.errors.empty()) return;
   if (!ImGui::IsPopupOpen("Error")) ImGui::OpenPopup("Error");
   ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_Appearing);
   if (ImGui::BeginPopupModal("Error", nullptr, ImGuiWindowFlags_NoSavedSettings)) {
-    ImGui::TextWrapped("%s", state.errors.front().c_str());
-    if (state.errors.size() > 1) ImGui::TextDisabled("(%d more)", static_cast<int>(state.errors.size() - 1));
+    ImGui::TextWrapped("%s", state.status.errors.front().c_str());
+    if (state.status.errors.size() > 1)
+      ImGui::TextDisabled("(%d more)", static_cast<int>(state.status.errors.size() - 1));
     if (ImGui::Button("OK") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Enter))) {
-      state.errors.erase(state.errors.begin());
+      state.status.errors.erase(state.status.errors.begin());
       ImGui::CloseCurrentPopup();
     }
     ImGui::SameLine();
-    if (state.errors.size() > 1 && ImGui::Button("Dismiss all")) {
-      state.errors.clear();
+    if (state.status.errors.size() > 1 && ImGui::Button("Dismiss all")) {
+      state.status.errors.clear();
       ImGui::CloseCurrentPopup();
     }
     ImGui::EndPopup();

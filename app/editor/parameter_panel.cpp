@@ -91,8 +91,8 @@ std::vector<ParameterWidget> parameterWidgets(const AppState& state, float panel
   for (const ParameterSpec& spec : parameterSchema()) {
     ParameterWidget w;
     w.spec = &spec;
-    w.enabled = (shownParameters & spec.parameter) != 0 && applies(spec, state.params);
-    const std::string more = detail(spec.key, state.params);
+    w.enabled = (shownParameters & spec.parameter) != 0 && applies(spec, state.document.params);
+    const std::string more = detail(spec.key, state.document.params);
     w.tooltip = std::string(spec.label) + ": " + spec.tooltip + (more.empty() ? "" : "\n" + more) +
                 "\nRead by " + methodList(spec.parameter) + ".";
     switch (spec.type) {
@@ -100,7 +100,7 @@ std::vector<ParameterWidget> parameterWidgets(const AppState& state, float panel
         w.kind = ParameterWidgetKind::Slider;
         w.label = spec.key;
         sliderSpan(spec, w.min, w.max);
-        w.infinite = spec.infinities && std::isinf(parameterValue(spec, state.params));
+        w.infinite = spec.infinities && std::isinf(parameterValue(spec, state.document.params));
         w.tooltip += " Ctrl+click to type a value.";
         break;
       }
@@ -125,7 +125,7 @@ std::vector<ParameterWidget> parameterWidgets(const AppState& state, float panel
 }
 
 void drawParameterWidgets(AppState& state) {
-  DeformParams p = state.params;
+  DeformParams p = state.document.params;
   std::string step;       // an edit complete at once (a box, a button): its undo step's name
   std::string sliderDone;  // a slider released after a drag
   for (const ParameterWidget& w :
@@ -202,7 +202,7 @@ void drawParameterWidgets(AppState& state) {
     ImGui::EndDisabled();
     ImGui::PopID();
   }
-  if (p != state.params) setParams(state, p);
+  if (p != state.document.params) setParams(state, p);
   if (!step.empty()) commitEdit(state, step);
   if (!sliderDone.empty()) commitEdit(state, sliderDone);
 }

@@ -21,12 +21,12 @@ void editAnimation(AppState& state, const std::string& label, Edit edit) {
   try {
     edit(after);
   } catch (const std::exception& e) {
-    state.errors.push_back(e.what());
+    state.status.errors.push_back(e.what());
     return;
   }
   state.animation = std::move(after);
   commitEdit(state, label);
-  state.statusMessage = label;
+  state.status.message = label;
 }
 
 bool samePose(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
@@ -73,13 +73,14 @@ std::string keepPosesThatFit(AnimationState& animation, const Cage& cage, const 
 }
 
 void storeCurrentPose(AppState& state, const std::string& name) {
-  editAnimation(state, "Store pose " + name, [&](AnimationState& a) { a.poses.store(name, state.pose); });
+  editAnimation(state, "Store pose " + name, [&](AnimationState& a) { a.poses.store(name, state.document.pose); });
 }
 
 void applyNamedPose(AppState& state, const std::string& name) {
   const NamedPose* pose = state.animation.poses.find(name);
-  if (!pose || pose->vertices.rows() != state.pose.rows() || pose->vertices.cols() != state.pose.cols()) {
-    state.errors.push_back("pose library: \"" + name + "\" does not fit the current cage");
+  if (!pose || pose->vertices.rows() != state.document.pose.rows() ||
+      pose->vertices.cols() != state.document.pose.cols()) {
+    state.status.errors.push_back("pose library: \"" + name + "\" does not fit the current cage");
     return;
   }
   setPose(state, pose->vertices);
@@ -109,15 +110,15 @@ void keyCurrentPose(AppState& state) {
     // A pose the library holds already is keyed by its name: keying one cage at several frames adds one pose.
     std::string name;
     for (const NamedPose& pose : a.poses.poses())
-      if (name.empty() && samePose(pose.vertices, state.pose)) name = pose.name;
+      if (name.empty() && samePose(pose.vertices, state.document.pose)) name = pose.name;
     if (name.empty()) {
       name = a.poses.freshName();
-      a.poses.store(name, state.pose);
+      a.poses.store(name, state.document.pose);
     }
     Keyframe key;
     key.frame = frame;
     key.pose = name;
-    if (a.keyParams) key.nu = state.params.nu, key.gamma = state.params.gamma;
+    if (a.keyParams) key.nu = state.document.params.nu, key.gamma = state.document.params.gamma;
     a.timeline.setKey(key);
   });
 }
@@ -132,22 +133,22 @@ void setInterpolation(AppState& state, Interpolation interpolation) {
   state.animation.timeline.interpolation = interpolation;
   if (shown) showTimelineFrame(state, state.animation.frame);  // the new curve's cage, in the same step
   commitEdit(state, "Interpolation");
-  state.statusMessage = "Interpolation";
+  state.status.message = "Interpolation";
 }
 
 bool showTimelineFrame(AppState& state, double frame) {
   AnimationState& a = state.animation;
   a.frame = frame;
-  if (!state.scene || a.timeline.keys.empty()) return false;
+  if (!state.model.scene || a.timeline.keys.empty()) return false;
   try {
-    const FrameState at =
-        evaluateTimeline(a.timeline, a.poses, frame, state.params, state.pose.rows(), state.pose.cols());
+    const FrameState at = evaluateTimeline(a.timeline, a.poses, frame, state.document.params,
+                                           state.document.pose.rows(), state.document.pose.cols());
     setPose(state, at.cage);
     setParams(state, at.params);
     return true;
   } catch (const std::exception& e) {
     stopPlayback(state);
-    state.errors.push_back(e.what());
+    state.status.errors.push_back(e.what());
     return false;
   }
 }
@@ -159,17 +160,18 @@ void scrubTo(AppState& state, double frame) {
   if (!showTimelineFrame(state, frame) || !unkeyed) return;
   const std::string step = "Frame " + std::to_string(static_cast<int>(std::lround(frame)));
   commitEdit(state, step);
-  state.statusMessage =
+  state.status.message =
       step + ": the unkeyed pose was replaced by the timeline's (Ctrl+Z brings it back; Key pose keeps a pose)";
 }
 
 bool showsTimeline(const AppState& state) {
   const AnimationState& a = state.animation;
-  if (!state.scene || a.timeline.keys.empty()) return true;
+  if (!state.model.scene || a.timeline.keys.empty()) return true;
   try {
-    return samePose(
-        evaluateTimeline(a.timeline, a.poses, a.frame, state.params, state.pose.rows(), state.pose.cols()).cage,
-        state.pose);
+    return samePose(evaluateTimeline(a.timeline, a.poses, a.frame, state.document.params, state.document.pose.rows(),
+                                     state.document.pose.cols())
+                        .cage,
+                    state.document.pose);
   } catch (const std::exception&) {
     return true;  // a timeline that cannot be evaluated replaces nothing (scrubTo reports it)
   }
@@ -187,7 +189,7 @@ void togglePlayback(AppState& state) {
   if (state.animation.playing) {
     stopPlayback(state);
   } else if (state.animation.timeline.keys.empty()) {
-    state.statusMessage = "nothing to play: key a pose first (Timeline: Key pose)";
+    state.status.message = "nothing to play: key a pose first (Timeline: Key pose)";
   } else {
     startPlayback(state, kStartAtNextTick);
   }

@@ -21,56 +21,56 @@ namespace {
 // selected, else the first selected vertex.
 void selectedElement(const AppState& state, int& vertex, int& face) {
   vertex = face = -1;
-  if (!state.scene) return;
-  if (state.elementMode == ElementMode::Face) {
-    const Eigen::MatrixXi& f = state.scene->restCage.faces;
+  if (!state.model.scene) return;
+  if (state.input.elementMode == ElementMode::Face) {
+    const Eigen::MatrixXi& f = state.model.scene->restCage.faces;
     for (Eigen::Index j = 0; j < f.rows() && face < 0; ++j) {
       bool all = true;
-      for (Eigen::Index k = 0; k < f.cols(); ++k) all = all && state.selection.isSelected(f(j, k));
+      for (Eigen::Index k = 0; k < f.cols(); ++k) all = all && state.input.selection.isSelected(f(j, k));
       if (all) face = static_cast<int>(j);
     }
     if (face >= 0) return;
   }
-  const std::vector<int> selected = state.selection.indices();
+  const std::vector<int> selected = state.input.selection.indices();
   if (!selected.empty()) vertex = selected.front();
 }
 
 // View v's deformer (null while its method's precompute runs).
 std::shared_ptr<const CageDeformer> deformerOf(const AppState& state, std::size_t v) {
-  const auto d = state.deformers.find(deformerKey(state.views()[v]));
-  return d == state.deformers.end() ? nullptr : d->second;
+  const auto d = state.model.deformers.find(deformerKey(state.views()[v]));
+  return d == state.model.deformers.end() ? nullptr : d->second;
 }
 
 // The deformer the nu plot sweeps: the current method's, when it reads nu (MethodDescriptor::parameters).
 const std::shared_ptr<const CageDeformer>* nuSweepDeformer(const AppState& state) {
-  if (!state.scene || !readsParameter(state.method, kParamNu)) return nullptr;
-  const auto d = state.deformers.find(state.method);
-  return d == state.deformers.end() ? nullptr : &d->second;
+  if (!state.model.scene || !readsParameter(state.document.method, kParamNu)) return nullptr;
+  const auto d = state.model.deformers.find(state.document.method);
+  return d == state.model.deformers.end() ? nullptr : &d->second;
 }
 
 void turnOff(AppState& state, const std::string& error) {
-  state.errors.push_back(error);
-  state.quantities.show.setAll(0);
+  state.status.errors.push_back(error);
+  state.view.quantities.show.setAll(0);
 }
 
 }  // namespace
 
 MeasureRequest measureRequest(const AppState& state) {
   MeasureRequest r;
-  r.scene = state.scene;
-  r.pose = state.pose;
-  r.poseGeneration = state.deformGeneration;
+  r.scene = state.model.scene;
+  r.pose = state.document.pose;
+  r.poseGeneration = state.model.deformGeneration;
   int vertex = -1, face = -1;
   selectedElement(state, vertex, face);
   const std::vector<ViewSpec> views = state.views();
   for (std::size_t v = 0; v < views.size(); ++v) {
     MeasureView view;
-    view.quantity = state.quantities.show.view(v).quantity;
+    view.quantity = state.view.quantities.show.view(v).quantity;
     view.params = state.viewParams(v);  // each view is measured at its own nu (the field too)
     const QuantitySource source = quantityDescriptor(view.quantity).source;
     if (source == QuantitySource::Jacobian || source == QuantitySource::Difference)
       view.deformer = deformerOf(state, v);
-    const int other = state.quantities.show.otherView(v, views.size());
+    const int other = state.view.quantities.show.otherView(v, views.size());
     if (source == QuantitySource::Difference && other >= 0) {
       view.otherDeformer = deformerOf(state, static_cast<std::size_t>(other));
       view.otherParams = state.viewParams(static_cast<std::size_t>(other));
@@ -84,8 +84,8 @@ MeasureRequest measureRequest(const AppState& state) {
 }
 
 void measureViews(AppState& state) {
-  ViewQuantities& q = state.quantities;
-  if (!state.scene) return;
+  ViewQuantities& q = state.view.quantities;
+  if (!state.model.scene) return;
   const std::size_t viewCount = state.views().size();
   q.measured.resize(viewCount);
   MeasureRequest request = measureRequest(state);
@@ -94,15 +94,15 @@ void measureViews(AppState& state) {
     if (!outcome->error.empty()) {
       turnOff(state, "measuring the pose failed: " + outcome->error);
     } else if (outcome->cancelled) {
-      state.statusMessage = "measuring cancelled";
+      state.status.message = "measuring cancelled";
     } else if (outcome->key.sweep) {
       q.nuSweep = std::move(outcome->sweep);
       q.nuSweepVariants = std::move(outcome->variantSweeps);
       const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
-      const bool current = outcome->key.poseGeneration == state.deformGeneration && deformer;
-      q.nuSweepPose = current ? state.pose : Eigen::MatrixXd();
+      const bool current = outcome->key.poseGeneration == state.model.deformGeneration && deformer;
+      q.nuSweepPose = current ? state.document.pose : Eigen::MatrixXd();
       q.nuSweepDeformer = current ? *deformer : nullptr;
-      q.nuSweepParams = state.params;
+      q.nuSweepParams = state.document.params;
       logLine(state, "job nu sweep");
     } else if (outcome->key == key) {
       for (std::size_t v = 0; v < viewCount && v < outcome->views.size(); ++v)
@@ -120,11 +120,11 @@ void measureViews(AppState& state) {
       MeasureRequest sweep = request;
       MeasureView view;
       view.deformer = *deformer;
-      view.params = state.params;
+      view.params = state.document.params;
       sweep.views.assign(1, view);
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
-      sweep.sweepVariants = readsParameter(state.method, kParamBlend);  // BEM reads nu, not the variant
+      sweep.sweepVariants = readsParameter(state.document.method, kParamBlend);  // BEM reads nu, not the variant
       q.worker.start(std::move(sweep));
       return;
     }
@@ -144,13 +144,13 @@ void measureViews(AppState& state) {
 void waitForMeasurements(AppState& state) {
   for (int round = 0; round < 4; ++round) {
     measureViews(state);
-    if (!state.quantities.worker.busy() && !state.quantities.sweepRequested) return;
-    state.quantities.worker.join();
+    if (!state.view.quantities.worker.busy() && !state.view.quantities.sweepRequested) return;
+    state.view.quantities.worker.join();
   }
 }
 
 ColorRange shownRange(const AppState& state, int quantity) {
-  return quantityRange(state.quantities.show, quantity, state.quantities.measurements(state.views().size()));
+  return quantityRange(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size()));
 }
 
 namespace {
@@ -203,8 +203,8 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
     return;
   }
   const ColorRange range = shownRange(state, quantity);
-  const auto fixed = state.quantities.show.ranges.find(quantity);
-  const bool isFixed = fixed != state.quantities.show.ranges.end() && fixed->second.fixed;
+  const auto fixed = state.view.quantities.show.ranges.find(quantity);
+  const bool isFixed = fixed != state.view.quantities.show.ranges.end() && fixed->second.fixed;
   const bool log = d.scale == ColorScale::LogDiverging;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float w = 220, h = 14;
@@ -212,7 +212,7 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const char* note = d.source == QuantitySource::Jacobian ? "    fold-over (det J <= 0)" : kUndefinedNote;
   // The automatic range leaves out each view's most extreme 2 % (view_quantity.h): say how many take the end colours.
   const long beyond = verticesBeyond(
-      viewsShowing(state.quantities.show, quantity, state.quantities.measurements(state.views().size())), range);
+      viewsShowing(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size())), range);
   char beyondText[64] = "";
   if (beyond > 0) std::snprintf(beyondText, sizeof beyondText, "%ld vertices beyond the ends", beyond);
   const float extra = beyond > 0 ? 18.0f : 0.0f;
@@ -253,9 +253,9 @@ void drawBoxedText(ImDrawList* draw, ImVec2 pos, const std::string& text) {
 }
 
 std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCount) {
-  const ViewShow& s = state.quantities.show.view(v);
+  const ViewShow& s = state.view.quantities.show.view(v);
   const QuantityDescriptor& d = quantityDescriptor(s.quantity);
-  const ViewMeasurement* m = state.quantities.measurement(v);
+  const ViewMeasurement* m = state.view.quantities.measurement(v);
   char buf[200];
   switch (d.source) {
     case QuantitySource::None:
@@ -266,7 +266,7 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
                     m->closed ? "" : " (open, capped)", m->foldovers, m->distortionP95);
       return buf;
     case QuantitySource::Difference: {
-      const int w = state.quantities.show.otherView(v, viewCount);
+      const int w = state.view.quantities.show.otherView(v, viewCount);
       if (w < 0) return "difference: needs the compare view";
       if (!m) return "measuring...";
       std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
@@ -293,17 +293,18 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
 int hoveredVertex(const AppState& state, std::size_t v, const ViewMeasurement& m, const ViewRect& rect,
                   const Eigen::Vector2d& mouse) {
   const Eigen::MatrixXd& points = m.points.rows() ? m.points : displayedPoints(state, v);
-  return pickPoint(projectPoints(state.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
+  return pickPoint(projectPoints(state.view.camera, points, rect.width, rect.height), mouse - rect.origin(), 8.0);
 }
 
 // A 2D field's arrows (paper Fig. 3) at their rest positions, coloured by magnitude in the view's range; the longest
 // spans about one grid step.
 void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect) {
-  const ViewMeasurement* m = state.quantities.measurement(v);
+  const ViewMeasurement* m = state.view.quantities.measurement(v);
   if (!m || m->arrowPoints.rows() < 2) return;
-  const int quantity = state.quantities.show.view(v).quantity;
+  const int quantity = state.view.quantities.show.view(v).quantity;
   const ColorRange range = shownRange(state, quantity);
-  const Eigen::Matrix4d mvp = state.camera.projectionMatrix(rect.width / rect.height) * state.camera.viewMatrix();
+  const Eigen::Matrix4d mvp =
+      state.view.camera.projectionMatrix(rect.width / rect.height) * state.view.camera.viewMatrix();
   auto screen = [&](const Eigen::Vector2d& p) {
     const Eigen::Vector4d c = mvp * Eigen::Vector4d(p.x(), p.y(), 0.0, 1.0);
     return ImVec2(static_cast<float>(rect.x + (c.x() / c.w() + 1) * 0.5 * rect.width),
@@ -332,16 +333,16 @@ void drawFieldArrows(const AppState& state, std::size_t v, const ViewRect& rect)
 }
 
 HoverReadout drawHoverValue(const AppState& state, const std::vector<ViewRect>& views) {
-  if (ImGui::GetIO().WantCaptureMouse || state.interaction.mode != Interaction::Mode::Idle) return {};
+  if (ImGui::GetIO().WantCaptureMouse || state.input.mouse.mode != Interaction::Mode::Idle) return {};
   const ImVec2 mp = ImGui::GetIO().MousePos;
   const Eigen::Vector2d mouse(mp.x, mp.y);
   for (std::size_t v = 0; v < views.size() && v < state.views().size(); ++v) {
     if (!views[v].contains(mouse)) continue;
-    const ViewMeasurement* m = state.quantities.measurement(v);
+    const ViewMeasurement* m = state.view.quantities.measurement(v);
     if (!m) return {};
     const int i = hoveredVertex(state, v, *m, views[v], mouse);
     if (i < 0 || i >= m->values.size()) return {};
-    const QuantityDescriptor& d = quantityDescriptor(state.quantities.show.view(v).quantity);
+    const QuantityDescriptor& d = quantityDescriptor(state.view.quantities.show.view(v).quantity);
     char buf[200];
     int n = std::isfinite(m->values[i]) ? std::snprintf(buf, sizeof buf, "%s %.6g", d.name, m->values[i])
                                         : std::snprintf(buf, sizeof buf, "%s undefined", d.name);
@@ -358,7 +359,7 @@ HoverReadout drawHoverValue(const AppState& state, const std::vector<ViewRect>& 
 
 HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRect>& views) {
   const std::size_t n = std::min(views.size(), state.views().size());
-  if (!state.quantities.show.anyShown(n)) return {};
+  if (!state.view.quantities.show.anyShown(n)) return {};
   ImDrawList* draw = ImGui::GetForegroundDrawList();
   const float line = ImGui::GetTextLineHeightWithSpacing();
   for (std::size_t v = 0; v < n; ++v) {
@@ -369,25 +370,25 @@ HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRe
   }
   for (std::size_t v = 0; v < n; ++v) drawFieldArrows(state, v, views[v]);
   for (std::size_t v = 0; v < n; ++v) {  // one legend per quantity, in the last view showing it
-    const int quantity = state.quantities.show.view(v).quantity;
+    const int quantity = state.view.quantities.show.view(v).quantity;
     bool last = quantity > 0;
-    for (std::size_t w = v + 1; w < n && last; ++w) last = state.quantities.show.view(w).quantity != quantity;
+    for (std::size_t w = v + 1; w < n && last; ++w) last = state.view.quantities.show.view(w).quantity != quantity;
     if (last) drawLegend(state, quantity, views[v]);
   }
-  if (state.hideUi || !state.screenshotRequest.empty()) return {};  // not in a capture
+  if (state.view.hideUi || !state.view.screenshotRequest.empty()) return {};  // not in a capture
   return drawHoverValue(state, views);
 }
 
 void logHoverReadout(AppState& state, const HoverReadout& hover) {
-  if (!state.logActions) return;
+  if (!state.status.logActions) return;
   char line[160];
   if (hover.vertex < 0)
     std::snprintf(line, sizeof line, "hover none");
   else
     std::snprintf(line, sizeof line, "hover view %d vertex %d %s %.17g", hover.view, hover.vertex, hover.quantity,
                   hover.value);
-  if (state.hoverLogged == line) return;
-  state.hoverLogged = line;
+  if (state.status.hoverLogged == line) return;
+  state.status.hoverLogged = line;
   std::printf("%s\n", line);
   std::fflush(stdout);
 }
@@ -410,9 +411,9 @@ bool quantityCombo(const char* label, int& quantity) {
 
 void drawRangeSetting(AppState& state, int quantity) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
-  auto it = state.quantities.show.ranges.find(quantity);
-  RangeSetting setting = it != state.quantities.show.ranges.end() ? it->second : RangeSetting{};
-  setting.range = rangeFieldsValue(state.quantities.show, quantity, shownRange(state, quantity));
+  auto it = state.view.quantities.show.ranges.find(quantity);
+  RangeSetting setting = it != state.view.quantities.show.ranges.end() ? it->second : RangeSetting{};
+  setting.range = rangeFieldsValue(state.view.quantities.show, quantity, shownRange(state, quantity));
   ImGui::PushID(quantity);
   bool changed = ImGui::Checkbox("fixed range", &setting.fixed);
   ImGui::SameLine();
@@ -427,8 +428,8 @@ void drawRangeSetting(AppState& state, int quantity) {
   const std::string problem = setting.fixed ? rangeProblem(setting.range, d.scale) : "";
   if (!problem.empty()) ImGui::TextColored(ImVec4(1, 0.5f, 0.4f, 1), "%s: automatic range used", problem.c_str());
   if (changed) {
-    state.quantities.show.ranges[quantity] = setting;
-    ++state.quantities.generation;
+    state.view.quantities.show.ranges[quantity] = setting;
+    ++state.view.quantities.generation;
   }
   ImGui::PopID();
 }
@@ -436,7 +437,7 @@ void drawRangeSetting(AppState& state, int quantity) {
 }  // namespace
 
 void drawShowChoice(AppState& state) {
-  ShowSettings& show = state.quantities.show;
+  ShowSettings& show = state.view.quantities.show;
   const std::size_t viewCount = state.views().size();
   for (std::size_t v = 0; v < viewCount; ++v) {
     int quantity = show.view(v).quantity;
@@ -464,7 +465,7 @@ void drawShowChoice(AppState& state) {
     if (quantity > 0 && std::find(shown.begin(), shown.end(), quantity) == shown.end()) shown.push_back(quantity);
   }
   for (int quantity : shown) drawRangeSetting(state, quantity);
-  MeasureWorker& worker = state.quantities.worker;
+  MeasureWorker& worker = state.view.quantities.worker;
   if (worker.busy()) {
     const std::string stage = worker.stage();
     ImGui::TextUnformatted(stage.empty() ? "measuring..." : stage.c_str());
@@ -473,21 +474,21 @@ void drawShowChoice(AppState& state) {
     if (ImGui::Button("Cancel##measure")) {
       worker.cancel();
       show.setAll(0);  // else the next frame would start it again
-      state.quantities.sweepRequested = false;
+      state.view.quantities.sweepRequested = false;
     }
   }
 }
 
-void sweepNuNow(AppState& state) { state.quantities.sweepRequested = true; }
+void sweepNuNow(AppState& state) { state.view.quantities.sweepRequested = true; }
 
 bool nuSweepCurrent(const AppState& state) {
-  const ViewQuantities& q = state.quantities;
+  const ViewQuantities& q = state.view.quantities;
   const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state);
   DeformParams swept = q.nuSweepParams;
-  swept.nu = state.params.nu;  // what it sweeps
+  swept.nu = state.document.params.nu;  // what it sweeps
   return !q.nuSweep.empty() && deformer && q.nuSweepDeformer.lock() == *deformer &&
-         q.nuSweepPose.rows() == state.pose.rows() && q.nuSweepPose.cols() == state.pose.cols() &&
-         q.nuSweepPose == state.pose && swept == state.params;
+         q.nuSweepPose.rows() == state.document.pose.rows() && q.nuSweepPose.cols() == state.document.pose.cols() &&
+         q.nuSweepPose == state.document.pose && swept == state.document.params;
 }
 
 namespace {
@@ -501,7 +502,7 @@ struct FoldLine {
 };
 
 std::vector<FoldLine> foldLines(const AppState& state) {
-  const ViewQuantities& q = state.quantities;
+  const ViewQuantities& q = state.view.quantities;
   if (q.nuSweepVariants.empty()) return {{"fold-overs", &q.nuSweep, toImColor(render::kFoldoverColor), true}};
   // One colour per variant, in variantChoices()' order (global, local, affine, stable); none is the current nu's
   // yellow or the volume line's.
@@ -525,7 +526,7 @@ void drawNuPlot(AppState& state) {
       "Deform the current pose at 25 values of nu in (-0.95, 0.49) and plot the volume change and the fold-over\n"
       "count against nu, one fold-over line per Somigliana variant (global, local, affine, stable), on the\n"
       "measuring worker; a click on the plot sets nu.");
-  const std::vector<NuSweepEntry>& sweep = state.quantities.nuSweep;
+  const std::vector<NuSweepEntry>& sweep = state.view.quantities.nuSweep;
   ImGui::SameLine();
   ImGui::TextDisabled(sweep.empty() || nuSweepCurrent(state) ? "volume change vs nu"
                                                              : "(the pose changed: sweep again)");
@@ -556,8 +557,8 @@ void drawNuPlot(AppState& state) {
       draw->AddLine(ImVec2(xOf(e[k - 1].nu), yOfFolds(e[k - 1].foldovers)), ImVec2(xOf(e[k].nu), yOfFolds(e[k].foldovers)),
                     line.color, line.current ? 2.5f : 1.5f);
   }
-  if (std::isfinite(state.params.nu)) {  // the current nu
-    const float x = xOf(state.params.nu);
+  if (std::isfinite(state.document.params.nu)) {  // the current nu
+    const float x = xOf(state.document.params.nu);
     draw->AddLine(ImVec2(x, a.y), ImVec2(x, b.y), IM_COL32(255, 200, 60, 255), 2.0f);
   }
   {  // the nu axis: its ends under the plot's corners, its name in the middle
@@ -595,7 +596,7 @@ void drawNuPlot(AppState& state) {
     ImGui::SetTooltip("nu %.3f: volume %+.2f%% (click: set nu)%s", sweep[k].nu, 100 * sweep[k].volumeChange,
                       folded.c_str());
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-      DeformParams p = state.params;
+      DeformParams p = state.document.params;
       p.nu = std::clamp(nu, -0.99, 0.49);
       setParams(state, p);
       commitEdit(state, "nu");

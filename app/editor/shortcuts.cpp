@@ -12,17 +12,17 @@
 namespace somicage::editor {
 
 void saveDocument(AppState& state) {
-  if (state.documentPath.empty()) {
+  if (state.document.path.empty()) {
     openFileDialog(state, FileDialogPurpose::SaveSession);
   } else {
-    saveSessionFile(state, state.documentPath);
+    saveSessionFile(state, state.document.path);
   }
 }
 
 void cancelPrecompute(AppState& state) {
-  if (!state.worker.busy()) return;
-  state.worker.cancel();  // the worker stops at its next progress report; the outcome says "cancelled"
-  state.statusMessage = "cancelling the precomputation...";
+  if (!state.jobs.precompute.busy()) return;
+  state.jobs.precompute.cancel();  // the worker stops at its next progress report; the outcome says "cancelled"
+  state.status.message = "cancelling the precomputation...";
 }
 
 void newDocument(AppState& state) {
@@ -45,12 +45,12 @@ const std::vector<Shortcut>& shortcuts() {
       {"redo", GLFW_KEY_Z, kCtrl | kShift, "Ctrl+Shift+Z", "Redo", redo},
       {"redo_y", GLFW_KEY_Y, kCtrl, "Ctrl+Y", "Redo", redo},
       {"history", GLFW_KEY_H, kCtrl, "Ctrl+H", "Show the Undo History",
-       [](AppState& s) { s.showHistoryPanel = !s.showHistoryPanel; }},
+       [](AppState& s) { s.view.showHistoryPanel = !s.view.showHistoryPanel; }},
       {"quit", GLFW_KEY_Q, kCtrl, "Ctrl+Q", "Quit (asks about unsaved changes)", requestQuit},
       {"shortcuts", GLFW_KEY_F1, kNoMods, "F1", "This sheet of shortcuts",
-       [](AppState& s) { s.showShortcuts = !s.showShortcuts; }},
+       [](AppState& s) { s.view.showShortcuts = !s.view.showShortcuts; }},
       {"screenshot", GLFW_KEY_F12, kNoMods, "F12", "Screenshot into the current folder",
-       [](AppState& s) { s.screenshotRequest = defaultScreenshotName(); }},
+       [](AppState& s) { s.view.screenshotRequest = defaultScreenshotName(); }},
       {"frame", GLFW_KEY_F, kNoMods, "F", "Frame everything (posed cage included)", frameAll},
       {"cancel", GLFW_KEY_ESCAPE, kNoMods, "Esc",
        "Cancel the running precomputation (a scene or a method loading); the current scene stays", cancelPrecompute},
@@ -68,7 +68,7 @@ const std::vector<Shortcut>& shortcuts() {
       {"select_all", GLFW_KEY_A, kNoMods, "A", "Select all handles", nullptr},
       {"select_none", GLFW_KEY_A, kAlt, "Alt+A", "Select none", nullptr},
       {"delete", GLFW_KEY_DELETE, kNoMods, "Delete", "Nothing to delete: cage vertices cannot be removed here",
-       [](AppState& s) { s.statusMessage = "Delete: a cage keeps all its vertices (nothing deleted)"; }},
+       [](AppState& s) { s.status.message = "Delete: a cage keeps all its vertices (nothing deleted)"; }},
   };
   return kTable;
 }

@@ -219,24 +219,24 @@ TEST(EditorAutosave, AcceptingTheOfferAppliesTheSessionAndDiscardingDropsIt) {
   crashed.params.gamma = 2.5;
   crashed.method = methods::green();
   crashed.pose.resize(0, 0);  // the rest pose of the demo
-  state.restoreOffer = crashed;
-  state.restoreOfferTime = "2026-11-23 19:40";
+  state.files.restoreOffer = crashed;
+  state.files.restoreOfferTime = "2026-11-23 19:40";
   acceptRestoreOffer(state);
-  EXPECT_FALSE(state.restoreOffer.has_value());
-  EXPECT_EQ(state.params.gamma, 2.5);
-  EXPECT_EQ(state.method, methods::green());
-  EXPECT_EQ(state.statusMessage, "restored the session from 2026-11-23 19:40");
-  std::optional<PrecomputeOutcome> out = state.worker.wait();  // the 2D demo of the session loads
+  EXPECT_FALSE(state.files.restoreOffer.has_value());
+  EXPECT_EQ(state.document.params.gamma, 2.5);
+  EXPECT_EQ(state.document.method, methods::green());
+  EXPECT_EQ(state.status.message, "restored the session from 2026-11-23 19:40");
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();  // the 2D demo of the session loads
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_TRUE(state.scene);
-  EXPECT_EQ(state.scene->dim(), 2);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_TRUE(state.model.scene);
+  EXPECT_EQ(state.model.scene->dim(), 2);
 
-  state.restoreOffer = demoSession(1);
+  state.files.restoreOffer = demoSession(1);
   discardRestoreOffer(state);
-  EXPECT_FALSE(state.restoreOffer.has_value());
-  EXPECT_EQ(state.params.gamma, 2.5) << "discarding changes nothing";
+  EXPECT_FALSE(state.files.restoreOffer.has_value());
+  EXPECT_EQ(state.document.params.gamma, 2.5) << "discarding changes nothing";
 }
 
 TEST(EditorAutosave, AFailedWriteThrowsAndIsTriedAgainOneIntervalLater) {

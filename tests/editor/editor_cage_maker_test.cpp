@@ -87,104 +87,104 @@ class CageMakerTest : public ::testing::Test {
 
 TEST_F(CageMakerTest, ANewRequestSupersedesTheRunningOne) {
   SteeredGenerator steered;
-  state.cageMaker.setGenerator(steered.generator());
+  state.jobs.cageMaker.setGenerator(steered.generator());
   openCageMaker(state, 30);
   waitUntil(steered.started, 1);
-  CageGenerationOptions options = state.cageMaker.options();
+  CageGenerationOptions options = state.jobs.cageMaker.options();
   options.maxFaces = 40;
-  state.cageMaker.request(options);  // the slider moved
-  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Generating);
+  state.jobs.cageMaker.request(options);  // the slider moved
+  EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Generating);
   waitUntil(steered.refused, 1);  // the first run was asked to stop
   waitUntil(steered.started, 2);
   steered.release = true;
-  state.cageMaker.wait();
-  ASSERT_EQ(state.cageMaker.status(), CageMaker::Status::Ready);
-  ASSERT_TRUE(state.cageMaker.candidate());
-  EXPECT_EQ(state.cageMaker.candidate()->options.maxFaces, 40);
-  EXPECT_NEAR(state.cageMaker.candidate()->generated.cage.vertices.row(0).norm(), 40.0, 5.0);  // the second's cage
+  state.jobs.cageMaker.wait();
+  ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready);
+  ASSERT_TRUE(state.jobs.cageMaker.candidate());
+  EXPECT_EQ(state.jobs.cageMaker.candidate()->options.maxFaces, 40);
+  EXPECT_NEAR(state.jobs.cageMaker.candidate()->generated.cage.vertices.row(0).norm(), 40.0, 5.0);  // the second's cage
   EXPECT_EQ(steered.started.load(), 2);
 }
 
 TEST_F(CageMakerTest, StopShowsNothingAndCancelLeavesTheSceneUntouched) {
   const Document before = currentDocument(state);
-  const std::shared_ptr<const Scene> scene = state.scene;
-  const std::size_t cursor = state.history.cursor();
+  const std::shared_ptr<const Scene> scene = state.model.scene;
+  const std::size_t cursor = state.document.history.cursor();
   SteeredGenerator steered;
-  state.cageMaker.setGenerator(steered.generator());
+  state.jobs.cageMaker.setGenerator(steered.generator());
   openCageMaker(state, 30);
   waitUntil(steered.started, 1);
-  state.cageMaker.cancel();  // Stop
-  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Cancelled);
+  state.jobs.cageMaker.cancel();  // Stop
+  EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Cancelled);
   waitUntil(steered.refused, 1);
   std::this_thread::sleep_for(std::chrono::milliseconds(50));  // the worker stores its (cancelled) result
-  state.cageMaker.poll();
-  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Cancelled);
-  EXPECT_FALSE(state.cageMaker.candidate());
+  state.jobs.cageMaker.poll();
+  EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Cancelled);
+  EXPECT_FALSE(state.jobs.cageMaker.candidate());
   EXPECT_FALSE(acceptGeneratedCage(state));  // nothing to accept
 
   steered.release = true;
-  state.cageMaker.request(state.cageMaker.options());  // generate again, then Cancel the dialog
-  state.cageMaker.wait();
-  ASSERT_TRUE(state.cageMaker.candidate());
-  state.cageMaker.close();
-  EXPECT_FALSE(state.cageMaker.isOpen());
-  EXPECT_FALSE(state.cageMaker.candidate());
-  EXPECT_EQ(state.scene, scene);
+  state.jobs.cageMaker.request(state.jobs.cageMaker.options());  // generate again, then Cancel the dialog
+  state.jobs.cageMaker.wait();
+  ASSERT_TRUE(state.jobs.cageMaker.candidate());
+  state.jobs.cageMaker.close();
+  EXPECT_FALSE(state.jobs.cageMaker.isOpen());
+  EXPECT_FALSE(state.jobs.cageMaker.candidate());
+  EXPECT_EQ(state.model.scene, scene);
   EXPECT_EQ(currentDocument(state), before);
-  EXPECT_EQ(state.history.cursor(), cursor);
+  EXPECT_EQ(state.document.history.cursor(), cursor);
   EXPECT_FALSE(hasUnsavedChanges(state));
 }
 
 TEST_F(CageMakerTest, AGenerationErrorIsShown) {
-  state.cageMaker.setGenerator([](const Eigen::MatrixXd&, const Eigen::MatrixXi&, const CageGenerationOptions&,
-                                  const std::string& source, const ProgressCallback&) -> GeneratedCage {
+  state.jobs.cageMaker.setGenerator([](const Eigen::MatrixXd&, const Eigen::MatrixXi&, const CageGenerationOptions&,
+                                       const std::string& source, const ProgressCallback&) -> GeneratedCage {
     throw InputError(source, -1, "no valid cage", "ask for more faces");
   });
   openCageMaker(state, 12);
-  state.cageMaker.wait();
-  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Failed);
-  EXPECT_NE(state.cageMaker.error().find("no valid cage"), std::string::npos) << state.cageMaker.error();
-  EXPECT_FALSE(state.cageMaker.candidate());
+  state.jobs.cageMaker.wait();
+  EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Failed);
+  EXPECT_NE(state.jobs.cageMaker.error().find("no valid cage"), std::string::npos) << state.jobs.cageMaker.error();
+  EXPECT_FALSE(state.jobs.cageMaker.candidate());
 }
 
 TEST_F(CageMakerTest, TwoDimensionalScenesAreRefused) {
   openDemoScene(state, 2);
   openCageMaker(state, 40);
-  EXPECT_FALSE(state.cageMaker.isOpen());
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors[0].find("3D"), std::string::npos) << state.errors[0];
+  EXPECT_FALSE(state.jobs.cageMaker.isOpen());
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors[0].find("3D"), std::string::npos) << state.status.errors[0];
 }
 
 // The real generator, then Accept: the exact enclosure check passes on the candidate, the scene deforms with it at
 // rest onto the mesh, and undo / redo swap the whole cage back and forth as one step.
 TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   // A posed, saved document with a pose in the library: what undo must bring back.
-  Eigen::MatrixXd posed = state.pose;
+  Eigen::MatrixXd posed = state.document.pose;
   posed(0, 1) += 0.25;
   setPose(state, posed);
   ASSERT_TRUE(commitEdit(state, "Grab"));
   state.animation.poses.store("bent", posed);
   ASSERT_TRUE(commitEdit(state, "Store pose"));
-  state.history.markSaved();
+  state.document.history.markSaved();
   const Document before = currentDocument(state);
-  const Cage oldCage = state.scene->restCage;
+  const Cage oldCage = state.model.scene->restCage;
 
   openCageMaker(state, 40);
-  state.cageMaker.wait();
-  ASSERT_EQ(state.cageMaker.status(), CageMaker::Status::Ready) << state.cageMaker.error();
-  const Cage generated = state.cageMaker.candidate()->generated.cage;
+  state.jobs.cageMaker.wait();
+  ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready) << state.jobs.cageMaker.error();
+  const Cage generated = state.jobs.cageMaker.candidate()->generated.cage;
   EXPECT_LE(generated.numFaces(), 40);
   const EnclosureReport enclosure =
-      checkEnclosure(generated, state.scene->meshVertices, state.scene->meshTriangles);  // exact predicates
+      checkEnclosure(generated, state.model.scene->meshVertices, state.model.scene->meshTriangles);  // exact predicates
   EXPECT_TRUE(enclosure.encloses()) << enclosure.outsideVertices.size() << " outside, " << enclosure.crossedFaces.size()
                                     << " crossed faces";
 
   ASSERT_TRUE(acceptGeneratedCage(state));
-  EXPECT_FALSE(state.cageMaker.isOpen());
-  EXPECT_TRUE(sameCage(state.scene->restCage, generated));
-  EXPECT_EQ(state.pose, generated.vertices);  // at rest
+  EXPECT_FALSE(state.jobs.cageMaker.isOpen());
+  EXPECT_TRUE(sameCage(state.model.scene->restCage, generated));
+  EXPECT_EQ(state.document.pose, generated.vertices);  // at rest
   EXPECT_TRUE(state.animation.poses.poses().empty());
-  EXPECT_EQ(state.history.step(state.history.cursor()).name, "Make cage");
+  EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Make cage");
   EXPECT_TRUE(hasUnsavedChanges(state));
   const Document after = currentDocument(state);
 
@@ -193,14 +193,14 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   ASSERT_TRUE(hasDeformer(state, methods::somigliana()));
   updateDeformation(state);
   const Eigen::MatrixXd& shown = displayedPoints(state, 0);
-  ASSERT_EQ(shown.rows(), state.scene->meshVertices.rows());
-  EXPECT_LT((shown - state.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
+  ASSERT_EQ(shown.rows(), state.model.scene->meshVertices.rows());
+  EXPECT_LT((shown - state.model.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
 
   undo(state);
-  EXPECT_EQ(state.statusMessage, "undo Make cage");
-  EXPECT_TRUE(sameCage(state.scene->restCage, oldCage));
+  EXPECT_EQ(state.status.message, "undo Make cage");
+  EXPECT_TRUE(sameCage(state.model.scene->restCage, oldCage));
   EXPECT_EQ(currentDocument(state), before);  // pose, library and cage, bitwise
-  EXPECT_EQ(state.selection.flags().size(), static_cast<std::size_t>(oldCage.numVertices()));
+  EXPECT_EQ(state.input.selection.flags().size(), static_cast<std::size_t>(oldCage.numVertices()));
   EXPECT_FALSE(hasUnsavedChanges(state));
   redo(state);
   EXPECT_EQ(currentDocument(state), after);
@@ -212,14 +212,14 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
 // to make a new default cage for the mesh.
 TEST_F(CageMakerTest, TheSessionAndTheAutosaveKeepTheMadeCageAndItsPose) {
   openCageMaker(state, 60);  // not the default 200: a regenerated default cage could not pass for it
-  state.cageMaker.wait();
-  ASSERT_EQ(state.cageMaker.status(), CageMaker::Status::Ready) << state.cageMaker.error();
+  state.jobs.cageMaker.wait();
+  ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready) << state.jobs.cageMaker.error();
   ASSERT_TRUE(acceptGeneratedCage(state));
   installNextOutcome(state);  // its deformers
-  const Cage made = state.scene->restCage;
+  const Cage made = state.model.scene->restCage;
   ASSERT_LE(made.numFaces(), 60);
   ASSERT_FALSE(sameCage(made, makeDemoScene(3).restCage));
-  Eigen::MatrixXd posed = state.pose;
+  Eigen::MatrixXd posed = state.document.pose;
   posed.row(0) += Eigen::RowVector3d(0.1, 1.0 / 3.0, -0.2);
   posed.row(made.numVertices() - 1) *= 1.0 + 1e-15;  // the last bits count
   setPose(state, posed);
@@ -227,17 +227,17 @@ TEST_F(CageMakerTest, TheSessionAndTheAutosaveKeepTheMadeCageAndItsPose) {
 
   TempFolder folder("somicage_made_cage_session");
   const std::string sessionPath = folder.path("made.json");
-  ASSERT_TRUE(saveSessionFile(state, sessionPath)) << state.errors.front();
+  ASSERT_TRUE(saveSessionFile(state, sessionPath)) << state.status.errors.front();
   AppState reopened;
-  ASSERT_TRUE(loadSessionFile(reopened, sessionPath)) << reopened.errors.front();
+  ASSERT_TRUE(loadSessionFile(reopened, sessionPath)) << reopened.status.errors.front();
   installNextOutcome(reopened);
-  ASSERT_TRUE(reopened.errors.empty()) << reopened.errors.front();
-  ASSERT_TRUE(reopened.scene);
-  EXPECT_TRUE(reopened.scene->cagePath.empty());
-  EXPECT_TRUE(sameCage(reopened.scene->restCage, made)) << reopened.scene->restCage.numFaces() << " faces";
-  EXPECT_EQ(reopened.pose, posed);
+  ASSERT_TRUE(reopened.status.errors.empty()) << reopened.status.errors.front();
+  ASSERT_TRUE(reopened.model.scene);
+  EXPECT_TRUE(reopened.model.scene->cagePath.empty());
+  EXPECT_TRUE(sameCage(reopened.model.scene->restCage, made)) << reopened.model.scene->restCage.numFaces() << " faces";
+  EXPECT_EQ(reopened.document.pose, posed);
   EXPECT_FALSE(hasUnsavedChanges(reopened));
-  EXPECT_EQ(reopened.documentPath, sessionPath);
+  EXPECT_EQ(reopened.document.path, sessionPath);
 
   // A crash: the autosave holds the same, and restoring it in a new editor gives it back (unsaved, as it exists
   // nowhere else).
@@ -251,13 +251,13 @@ TEST_F(CageMakerTest, TheSessionAndTheAutosaveKeepTheMadeCageAndItsPose) {
   const AutosaveLeftover leftover = Autosave(paths, 1.0).begin();
   ASSERT_TRUE(leftover.session.has_value()) << leftover.error;
   AppState restored;
-  restored.restoreOffer = leftover.session;
+  restored.files.restoreOffer = leftover.session;
   acceptRestoreOffer(restored);
   installNextOutcome(restored);
-  ASSERT_TRUE(restored.errors.empty()) << restored.errors.front();
-  ASSERT_TRUE(restored.scene);
-  EXPECT_TRUE(sameCage(restored.scene->restCage, made));
-  EXPECT_EQ(restored.pose, posed);
+  ASSERT_TRUE(restored.status.errors.empty()) << restored.status.errors.front();
+  ASSERT_TRUE(restored.model.scene);
+  EXPECT_TRUE(sameCage(restored.model.scene->restCage, made));
+  EXPECT_EQ(restored.document.pose, posed);
   EXPECT_TRUE(hasUnsavedChanges(restored));
 }
 
@@ -267,32 +267,32 @@ TEST_F(CageMakerTest, UndoingMakeCageGivesTheCageItsFileBack) {
   TempFolder folder("somicage_make_cage_file");
   const std::string meshPath = folder.path("bar.obj"), cagePath = folder.path("bar_cage.obj");
   PolygonMesh triangles;
-  for (Eigen::Index f = 0; f < state.scene->meshTriangles.rows(); ++f) {
-    const Eigen::RowVector3i t = state.scene->meshTriangles.row(f);
+  for (Eigen::Index f = 0; f < state.model.scene->meshTriangles.rows(); ++f) {
+    const Eigen::RowVector3i t = state.model.scene->meshTriangles.row(f);
     triangles.faces.push_back({t[0], t[1], t[2]});
   }
-  saveObj(meshPath, state.scene->meshVertices, triangles);
-  saveObj(cagePath, state.scene->restCage.vertices, cageTopology(state.scene->restCage));
+  saveObj(meshPath, state.model.scene->meshVertices, triangles);
+  saveObj(cagePath, state.model.scene->restCage.vertices, cageTopology(state.model.scene->restCage));
   requestSceneFiles(state, meshPath, cagePath);
   installNextOutcome(state);
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_EQ(state.scene->cagePath, cagePath);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_EQ(state.model.scene->cagePath, cagePath);
   EXPECT_EQ(makeSession(state).cagePath, cagePath);
   EXPECT_EQ(makeSession(state).restCage.numVertices(), 0) << "a cage with a file is named, not copied";
 
   SteeredGenerator steered;
   steered.release = true;
-  state.cageMaker.setGenerator(steered.generator());
+  state.jobs.cageMaker.setGenerator(steered.generator());
   openCageMaker(state, 20);
-  state.cageMaker.wait();
+  state.jobs.cageMaker.wait();
   ASSERT_TRUE(acceptGeneratedCage(state));
   const Session afterMake = makeSession(state);
   EXPECT_TRUE(afterMake.cagePath.empty());
-  EXPECT_TRUE(sameCage(afterMake.restCage, state.scene->restCage));
+  EXPECT_TRUE(sameCage(afterMake.restCage, state.model.scene->restCage));
 
   undo(state);
-  EXPECT_EQ(state.scene->cagePath, cagePath);
+  EXPECT_EQ(state.model.scene->cagePath, cagePath);
   EXPECT_EQ(makeSession(state).restCage.numVertices(), 0);
   redo(state);
-  EXPECT_TRUE(state.scene->cagePath.empty());
+  EXPECT_TRUE(state.model.scene->cagePath.empty());
 }

@@ -68,7 +68,7 @@ FrameDevice refusingDevice(const std::string& name, const std::string& reason, b
 
 // The demo cage with its right half sheared upwards: not a similarity, so every coordinate block matters.
 Eigen::MatrixXd shearedPose(const AppState& state) {
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i)
     if (pose(i, 0) > 0.0) pose(i, 1) += 0.4 * pose(i, 0);
   return pose;
@@ -82,7 +82,7 @@ double maxDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
 
 // What view v should show: its deformer's own CPU deformation of the current pose with the view's parameters.
 Eigen::MatrixXd expectedPoints(const AppState& state, std::size_t v) {
-  return state.deformers.at(state.views()[v].method)->deform(state.pose, state.viewParams(v));
+  return state.model.deformers.at(state.views()[v].method)->deform(state.document.pose, state.viewParams(v));
 }
 
 }  // namespace
@@ -90,19 +90,20 @@ Eigen::MatrixXd expectedPoints(const AppState& state, std::size_t v) {
 TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
   AppState state;
   auto counts = std::make_shared<Counts>();
-  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, ""),
-            "");
-  EXPECT_EQ(state.devices.active(), "fake");
+  EXPECT_EQ(
+      chooseDevice(state.model.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, ""),
+      "");
+  EXPECT_EQ(state.model.devices.active(), "fake");
   openDemoScene(state, 3);
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_EQ(counts->made, 1);
   EXPECT_EQ(counts->frames, 1);
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
-  EXPECT_GT(maxDifference(displayedPoints(state, 0), state.scene->meshVertices), 0.05);  // it moved
+  EXPECT_GT(maxDifference(displayedPoints(state, 0), state.model.scene->meshVertices), 0.05);  // it moved
 
   // The next frame reuses the evaluator (C is uploaded once per deformer).
-  DeformParams params = state.params;
+  DeformParams params = state.document.params;
   params.nu = 0.3;
   params.gamma = 1.0;
   params.blend = 1.0;
@@ -125,11 +126,11 @@ TEST(EditorDevices, FramesAreEvaluatedOnTheChosenDevice) {
   for (std::size_t v = 0; v < views; ++v)
     EXPECT_LT(maxDifference(displayedPoints(state, v), expectedPoints(state, v)), 1e-12) << "view " << v;
   EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // nu 0.3 vs 0.45
-  EXPECT_TRUE(state.errors.empty());
+  EXPECT_TRUE(state.status.errors.empty());
 
   // Back to the CPU: the device's evaluators go, the CPU evaluates.
   setDevice(state, kCpuDevice);
-  EXPECT_EQ(state.devices.evaluators.size(), 0u);
+  EXPECT_EQ(state.model.devices.evaluators.size(), 0u);
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_EQ(counts->frames, 2 + static_cast<int>(views));
 }
@@ -139,26 +140,28 @@ TEST(EditorDevices, UnavailableDeviceIsRefusedWithItsReason) {
   auto counts = std::make_shared<Counts>();
   const FrameDevices devices = {cpuFrameDevice(), inPlaceDevice(), refusingDevice("cuda", "no CUDA device", true),
                                 countingDevice("fake", counts)};
-  EXPECT_EQ(chooseDevice(state.devices, devices, "cuda", kInPlaceDevice, "no OpenGL 4.3 context"), "no CUDA device");
-  EXPECT_EQ(state.devices.active(), kCpuDevice);
-  EXPECT_EQ(state.devices.requested, kCpuDevice);  // the panel shows the device that deforms
-  EXPECT_EQ(state.devices.unavailable.at("cuda"), "no CUDA device");
-  EXPECT_EQ(state.devices.unavailable.at(kInPlaceDevice), "no OpenGL 4.3 context");
-  EXPECT_FALSE(state.devices.usable(kInPlaceDevice));
-  EXPECT_TRUE(state.devices.usable("fake"));
+  EXPECT_EQ(chooseDevice(state.model.devices, devices, "cuda", kInPlaceDevice, "no OpenGL 4.3 context"),
+            "no CUDA device");
+  EXPECT_EQ(state.model.devices.active(), kCpuDevice);
+  EXPECT_EQ(state.model.devices.requested, kCpuDevice);  // the panel shows the device that deforms
+  EXPECT_EQ(state.model.devices.unavailable.at("cuda"), "no CUDA device");
+  EXPECT_EQ(state.model.devices.unavailable.at(kInPlaceDevice), "no OpenGL 4.3 context");
+  EXPECT_FALSE(state.model.devices.usable(kInPlaceDevice));
+  EXPECT_TRUE(state.model.devices.usable("fake"));
   // Without --device the preferred device falls back quietly (the panel says why).
-  EXPECT_EQ(chooseDevice(state.devices, devices, std::nullopt, kInPlaceDevice, "no OpenGL 4.3 context"), "");
-  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  EXPECT_EQ(chooseDevice(state.model.devices, devices, std::nullopt, kInPlaceDevice, "no OpenGL 4.3 context"), "");
+  EXPECT_EQ(state.model.devices.active(), kCpuDevice);
   // A device not offered at all (an editor without CUDA's entry) is refused too.
-  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice()}, "cuda", kCpuDevice, ""), "not offered by this executable");
-  EXPECT_EQ(chooseDevice(state.devices, devices, "cuda", kCpuDevice, ""), "no CUDA device");
+  EXPECT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice()}, "cuda", kCpuDevice, ""),
+            "not offered by this executable");
+  EXPECT_EQ(chooseDevice(state.model.devices, devices, "cuda", kCpuDevice, ""), "no CUDA device");
 
   openDemoScene(state, 3);
   setDevice(state, "cuda");  // what a disabled radio button cannot do: the CPU still deforms
-  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  EXPECT_EQ(state.model.devices.active(), kCpuDevice);
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_TRUE(state.errors.empty());
+  EXPECT_TRUE(state.status.errors.empty());
   EXPECT_EQ(counts->frames, 0);
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
 }
@@ -166,35 +169,35 @@ TEST(EditorDevices, UnavailableDeviceIsRefusedWithItsReason) {
 TEST(EditorDevices, DeviceFailingAtRunTimeHandsOverToTheCpu) {
   AppState state;
   // The cheap check cannot tell; making the evaluator throws.
-  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), refusingDevice("cuda", "out of device memory", false)},
+  EXPECT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), refusingDevice("cuda", "out of device memory", false)},
                          "cuda", kCpuDevice, ""),
             "");
-  EXPECT_EQ(state.devices.active(), "cuda");
+  EXPECT_EQ(state.model.devices.active(), "cuda");
   openDemoScene(state, 3);
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("cuda deformation failed, using the CPU: out of device memory"),
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("cuda deformation failed, using the CPU: out of device memory"),
             std::string::npos)
-      << state.errors.front();
-  EXPECT_NE(state.devices.unavailable.at("cuda").find("out of device memory"), std::string::npos);
-  EXPECT_EQ(state.devices.active(), kCpuDevice);
+      << state.status.errors.front();
+  EXPECT_NE(state.model.devices.unavailable.at("cuda").find("out of device memory"), std::string::npos);
+  EXPECT_EQ(state.model.devices.active(), kCpuDevice);
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-12);
 }
 
 TEST(EditorDevices, BadParametersAreReportedNotBlamedOnTheDevice) {
   AppState state;
   auto counts = std::make_shared<Counts>();
-  chooseDevice(state.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, "");
+  chooseDevice(state.model.devices, {cpuFrameDevice(), countingDevice("fake", counts)}, "fake", kCpuDevice, "");
   openDemoScene(state, 3);
-  DeformParams params = state.params;
+  DeformParams params = state.document.params;
   params.nu = 0.7;  // outside (-1, 0.5)
   setParams(state, params);
   updateDeformation(state);
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("deformation failed"), std::string::npos) << state.errors.front();
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("deformation failed"), std::string::npos) << state.status.errors.front();
   EXPECT_EQ(counts->frames, 0);
-  EXPECT_EQ(state.devices.active(), "fake");  // still usable
+  EXPECT_EQ(state.model.devices.active(), "fake");  // still usable
 }
 
 // A device with its own row integrator (CUDA's) computes the editor's coordinates too, so the whole pipeline runs on
@@ -209,42 +212,43 @@ TEST(EditorDevices, TheChosenDevicesIntegratorComputesTheCoordinates) {
     integrateSomiglianaCoordinates(cage, points, options, progress, sink);
   };
   AppState state;
-  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), device}, "fake", kCpuDevice, ""), "");
+  ASSERT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), device}, "fake", kCpuDevice, ""), "");
   openDemoScene(state, 3);
   ASSERT_EQ(state.views()[0].method, Method(methods::somigliana()));
   EXPECT_EQ(*integrations, 1);  // the one Somigliana deformer of the one view
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
 
-  const std::unique_ptr<CageDeformer> cpu =
-      precompute(state.views()[0].method, state.scene->restCage, state.scene->meshVertices, interactiveOptions(), "test");
-  EXPECT_LT(maxDifference(displayedPoints(state, 0), cpu->deform(state.pose, state.viewParams(0))), 1e-12);
+  const std::unique_ptr<CageDeformer> cpu = precompute(state.views()[0].method, state.model.scene->restCage,
+                                                       state.model.scene->meshVertices, interactiveOptions(), "test");
+  EXPECT_LT(maxDifference(displayedPoints(state, 0), cpu->deform(state.document.pose, state.viewParams(0))), 1e-12);
 }
 
 TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
   AppState state;
-  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""), "");
-  EXPECT_TRUE(state.devices.inPlace());
+  EXPECT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""),
+            "");
+  EXPECT_TRUE(state.model.devices.inPlace());
   openDemoScene(state, 3);
   setPose(state, shearedPose(state));
-  const std::uint64_t generation = state.deformGeneration;
+  const std::uint64_t generation = state.model.deformGeneration;
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_EQ(state.deformGeneration, generation + 1);  // the Renderer deforms on the GPU
-  ASSERT_EQ(state.cpuStale.size(), 1u);
-  EXPECT_EQ(state.cpuStale.front(), 0u);      // the one view (Somigliana)
-  EXPECT_EQ(state.deformed.at(0).size(), 0);  // nothing computed on the CPU
+  EXPECT_EQ(state.model.deformGeneration, generation + 1);  // the Renderer deforms on the GPU
+  ASSERT_EQ(state.model.cpuStale.size(), 1u);
+  EXPECT_EQ(state.model.cpuStale.front(), 0u);      // the one view (Somigliana)
+  EXPECT_EQ(state.model.deformed.at(0).size(), 0);  // nothing computed on the CPU
 
   ensureCpuPoints(state, 0);  // what framing and export call: the CPU, never opengl's make()
-  EXPECT_TRUE(state.cpuStale.empty());
+  EXPECT_TRUE(state.model.cpuStale.empty());
   const Eigen::MatrixXd expected = expectedPoints(state, 0);
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
 
   // Back to the CPU: the next update computes on the CPU again.
-  state.deformDirty = false;
+  state.model.deformDirty = false;
   setDevice(state, kCpuDevice);
-  EXPECT_TRUE(state.deformDirty);
+  EXPECT_TRUE(state.model.deformDirty);
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_TRUE(state.cpuStale.empty());
+  EXPECT_TRUE(state.model.cpuStale.empty());
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expected), 1e-12);
 }
 
@@ -252,12 +256,12 @@ TEST(EditorDevices, InPlaceOpenGlLeavesCpuPointsStaleUntilNeeded) {
 TEST(EditorDevices, CudaIsListedAndSaysWhyItCannotRun) {
   if (cudaStatus().available) GTEST_SKIP() << "a CUDA device is here: " << cudaStatus().deviceName;
   AppState state;
-  EXPECT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""),
+  EXPECT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""),
             cudaStatus().reason);
   EXPECT_FALSE(cudaStatus().reason.empty());
-  ASSERT_NE(findFrameDevice(state.devices.offered, "cuda"), nullptr);
-  EXPECT_EQ(state.devices.unavailable.at("cuda"), cudaStatus().reason);
-  EXPECT_EQ(state.devices.active(), kCpuDevice);
+  ASSERT_NE(findFrameDevice(state.model.devices.offered, "cuda"), nullptr);
+  EXPECT_EQ(state.model.devices.unavailable.at("cuda"), cudaStatus().reason);
+  EXPECT_EQ(state.model.devices.active(), kCpuDevice);
 }
 
 // With a usable CUDA device the editor's frames are computed there: the CPU's points within 1e-9 cage diameters
@@ -265,14 +269,14 @@ TEST(EditorDevices, CudaIsListedAndSaysWhyItCannotRun) {
 TEST(EditorDevices, CudaDeviceDeformsLikeTheCpu) {
   if (!cudaStatus().available) GTEST_SKIP() << "no CUDA device: " << cudaStatus().reason;
   AppState state;
-  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""), "");
+  ASSERT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), cudaFrameDevice()}, "cuda", kCpuDevice, ""), "");
   openDemoScene(state, 3);
   setPose(state, shearedPose(state));
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_TRUE(state.errors.empty()) << state.errors.front();
-  EXPECT_EQ(state.devices.active(), "cuda");
-  EXPECT_EQ(state.devices.evaluators.size(), 1u);
-  const Cage& cage = state.scene->restCage;
+  EXPECT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_EQ(state.model.devices.active(), "cuda");
+  EXPECT_EQ(state.model.devices.evaluators.size(), 1u);
+  const Cage& cage = state.model.scene->restCage;
   const double diameter = (cage.vertices.colwise().maxCoeff() - cage.vertices.colwise().minCoeff()).norm();
   EXPECT_LT(maxDifference(displayedPoints(state, 0), expectedPoints(state, 0)), 1e-9 * diameter);
 }
@@ -301,13 +305,13 @@ TEST(EditorDevices, CommandLineOption) {
 // Issue 24, row 15: the status bar said "cpu (OpenMP, 1 threads)".
 TEST(EditorDevices, TheStatusBarCountsThreadsInGoodEnglish) {
   AppState state;
-  state.scene = std::make_shared<const Scene>(makeDemoScene(2));
-  state.statusMessage = "loaded demo";
-  state.stats.deformThreads = 1;
+  state.model.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  state.status.message = "loaded demo";
+  state.status.stats.deformThreads = 1;
   const std::string one = statusBarText(state);
   EXPECT_NE(one.find("cpu (OpenMP, 1 thread)"), std::string::npos) << one;
   EXPECT_EQ(one.rfind("loaded demo   |", 0), 0u) << one;
-  state.stats.deformThreads = 2;
+  state.status.stats.deformThreads = 2;
   const std::string two = statusBarText(state);
   EXPECT_NE(two.find("cpu (OpenMP, 2 threads)"), std::string::npos) << two;
 }

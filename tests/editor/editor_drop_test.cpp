@@ -112,10 +112,10 @@ TEST(EditorDrop, CountsObjVerticesAndStopsEarly) {
 TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   AppState state;
   auto scene = std::make_shared<Scene>(makeDemoScene(3));
-  state.scene = scene;
-  state.pose = scene->restCage.vertices;
-  state.selection.resize(scene->restCage.numVertices());
-  state.history.reset(currentDocument(state), "Open demo", true);
+  state.model.scene = scene;
+  state.document.pose = scene->restCage.vertices;
+  state.input.selection.resize(scene->restCage.numVertices());
+  state.document.history.reset(currentDocument(state), "Open demo", true);
 
   // A posed cage with the cage's vertex count poses the current scene (an undoable edit).
   const std::string posedPath = ::testing::TempDir() + "somicage_drop_posed.obj";
@@ -123,9 +123,9 @@ TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   posed.col(1).array() += 0.25;
   saveObj(posedPath, posed, cageTopology(scene->restCage));
   openDroppedFiles(state, {posedPath});
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  EXPECT_LT((state.pose - posed).cwiseAbs().maxCoeff(), 1e-9);
-  EXPECT_TRUE(state.history.canUndo());
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_LT((state.document.pose - posed).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_TRUE(state.document.history.canUndo());
 
   // A single mesh: an error that says what to drop; the scene and pose stay.
   const std::string meshPath = ::testing::TempDir() + "somicage_drop_mesh.obj";
@@ -133,10 +133,10 @@ TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   tri.faces = {{0, 1, 2}};
   saveObj(meshPath, Eigen::MatrixXd::Identity(3, 3), tri);
   openDroppedFiles(state, {meshPath});
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("3 vertices"), std::string::npos) << state.errors.front();
-  EXPECT_EQ(state.scene, scene);
-  EXPECT_LT((state.pose - posed).cwiseAbs().maxCoeff(), 1e-9);
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("3 vertices"), std::string::npos) << state.status.errors.front();
+  EXPECT_EQ(state.model.scene, scene);
+  EXPECT_LT((state.document.pose - posed).cwiseAbs().maxCoeff(), 1e-9);
   std::remove(posedPath.c_str());
   std::remove(meshPath.c_str());
 }

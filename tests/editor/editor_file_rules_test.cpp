@@ -33,7 +33,7 @@ class Folder : public ::testing::Test {
 };
 
 void makeAChange(AppState& state) {
-  Eigen::MatrixXd p = state.pose;
+  Eigen::MatrixXd p = state.document.pose;
   p(0, 0) += 0.3;
   setPose(state, p);
   commitEdit(state, "Grab");
@@ -107,37 +107,37 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   makeAChange(state);
   // Save session to my_session.json through the dialog.
   openFileDialog(state, FileDialogPurpose::SaveSession);
-  state.dialog.name = path("my_session.json");
+  state.files.dialog.name = path("my_session.json");
   ASSERT_TRUE(submitFileDialog(state));
   const std::string session = readTextFile(path("my_session.json"));
   EXPECT_FALSE(hasUnsavedChanges(state));
   // The export dialog starts with its own name, in the folder the session went to...
   openFileDialog(state, FileDialogPurpose::ExportMesh);
-  EXPECT_EQ(state.dialog.name, "deformed.obj");
-  EXPECT_EQ(state.dialog.folder, root.string());
+  EXPECT_EQ(state.files.dialog.name, "deformed.obj");
+  EXPECT_EQ(state.files.dialog.folder, root.string());
   // ... and typing the session's name is refused: the session stays as it was.
-  state.dialog.name = "my_session.json";
+  state.files.dialog.name = "my_session.json";
   EXPECT_FALSE(submitFileDialog(state));
-  EXPECT_FALSE(state.dialog.message.empty());
+  EXPECT_FALSE(state.files.dialog.message.empty());
   EXPECT_EQ(readTextFile(path("my_session.json")), session);
   // The export's own name works; a second export to it asks first, and only "Replace" writes.
-  state.dialog.name = "deformed.obj";
-  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
-  state.exporter.wait();  // the export runs on its worker
+  state.files.dialog.name = "deformed.obj";
+  ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
+  state.jobs.exporter.wait();  // the export runs on its worker
   ASSERT_TRUE(fs::exists(path("deformed.obj")));
   openFileDialog(state, FileDialogPurpose::ExportMesh);
-  EXPECT_EQ(state.dialog.name, "deformed.obj");
+  EXPECT_EQ(state.files.dialog.name, "deformed.obj");
   fs::remove(path("deformed.obj"));
   write("deformed.obj", "# placeholder\n");
   EXPECT_FALSE(submitFileDialog(state));
-  EXPECT_EQ(state.dialog.confirmPath, path("deformed.obj"));
+  EXPECT_EQ(state.files.dialog.confirmPath, path("deformed.obj"));
   EXPECT_EQ(readTextFile(path("deformed.obj")), "# placeholder\n");
   EXPECT_TRUE(submitFileDialog(state, true));
-  state.exporter.wait();
+  state.jobs.exporter.wait();
   EXPECT_NE(readTextFile(path("deformed.obj")), "# placeholder\n");
   // The session dialog kept its own name.
   openFileDialog(state, FileDialogPurpose::SaveSession);
-  EXPECT_EQ(state.dialog.name, "my_session.json");
+  EXPECT_EQ(state.files.dialog.name, "my_session.json");
   cancelFileDialog(state);
 }
 
@@ -145,8 +145,8 @@ TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   AppState state;
   openDemoScene(state);
   requestQuit(state);  // nothing changed: quits at once
-  EXPECT_TRUE(state.quitRequested);
-  state.quitRequested = false;
+  EXPECT_TRUE(state.document.quitRequested);
+  state.document.quitRequested = false;
 
   makeAChange(state);
   Autosave autosave(autosavePaths(root.c_str(), nullptr), 0.0);
@@ -155,47 +155,47 @@ TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   ASSERT_TRUE(fs::exists(autosave.paths().session));
 
   requestQuit(state);
-  ASSERT_TRUE(state.unsaved.asking.has_value());
-  EXPECT_FALSE(state.quitRequested);
+  ASSERT_TRUE(state.document.unsaved.asking.has_value());
+  EXPECT_FALSE(state.document.quitRequested);
   answerUnsaved(state, UnsavedChoice::Cancel);
-  EXPECT_FALSE(state.quitRequested);
-  EXPECT_FALSE(state.unsaved.asking.has_value());
+  EXPECT_FALSE(state.document.quitRequested);
+  EXPECT_FALSE(state.document.unsaved.asking.has_value());
   EXPECT_TRUE(fs::exists(autosave.paths().session));  // Cancel keeps the autosave: the work is not lost
 
   // Opening the 2D demo: Don't save goes on and drops the changes.
   guardUnsaved(state, "open the 2D demo", [](AppState& s) { requestDemo(s, 2); });
-  EXPECT_FALSE(state.loadingScene);
+  EXPECT_FALSE(state.loadingScene());
   answerUnsaved(state, UnsavedChoice::DontSave);
-  EXPECT_TRUE(state.loadingScene);
-  state.worker.cancel();
-  state.worker.wait();
-  state.loadingScene = false;
+  EXPECT_TRUE(state.loadingScene());
+  state.jobs.precompute.cancel();
+  state.jobs.precompute.wait();
+  state.jobs.load.reset();
 
   // Save with no session file yet: the Save session dialog first, then the action once it saved.
   requestQuit(state);
   answerUnsaved(state, UnsavedChoice::Save);
-  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::SaveSession);
-  EXPECT_FALSE(state.quitRequested);
-  state.dialog.name = path("saved.json");
+  EXPECT_EQ(state.files.dialog.purpose, FileDialogPurpose::SaveSession);
+  EXPECT_FALSE(state.document.quitRequested);
+  state.files.dialog.name = path("saved.json");
   ASSERT_TRUE(submitFileDialog(state));
-  EXPECT_TRUE(state.quitRequested);
+  EXPECT_TRUE(state.document.quitRequested);
   EXPECT_FALSE(hasUnsavedChanges(state));
   EXPECT_TRUE(fs::exists(path("saved.json")));
 
   // Save with a session file: saved there, then the action. Cancelling the Save dialog cancels the action.
-  state.quitRequested = false;
+  state.document.quitRequested = false;
   makeAChange(state);
   requestQuit(state);
   answerUnsaved(state, UnsavedChoice::Save);
-  EXPECT_TRUE(state.quitRequested);
+  EXPECT_TRUE(state.document.quitRequested);
   EXPECT_FALSE(hasUnsavedChanges(state));
-  state.quitRequested = false;
-  state.documentPath.clear();
+  state.document.quitRequested = false;
+  state.document.path.clear();
   makeAChange(state);
   requestQuit(state);
   answerUnsaved(state, UnsavedChoice::Save);
   cancelFileDialog(state);
-  EXPECT_FALSE(state.quitRequested);
+  EXPECT_FALSE(state.document.quitRequested);
   EXPECT_TRUE(fs::exists(autosave.paths().session));
   autosave.finish();
 }
@@ -206,19 +206,19 @@ TEST_F(Folder, OpenTakesAMeshAlone) {
   AppState state;
   write("tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   openFileDialog(state, FileDialogPurpose::OpenScene);
-  state.dialog.mesh = path("tetra.obj");
-  state.dialog.cage.clear();
-  state.dialog.posed = path("tetra.obj");
+  state.files.dialog.mesh = path("tetra.obj");
+  state.files.dialog.cage.clear();
+  state.files.dialog.posed = path("tetra.obj");
   EXPECT_FALSE(submitFileDialog(state)) << "a posed cage without its cage";
-  state.dialog.posed.clear();
-  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
-  EXPECT_TRUE(state.loadingScene);
+  state.files.dialog.posed.clear();
+  ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
+  EXPECT_TRUE(state.loadingScene());
   installNextOutcome(state);
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_TRUE(state.scene);
-  EXPECT_EQ(state.scene->meshPath, path("tetra.obj"));
-  EXPECT_GT(state.scene->restCage.numFaces(), 0);
-  EXPECT_NE(state.statusMessage.find("cage generated"), std::string::npos) << state.statusMessage;
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_TRUE(state.model.scene);
+  EXPECT_EQ(state.model.scene->meshPath, path("tetra.obj"));
+  EXPECT_GT(state.model.scene->restCage.numFaces(), 0);
+  EXPECT_NE(state.status.message.find("cage generated"), std::string::npos) << state.status.message;
 }
 
 TEST_F(Folder, OpenFillsTheMeshThenTheCageAndARecentEntryOpensOnlyOnOk) {
@@ -227,32 +227,32 @@ TEST_F(Folder, OpenFillsTheMeshThenTheCageAndARecentEntryOpensOnlyOnOk) {
   AppState state;
   openDemoScene(state);
   openFileDialog(state, FileDialogPurpose::OpenScene);
-  state.dialog.folder = root.string();
-  chooseSceneFile(state.dialog, "mesh.obj");
-  chooseSceneFile(state.dialog, "cage.obj");
-  EXPECT_EQ(state.dialog.mesh, path("mesh.obj"));
-  EXPECT_EQ(state.dialog.cage, path("cage.obj"));
-  chooseSceneFile(state.dialog, "other_cage.obj");  // the cage field stays the target once the mesh is there
-  EXPECT_EQ(state.dialog.mesh, path("mesh.obj"));
-  EXPECT_EQ(state.dialog.cage, path("other_cage.obj"));
+  state.files.dialog.folder = root.string();
+  chooseSceneFile(state.files.dialog, "mesh.obj");
+  chooseSceneFile(state.files.dialog, "cage.obj");
+  EXPECT_EQ(state.files.dialog.mesh, path("mesh.obj"));
+  EXPECT_EQ(state.files.dialog.cage, path("cage.obj"));
+  chooseSceneFile(state.files.dialog, "other_cage.obj");  // the cage field stays the target once the mesh is there
+  EXPECT_EQ(state.files.dialog.mesh, path("mesh.obj"));
+  EXPECT_EQ(state.files.dialog.cage, path("other_cage.obj"));
   cancelFileDialog(state);
 
   // A saved session is a Recent entry at once; one click on it in Open chooses it and opens nothing ...
   openFileDialog(state, FileDialogPurpose::SaveSession);
-  state.dialog.name = path("s.json");
-  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
-  ASSERT_FALSE(state.recent.entries().empty());
-  const RecentEntry entry = state.recent.entries().front();
+  state.files.dialog.name = path("s.json");
+  ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
+  ASSERT_FALSE(state.files.recent.entries().empty());
+  const RecentEntry entry = state.files.recent.entries().front();
   ASSERT_EQ(entry.kind, RecentEntry::Kind::Session);
   openFileDialog(state, FileDialogPurpose::OpenScene);
-  chooseRecent(state.dialog, entry);
-  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::OpenScene);
-  EXPECT_EQ(state.statusMessage.find("opened session"), std::string::npos) << state.statusMessage;
+  chooseRecent(state.files.dialog, entry);
+  EXPECT_EQ(state.files.dialog.purpose, FileDialogPurpose::OpenScene);
+  EXPECT_EQ(state.status.message.find("opened session"), std::string::npos) << state.status.message;
   // ... and OK (or a double click, which submits the same way) opens it (the same scene: applied at once).
   ASSERT_TRUE(submitFileDialog(state));
-  EXPECT_EQ(state.dialog.purpose, FileDialogPurpose::None);
-  EXPECT_NE(state.statusMessage.find("opened session"), std::string::npos) << state.statusMessage;
-  EXPECT_EQ(fs::path(state.documentPath), fs::path(path("s.json")));
+  EXPECT_EQ(state.files.dialog.purpose, FileDialogPurpose::None);
+  EXPECT_NE(state.status.message.find("opened session"), std::string::npos) << state.status.message;
+  EXPECT_EQ(fs::path(state.document.path), fs::path(path("s.json")));
 }
 
 // Issue 24, row 14: Save and Export started where the scene was opened from, the read-only models folder, and the
@@ -263,8 +263,8 @@ TEST_F(Folder, SaveAndExportStartInAWritableFolderWithFullPaths) {
   AppState state;
   openDemoScene(state);
   const std::string readOnly = path("models/firehydrant");  // never created
-  state.dialog.recentFolders = {readOnly};                  // the scene came from there
-  state.dialog.places[static_cast<std::size_t>(FileKind::PosedCage)] = {readOnly, "posed.obj"};
+  state.files.dialog.recentFolders = {readOnly};                  // the scene came from there
+  state.files.dialog.places[static_cast<std::size_t>(FileKind::PosedCage)] = {readOnly, "posed.obj"};
   ASSERT_FALSE(folderWritable(readOnly));
   ASSERT_TRUE(folderWritable(root.string()));
   const std::string cwd = fs::current_path().string();
@@ -272,25 +272,25 @@ TEST_F(Folder, SaveAndExportStartInAWritableFolderWithFullPaths) {
   for (FileDialogPurpose purpose : {FileDialogPurpose::SaveSession, FileDialogPurpose::ExportMesh,
                                     FileDialogPurpose::SavePose, FileDialogPurpose::Screenshot}) {
     openFileDialog(state, purpose);
-    EXPECT_EQ(state.dialog.folder, cwd) << purposeTitle(purpose);
+    EXPECT_EQ(state.files.dialog.folder, cwd) << purposeTitle(purpose);
     cancelFileDialog(state);
   }
   // Reading still starts where the last file came from.
   openFileDialog(state, FileDialogPurpose::LoadPose);
-  EXPECT_EQ(state.dialog.folder, readOnly);
+  EXPECT_EQ(state.files.dialog.folder, readOnly);
   cancelFileDialog(state);
 
   // With a session saved in a writable folder, that folder; a writable folder the kind used last wins.
   openFileDialog(state, FileDialogPurpose::SaveSession);
-  state.dialog.name = path("sub/s.json");
-  ASSERT_TRUE(submitFileDialog(state)) << state.dialog.message;
+  state.files.dialog.name = path("sub/s.json");
+  ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
   openFileDialog(state, FileDialogPurpose::ExportMesh);
-  EXPECT_EQ(state.dialog.folder, path("sub"));
+  EXPECT_EQ(state.files.dialog.folder, path("sub"));
   cancelFileDialog(state);
   EXPECT_EQ(defaultWriteFolder(state), path("sub"));
-  state.dialog.places[static_cast<std::size_t>(FileKind::DeformedMesh)] = {root.string(), "d.obj"};
+  state.files.dialog.places[static_cast<std::size_t>(FileKind::DeformedMesh)] = {root.string(), "d.obj"};
   openFileDialog(state, FileDialogPurpose::ExportMesh);
-  EXPECT_EQ(state.dialog.folder, root.string());
+  EXPECT_EQ(state.files.dialog.folder, root.string());
   cancelFileDialog(state);
 
   // Export animation: a bare name becomes a path in the session's folder; a whole path stays as typed.

@@ -32,24 +32,24 @@ class DocumentCommands : public ::testing::Test {
  protected:
   void SetUp() override {
     openDemoScene(state);
-    rest = state.pose;
+    rest = state.document.pose;
   }
   // Runs a command and checks: one new step named `name`, undo gives back the state before exactly, redo the
   // state after exactly.
   void expectOneUndoableStep(const std::string& name, const std::function<void()>& command) {
     const Document before = currentDocument(state);
-    const std::size_t steps = state.history.cursor();
+    const std::size_t steps = state.document.history.cursor();
     command();
     const Document after = currentDocument(state);
     ASSERT_NE(after, before) << name << " changed nothing";
-    ASSERT_EQ(state.history.cursor(), steps + 1) << name;
-    EXPECT_EQ(state.history.step(state.history.cursor()).name, name);
+    ASSERT_EQ(state.document.history.cursor(), steps + 1) << name;
+    EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, name);
     undo(state);
     EXPECT_EQ(currentDocument(state), before) << "undo " << name;
-    EXPECT_EQ(state.statusMessage, "undo " + name);
+    EXPECT_EQ(state.status.message, "undo " + name);
     redo(state);
     EXPECT_EQ(currentDocument(state), after) << "redo " << name;
-    EXPECT_EQ(state.statusMessage, "redo " + name);
+    EXPECT_EQ(state.status.message, "redo " + name);
   }
   Eigen::MatrixXd moved(double dy) const {
     Eigen::MatrixXd p = rest;
@@ -131,13 +131,13 @@ TEST_F(DocumentCommands, EveryCommandIsOneExactUndoableStep) {
     commitEdit(state, "Grab");
   });
   expectOneUndoableStep("Reset pose", [&] { resetPose(state); });
-  EXPECT_EQ(state.pose, rest);
+  EXPECT_EQ(state.document.pose, rest);
   undo(state);  // the case: drag, Reset pose, Ctrl+Z gives the dragged pose back
-  EXPECT_EQ(state.pose, moved(0.4));
+  EXPECT_EQ(state.document.pose, moved(0.4));
 
   const auto param = [&](const char* name, auto change) {
     expectOneUndoableStep(name, [&] {
-      DeformParams p = state.params;
+      DeformParams p = state.document.params;
       change(p);
       setParams(state, p);
       commitEdit(state, name);
@@ -154,62 +154,62 @@ TEST_F(DocumentCommands, EveryCommandIsOneExactUndoableStep) {
     commitEdit(state, "Method");
   });
 
-  state.selection.setIndices({0, 1, 2, 3});
+  state.input.selection.setIndices({0, 1, 2, 3});
   const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   for (ClearKind kind : {ClearKind::Location, ClearKind::Rotation, ClearKind::Scale}) {
-    Eigen::MatrixXd p = state.pose;  // rotate, scale and move the four handles: every clear has work to do
+    Eigen::MatrixXd p = state.document.pose;  // rotate, scale and move the four handles: every clear has work to do
     for (int i : {0, 1, 2, 3})
       p.row(i) = (2.0 * turn * p.row(i).transpose()).transpose() + Eigen::RowVector3d(0.1, 0.2, 0);
     setPose(state, p);
     commitEdit(state, "Grab");
     expectOneUndoableStep(clearKindName(kind), [&] {
-      setPose(state, clearTransform(kind, rest, state.pose, state.selection.indices()));
+      setPose(state, clearTransform(kind, rest, state.document.pose, state.input.selection.indices()));
       commitEdit(state, clearKindName(kind));
     });
   }
 
   const std::string posedPath = ::testing::TempDir() + "somicage_history_posed.obj";
-  saveObj(posedPath, moved(-0.3), cageTopology(state.scene->restCage));
+  saveObj(posedPath, moved(-0.3), cageTopology(state.model.scene->restCage));
   expectOneUndoableStep("Load posed cage", [&] { ASSERT_TRUE(loadPosedCage(state, posedPath)); });
-  EXPECT_LT((state.pose - moved(-0.3)).cwiseAbs().maxCoeff(), 1e-9);
+  EXPECT_LT((state.document.pose - moved(-0.3)).cwiseAbs().maxCoeff(), 1e-9);
   std::filesystem::remove(posedPath);
 }
 
 TEST_F(DocumentCommands, JumpingInTheHistoryRestoresThatStep) {
   setPose(state, moved(0.2));
   commitEdit(state, "Grab");
-  DeformParams p = state.params;
+  DeformParams p = state.document.params;
   p.nu = 0.25;
   setParams(state, p);
   commitEdit(state, "nu");
   resetPose(state);
-  ASSERT_EQ(state.history.size(), 4u);
+  ASSERT_EQ(state.document.history.size(), 4u);
   jumpToStep(state, 1);
-  EXPECT_EQ(state.pose, moved(0.2));
-  EXPECT_EQ(state.params.nu, 0.0);
+  EXPECT_EQ(state.document.pose, moved(0.2));
+  EXPECT_EQ(state.document.params.nu, 0.0);
   jumpToStep(state, 0);
-  EXPECT_EQ(state.pose, rest);
+  EXPECT_EQ(state.document.pose, rest);
   jumpToStep(state, 3);
-  EXPECT_EQ(state.pose, rest);
-  EXPECT_EQ(state.params.nu, 0.25);
+  EXPECT_EQ(state.document.pose, rest);
+  EXPECT_EQ(state.document.params.nu, 0.25);
   jumpToStep(state, 2);
-  EXPECT_EQ(state.pose, moved(0.2));
-  EXPECT_EQ(state.params.nu, 0.25);
+  EXPECT_EQ(state.document.pose, moved(0.2));
+  EXPECT_EQ(state.document.params.nu, 0.25);
 }
 
 TEST_F(DocumentCommands, NoChangeMakesNoStepAndUndoAtTheStartSaysSo) {
   resetPose(state);  // already at rest
-  EXPECT_EQ(state.history.size(), 1u);
-  EXPECT_EQ(state.statusMessage, "the pose is at rest already");
+  EXPECT_EQ(state.document.history.size(), 1u);
+  EXPECT_EQ(state.status.message, "the pose is at rest already");
   undo(state);
-  EXPECT_EQ(state.statusMessage, "nothing to undo");
+  EXPECT_EQ(state.status.message, "nothing to undo");
 }
 
 TEST_F(DocumentCommands, TitleShowsTheDocumentAndAStarWhenUnsaved) {
-  EXPECT_EQ(windowTitle(state), state.scene->name + " - SomiCage");
+  EXPECT_EQ(windowTitle(state), state.model.scene->name + " - SomiCage");
   setPose(state, moved(0.2));
   commitEdit(state, "Grab");
-  EXPECT_EQ(windowTitle(state), state.scene->name + "* - SomiCage");
+  EXPECT_EQ(windowTitle(state), state.model.scene->name + "* - SomiCage");
   const std::string path = ::testing::TempDir() + "somicage_title_session.json";
   ASSERT_TRUE(saveSessionFile(state, path));
   EXPECT_EQ(windowTitle(state), "somicage_title_session - SomiCage");

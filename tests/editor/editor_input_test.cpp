@@ -33,12 +33,12 @@ class InputHarness : public ::testing::Test {
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
     views = layoutViews(1000, 700, 0, 0, 0, 1);
-    state.viewAspect = views[0].width / views[0].height;
+    state.view.viewAspect = views[0].width / views[0].height;
     requestDemo(state, 3);
-    std::optional<PrecomputeOutcome> out = state.worker.wait();
+    std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
     ASSERT_TRUE(out.has_value());
     installOutcome(state, std::move(*out));
-    ASSERT_TRUE(state.scene);
+    ASSERT_TRUE(state.model.scene);
     frame();
   }
   void TearDown() override { ImGui::DestroyContext(); }
@@ -69,7 +69,7 @@ class InputHarness : public ::testing::Test {
   }
   Eigen::Vector2d handle(int i) const {
     Eigen::Vector2d s;
-    state.camera.project(state.pose.row(i).transpose(), views[0].width, views[0].height, s);
+    state.view.camera.project(state.document.pose.row(i).transpose(), views[0].width, views[0].height, s);
     return s + views[0].origin();
   }
   // A cage vertex whose handle is not covered by another one (the demo view shows all 20 apart).
@@ -83,16 +83,16 @@ class InputHarness : public ::testing::Test {
 
 TEST_F(InputHarness, ClickSelectsAndShiftClickToggles) {
   click(handle(3));
-  EXPECT_EQ(state.selection.indices(), (std::vector<int>{3}));
+  EXPECT_EQ(state.input.selection.indices(), (std::vector<int>{3}));
   ImGui::GetIO().KeyShift = true;
   click(handle(5));
-  EXPECT_EQ(state.selection.indices(), (std::vector<int>{3, 5}));
+  EXPECT_EQ(state.input.selection.indices(), (std::vector<int>{3, 5}));
   click(handle(3));
-  EXPECT_EQ(state.selection.indices(), (std::vector<int>{5}));
+  EXPECT_EQ(state.input.selection.indices(), (std::vector<int>{5}));
   ImGui::GetIO().KeyShift = false;
   click(Eigen::Vector2d(3, 3));  // background click clears
-  EXPECT_TRUE(state.selection.empty());
-  EXPECT_FALSE(state.history.canUndo());  // selecting is not a pose edit
+  EXPECT_TRUE(state.input.selection.empty());
+  EXPECT_FALSE(state.document.history.canUndo());  // selecting is not a pose edit
 }
 
 TEST_F(InputHarness, BoxDragSelectsTheHandlesInside) {
@@ -100,90 +100,90 @@ TEST_F(InputHarness, BoxDragSelectsTheHandlesInside) {
   button(0, true);
   moveTo(Eigen::Vector2d(500, 698));  // the left half of the view
   button(0, false);
-  const std::vector<int> picked = state.selection.indices();
+  const std::vector<int> picked = state.input.selection.indices();
   ASSERT_FALSE(picked.empty());
   for (int i : picked) EXPECT_LT(handle(i).x(), 500.0);
   EXPECT_LT(picked.size(), 20u);
 }
 
 TEST_F(InputHarness, DraggingAHandleMovesTheSelectionAndUndoes) {
-  const Eigen::MatrixXd before = state.pose;
+  const Eigen::MatrixXd before = state.document.pose;
   const int v = someVertex();
   moveTo(handle(v));
   button(0, true);
   moveTo(handle(v) + Eigen::Vector2d(60, -30));
   button(0, false);
-  EXPECT_GT((state.pose.row(v) - before.row(v)).norm(), 0.05);
-  for (int i = 0; i < state.pose.rows(); ++i) {
+  EXPECT_GT((state.document.pose.row(v) - before.row(v)).norm(), 0.05);
+  for (int i = 0; i < state.document.pose.rows(); ++i) {
     if (i != v) {
-      EXPECT_EQ(state.pose.row(i), before.row(i));
+      EXPECT_EQ(state.document.pose.row(i), before.row(i));
     }
   }
-  ASSERT_TRUE(state.history.canUndo());
+  ASSERT_TRUE(state.document.history.canUndo());
   ImGui::GetIO().KeyCtrl = true;
   key(GLFW_KEY_Z);
-  EXPECT_EQ(state.pose, before);
+  EXPECT_EQ(state.document.pose, before);
   ImGui::GetIO().KeyShift = true;
   key(GLFW_KEY_Z);  // Ctrl+Shift+Z redoes
-  EXPECT_NE(state.pose, before);
+  EXPECT_NE(state.document.pose, before);
   ImGui::GetIO().KeyCtrl = ImGui::GetIO().KeyShift = false;
 }
 
 TEST_F(InputHarness, GrabWithAxisConfirmsWithEnterAndCancelsWithEscape) {
   key(GLFW_KEY_A);  // select all
-  EXPECT_EQ(state.selection.count(), 20);
-  const Eigen::MatrixXd before = state.pose;
+  EXPECT_EQ(state.input.selection.count(), 20);
+  const Eigen::MatrixXd before = state.document.pose;
   moveTo(Eigen::Vector2d(500, 350));
   key(GLFW_KEY_G);
   key(GLFW_KEY_Y);
   moveTo(Eigen::Vector2d(530, 300));
-  EXPECT_EQ(state.pose.col(0), before.col(0));  // constrained to y
-  EXPECT_EQ(state.pose.col(2), before.col(2));
-  EXPECT_GT((state.pose.col(1) - before.col(1)).minCoeff(), 0.0);  // everything moved up
+  EXPECT_EQ(state.document.pose.col(0), before.col(0));  // constrained to y
+  EXPECT_EQ(state.document.pose.col(2), before.col(2));
+  EXPECT_GT((state.document.pose.col(1) - before.col(1)).minCoeff(), 0.0);  // everything moved up
   key(GLFW_KEY_ENTER);
-  EXPECT_TRUE(state.history.canUndo());
-  const Eigen::MatrixXd grabbed = state.pose;
+  EXPECT_TRUE(state.document.history.canUndo());
+  const Eigen::MatrixXd grabbed = state.document.pose;
 
   key(GLFW_KEY_S);
   moveTo(Eigen::Vector2d(700, 200));
-  EXPECT_NE(state.pose, grabbed);
+  EXPECT_NE(state.document.pose, grabbed);
   key(GLFW_KEY_ESCAPE);
-  EXPECT_EQ(state.pose, grabbed);
-  EXPECT_EQ(state.history.cursor(), 1u);  // one step (the grab) above the original
+  EXPECT_EQ(state.document.pose, grabbed);
+  EXPECT_EQ(state.document.history.cursor(), 1u);  // one step (the grab) above the original
 
   key(GLFW_KEY_R);
   moveTo(Eigen::Vector2d(600, 500));
   button(1, true);  // right click cancels
   button(1, false);
-  EXPECT_EQ(state.pose, grabbed);
+  EXPECT_EQ(state.document.pose, grabbed);
 
   ImGui::GetIO().KeyAlt = true;
   key(GLFW_KEY_A);  // Alt+A: select none
   ImGui::GetIO().KeyAlt = false;
-  EXPECT_TRUE(state.selection.empty());
+  EXPECT_TRUE(state.input.selection.empty());
   key(GLFW_KEY_G);  // nothing selected: no transform starts
-  EXPECT_EQ(state.interaction.mode, Interaction::Mode::Idle);
+  EXPECT_EQ(state.input.mouse.mode, Interaction::Mode::Idle);
 }
 
 TEST_F(InputHarness, WheelZoomsAndMiddleDragOrbits) {
-  const CameraState before = state.camera.state();
+  const CameraState before = state.view.camera.state();
   moveTo(Eigen::Vector2d(500, 350));
   ImGui::GetIO().MouseWheel = 2.0f;
   frame();
   ImGui::GetIO().MouseWheel = 0.0f;
-  EXPECT_LT(state.camera.state().distance, before.distance);
+  EXPECT_LT(state.view.camera.state().distance, before.distance);
   button(2, true);
   moveTo(Eigen::Vector2d(560, 350));
   button(2, false);
-  EXPECT_NE(state.camera.state().yaw, before.yaw);
+  EXPECT_NE(state.view.camera.state().yaw, before.yaw);
   key(GLFW_KEY_F);  // frame all restores a sensible distance
-  EXPECT_GT(state.camera.state().distance, 0.0);
+  EXPECT_GT(state.view.camera.state().distance, 0.0);
 }
 
 // Esc cancels a running precompute (before, only the panel's Cancel button did): a load held until the key has been
 // handled ends cancelled, and the scene on screen stays.
 TEST_F(InputHarness, EscapeCancelsARunningPrecompute) {
-  const std::shared_ptr<const Scene> shown = state.scene;
+  const std::shared_ptr<const Scene> shown = state.model.scene;
   std::atomic<bool> loading{false}, release{false};
   PrecomputeRequest request;
   request.loadScene = [&] {
@@ -191,19 +191,19 @@ TEST_F(InputHarness, EscapeCancelsARunningPrecompute) {
     while (!release) std::this_thread::yield();
     return makeDemoScene(2);
   };
-  request.methods = {state.method};
-  state.loadingScene = true;
-  state.worker.start(std::move(request));
+  request.methods = {state.document.method};
+  state.jobs.load.emplace();
+  state.jobs.precompute.start(std::move(request));
   while (!loading) std::this_thread::yield();
   moveTo(Eigen::Vector2d(500, 350));
   key(GLFW_KEY_ESCAPE);
   release = true;
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled) << "Esc did not cancel the precompute";
   installOutcome(state, std::move(*out));
-  EXPECT_EQ(state.scene, shown);
-  EXPECT_FALSE(state.loadingScene);
+  EXPECT_EQ(state.model.scene, shown);
+  EXPECT_FALSE(state.loadingScene());
 }
 
 // Space plays the timeline from the cursor and stops it (before, only the panel's Play button did); without keys
@@ -211,12 +211,12 @@ TEST_F(InputHarness, EscapeCancelsARunningPrecompute) {
 TEST_F(InputHarness, SpacePlaysAndStopsTheTimeline) {
   key(GLFW_KEY_SPACE);
   EXPECT_FALSE(state.animation.playing);
-  EXPECT_NE(state.statusMessage.find("nothing to play"), std::string::npos) << state.statusMessage;
+  EXPECT_NE(state.status.message.find("nothing to play"), std::string::npos) << state.status.message;
 
   state.animation.timeline.interpolation = Interpolation::Linear;
   state.animation.timeline.fps = 24;
   keyCurrentPose(state);  // frame 0: rest
-  Eigen::MatrixXd moved = state.pose;
+  Eigen::MatrixXd moved = state.document.pose;
   moved.col(1).array() += 0.5;
   setPose(state, moved);
   state.animation.frame = 48;
@@ -228,7 +228,7 @@ TEST_F(InputHarness, SpacePlaysAndStopsTheTimeline) {
   EXPECT_EQ(state.animation.frame, 0.0);
   tickPlayback(state, 101.0);  // one second at 24 fps: frame 24, half-way between the keys
   EXPECT_EQ(state.animation.frame, 24.0);
-  EXPECT_LE((state.pose.col(1) - (moved.col(1).array() - 0.25).matrix()).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LE((state.document.pose.col(1) - (moved.col(1).array() - 0.25).matrix()).cwiseAbs().maxCoeff(), 1e-12);
   key(GLFW_KEY_SPACE);
   EXPECT_FALSE(state.animation.playing);
 }
@@ -236,7 +236,7 @@ TEST_F(InputHarness, SpacePlaysAndStopsTheTimeline) {
 // Issue 24, row 12: dragging a handle (or the gizmo) showed no numbers, where G / R / S do. The header reads the
 // displacement the drag made (to its 4 printed digits), and goes with the release.
 TEST_F(InputHarness, DraggingAHandleShowsItsDisplacement) {
-  const Eigen::MatrixXd before = state.pose;
+  const Eigen::MatrixXd before = state.document.pose;
   const int v = someVertex();
   moveTo(handle(v));
   button(0, true);
@@ -245,7 +245,7 @@ TEST_F(InputHarness, DraggingAHandleShowsItsDisplacement) {
   const std::string header = transformHeader(state, views);
   double x = 0, y = 0, z = 0;
   ASSERT_EQ(std::sscanf(header.c_str(), "Grab: (%lf, %lf, %lf)", &x, &y, &z), 3) << header;
-  const Eigen::Vector3d moved = (state.pose.row(v) - before.row(v)).transpose();
+  const Eigen::Vector3d moved = (state.document.pose.row(v) - before.row(v)).transpose();
   EXPECT_GT(moved.norm(), 0.05);
   EXPECT_LE((Eigen::Vector3d(x, y, z) - moved).cwiseAbs().maxCoeff(), 1e-3 * moved.norm()) << header;
   EXPECT_EQ(header.find('['), std::string::npos) << "a drag takes no keys: " << header;

@@ -72,25 +72,25 @@ TEST(EditorNuSweep, EachVariantsFoldOverLineIsWhatAnalyzeCountsForThatVariant) {
   AppState state;
   requestScene(state, ellipsoidInBar());
   installNextOutcome(state);
-  ASSERT_TRUE(state.scene) << (state.errors.empty() ? "no scene" : state.errors.front());
-  const Scene& scene = *state.scene;
+  ASSERT_TRUE(state.model.scene) << (state.status.errors.empty() ? "no scene" : state.status.errors.front());
+  const Scene& scene = *state.model.scene;
   setPose(state, twistedBar(scene.restCage.vertices));
-  DeformParams p = state.params;
+  DeformParams p = state.document.params;
   p.kind = VariantKind::Stable;  // the panel's variant: its volume line is the stable variant's
   setParams(state, p);
   ASSERT_TRUE(updateDeformation(state));
   sweepNuNow(state);
   measureViews(state);
-  ASSERT_TRUE(state.quantities.worker.busy()) << "the sweep runs on the worker";
-  state.quantities.worker.join();
+  ASSERT_TRUE(state.view.quantities.worker.busy()) << "the sweep runs on the worker";
+  state.view.quantities.worker.join();
   measureViews(state);
-  const ViewQuantities& q = state.quantities;
+  const ViewQuantities& q = state.view.quantities;
   ASSERT_EQ(q.nuSweep.size(), 25u);
   ASSERT_EQ(q.nuSweepVariants.size(), variantChoices().size());
 
   test::ScratchDir dir;
   saveObj(dir.file("rest.obj"), scene.restCage.vertices, cageTopology(scene.restCage));
-  saveObj(dir.file("posed.obj"), state.pose, cageTopology(scene.restCage));
+  saveObj(dir.file("posed.obj"), state.document.pose, cageTopology(scene.restCage));
   PolygonMesh mesh;
   for (Eigen::Index f = 0; f < scene.meshTriangles.rows(); ++f)
     mesh.faces.push_back({scene.meshTriangles(f, 0), scene.meshTriangles(f, 1), scene.meshTriangles(f, 2)});

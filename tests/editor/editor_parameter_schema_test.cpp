@@ -47,8 +47,8 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
 
   // The pane's label shows the view's own value.
   AppState state;
-  state.compare = true;
-  state.compareViews = {view, ViewSpec{methods::somigliana(), {}, {}}};
+  state.view.compare = true;
+  state.view.compareViews = {view, ViewSpec{methods::somigliana(), {}, {}}};
   EXPECT_NE(viewLabel(state, 0).find("Constant  test-shift=-0.50 (own)"), std::string::npos) << viewLabel(state, 0);
 
   // Sessions: the shared value under the row's session key, and the view's own, read back exactly.
@@ -56,7 +56,7 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
   s.method = test::constantMethod();
   s.params.extra["test-shift"] = 0.125;
   s.compare = true;
-  s.compareViews = state.compareViews;
+  s.compareViews = state.view.compareViews;
   const std::string text = sessionToJson(s);
   EXPECT_NE(text.find("\"testShift\": 0.125"), std::string::npos) << text;
   const Session back = sessionFromJson(text, "s.json");
@@ -80,7 +80,7 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
 TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
   const ConstantMethodRegistration registration;
   AppState state;
-  state.method = test::constantMethod();
+  state.document.method = test::constantMethod();
   const auto width = [](const char* text) { return 7.0f * static_cast<float>(std::strlen(text)); };
   std::vector<ParameterWidget> widgets = parameterWidgets(state, 320, width);
   ASSERT_EQ(widgets.size(), parameterSchema().size());
@@ -108,12 +108,12 @@ TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
   EXPECT_NE(find("bulging")->kind, ParameterWidgetKind::Slider);
   EXPECT_NE(find("bulging")->tooltip.find("swept-volume"), std::string::npos);
 
-  state.method = methods::somigliana();
+  state.document.method = methods::somigliana();
   widgets = parameterWidgets(state, 320, width);
   EXPECT_FALSE(find("test-shift")->enabled);
   EXPECT_TRUE(find("nu")->enabled);
   EXPECT_TRUE(find("blend")->enabled) << "the global variant is the paper's at blend 0";
-  setVariant(state.params, "affine", "test");
+  setVariant(state.document.params, "affine", "test");
   widgets = parameterWidgets(state, 320, width);
   EXPECT_FALSE(find("blend")->enabled) << "blend applies to the paper's variant only";
   EXPECT_FALSE(find("corotational")->enabled) << "BEM's alone";
@@ -129,7 +129,7 @@ TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
   ImGui::NewFrame();
   ImGui::SetNextWindowSize(ImVec2(340, 560));
   ImGui::Begin("Controls");
-  state.method = test::constantMethod();
+  state.document.method = test::constantMethod();
   ImGui::LogToBuffer();
   drawParameterWidgets(state);
   const std::string drawn = GImGui->LogBuffer.c_str();

@@ -27,15 +27,15 @@ using namespace somicage::editor;
 namespace {
 
 void loadDemo(AppState& state) {
-  state.scene = std::make_shared<const Scene>(makeDemoScene(3));
-  state.pose = state.scene->restCage.vertices;
-  state.history.reset(currentDocument(state), "Original", true);
+  state.model.scene = std::make_shared<const Scene>(makeDemoScene(3));
+  state.document.pose = state.model.scene->restCage.vertices;
+  state.document.history.reset(currentDocument(state), "Original", true);
 }
 
 TEST(EditorPoseKeys, LibraryEditsAreUndoable) {
   AppState state;
   loadDemo(state);
-  const Eigen::MatrixXd rest = state.pose;
+  const Eigen::MatrixXd rest = state.document.pose;
   storeCurrentPose(state, "rest");
   Eigen::MatrixXd moved = rest;
   moved.row(0) += Eigen::RowVector3d(0.5, 0, 0);
@@ -44,30 +44,30 @@ TEST(EditorPoseKeys, LibraryEditsAreUndoable) {
   renameNamedPose(state, "moved", "reach");
   ASSERT_NE(state.animation.poses.find("reach"), nullptr);
   applyNamedPose(state, "rest");
-  EXPECT_EQ(state.pose, rest);
+  EXPECT_EQ(state.document.pose, rest);
   deleteNamedPose(state, "rest");
   EXPECT_EQ(state.animation.poses.find("rest"), nullptr);
 
   undo(state);  // delete
   ASSERT_NE(state.animation.poses.find("rest"), nullptr);
   undo(state);  // apply
-  EXPECT_EQ(state.pose, moved);
+  EXPECT_EQ(state.document.pose, moved);
   undo(state);  // rename
   EXPECT_NE(state.animation.poses.find("moved"), nullptr);
   EXPECT_EQ(state.animation.poses.find("reach"), nullptr);
   redo(state);
   EXPECT_NE(state.animation.poses.find("reach"), nullptr);
 
-  const size_t undoCount = state.history.size();
+  const size_t undoCount = state.document.history.size();
   renameNamedPose(state, "reach", "rest");  // taken: an error, no edit
-  EXPECT_EQ(state.history.size(), undoCount);
-  EXPECT_EQ(state.errors.size(), 1u);
+  EXPECT_EQ(state.document.history.size(), undoCount);
+  EXPECT_EQ(state.status.errors.size(), 1u);
 }
 
 TEST(EditorPoseKeys, ScrubbingShowsKeysAndTheLinearMean) {
   AppState state;
   loadDemo(state);
-  const Eigen::MatrixXd rest = state.pose;
+  const Eigen::MatrixXd rest = state.document.pose;
   state.animation.timeline.interpolation = Interpolation::Linear;
   state.animation.frame = 0;
   keyCurrentPose(state);
@@ -76,15 +76,15 @@ TEST(EditorPoseKeys, ScrubbingShowsKeysAndTheLinearMean) {
   setPose(state, moved);
   state.animation.frame = 10;
   state.animation.keyParams = true;
-  state.params.gamma = 2.0;
+  state.document.params.gamma = 2.0;
   keyCurrentPose(state);
   ASSERT_EQ(state.animation.timeline.keys.size(), 2u);
 
   scrubTo(state, 0);
-  EXPECT_EQ(state.pose, rest);
+  EXPECT_EQ(state.document.pose, rest);
   scrubTo(state, 5);
-  EXPECT_LE((state.pose - 0.5 * (rest + moved)).cwiseAbs().maxCoeff(), 1e-15);
-  EXPECT_DOUBLE_EQ(state.params.gamma, 2.0) << "the first key sets no gamma: it takes the second's";
+  EXPECT_LE((state.document.pose - 0.5 * (rest + moved)).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_DOUBLE_EQ(state.document.params.gamma, 2.0) << "the first key sets no gamma: it takes the second's";
   undo(state);  // the second key
   EXPECT_EQ(state.animation.timeline.keys.size(), 1u);
 }
@@ -93,7 +93,7 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   AppState state;
   loadDemo(state);
   storeCurrentPose(state, "a");
-  Eigen::MatrixXd moved = state.pose;
+  Eigen::MatrixXd moved = state.document.pose;
   moved.row(2) += Eigen::RowVector3d(0, 0.25, 0);
   setPose(state, moved);
   keyCurrentPose(state);
@@ -101,7 +101,7 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   const Session read = sessionFromJson(sessionToJson(saved), "s.json");
   ASSERT_EQ(read.poses.poses().size(), 2u);
   EXPECT_EQ(read.poses.poses()[0].vertices, makeDemoScene(3).restCage.vertices);
-  EXPECT_EQ(read.poses.poses()[1].vertices, state.pose);
+  EXPECT_EQ(read.poses.poses()[1].vertices, state.document.pose);
   ASSERT_EQ(read.timeline.keys.size(), 1u);
   EXPECT_EQ(read.timeline.keys[0].pose, state.animation.timeline.keys[0].pose);
 
@@ -120,7 +120,7 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
 TEST(EditorPoseKeys, ChangingTheFrameAfterResetPoseIsAStepThatUndoes) {
   AppState state;
   loadDemo(state);
-  const Eigen::MatrixXd rest = state.pose;
+  const Eigen::MatrixXd rest = state.document.pose;
   state.animation.timeline.interpolation = Interpolation::Linear;
   Eigen::MatrixXd a = rest, b = rest;
   a.col(0).array() += 0.3;
@@ -130,21 +130,21 @@ TEST(EditorPoseKeys, ChangingTheFrameAfterResetPoseIsAStepThatUndoes) {
   setPose(state, b);
   state.animation.frame = 10;
   keyCurrentPose(state);
-  const std::size_t keyed = state.history.size();
+  const std::size_t keyed = state.document.history.size();
   scrubTo(state, 4);  // the timeline's cage at frame 10 was shown: nothing unkeyed
   scrubTo(state, 10);
-  EXPECT_EQ(state.history.size(), keyed);
-  EXPECT_EQ(state.pose, b);
+  EXPECT_EQ(state.document.history.size(), keyed);
+  EXPECT_EQ(state.document.pose, b);
 
   resetPose(state);
-  ASSERT_EQ(state.pose, rest);
+  ASSERT_EQ(state.document.pose, rest);
   scrubTo(state, 5);
-  EXPECT_LE((state.pose - 0.5 * (a + b)).cwiseAbs().maxCoeff(), 1e-15);
-  EXPECT_EQ(state.history.step(state.history.cursor()).name, "Frame 5");
-  EXPECT_NE(state.statusMessage.find("unkeyed pose was replaced"), std::string::npos) << state.statusMessage;
+  EXPECT_LE((state.document.pose - 0.5 * (a + b)).cwiseAbs().maxCoeff(), 1e-15);
+  EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Frame 5");
+  EXPECT_NE(state.status.message.find("unkeyed pose was replaced"), std::string::npos) << state.status.message;
   undo(state);
-  EXPECT_EQ(state.pose, rest) << "undo did not give the reset pose back";
-  EXPECT_EQ(state.history.step(state.history.cursor()).name, "Reset pose");
+  EXPECT_EQ(state.document.pose, rest) << "undo did not give the reset pose back";
+  EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Reset pose");
 }
 
 // Issue 24, row 11: Key pose at several frames with one cage stores that cage once; a new cage a new pose.
@@ -159,7 +159,7 @@ TEST(EditorPoseKeys, KeyingOneCageAtSeveralFramesStoresItOnce) {
   ASSERT_EQ(state.animation.poses.poses().size(), 1u);
   ASSERT_EQ(state.animation.timeline.keys.size(), 3u);
   for (const Keyframe& key : state.animation.timeline.keys) EXPECT_EQ(key.pose, "rest");
-  Eigen::MatrixXd moved = state.pose;
+  Eigen::MatrixXd moved = state.document.pose;
   moved.row(0) += Eigen::RowVector3d(0.1, 0, 0);
   setPose(state, moved);
   state.animation.frame = 36;
@@ -193,7 +193,7 @@ TEST(EditorPoseKeys, OpeningAnotherSceneDropsThePosesThatDoNotFitItsCage) {
   AppState state;
   installOutcome(state, demoOutcome("first", false));
   storeCurrentPose(state, "rest");
-  Eigen::MatrixXd moved = state.pose;
+  Eigen::MatrixXd moved = state.document.pose;
   moved.col(2).array() += 0.2;
   setPose(state, moved);
   state.animation.frame = 24;
@@ -209,8 +209,9 @@ TEST(EditorPoseKeys, OpeningAnotherSceneDropsThePosesThatDoNotFitItsCage) {
   installOutcome(state, demo2d);  // 10 vertices in 2D: no pose fits
   EXPECT_TRUE(state.animation.poses.poses().empty());
   EXPECT_TRUE(state.animation.timeline.keys.empty());
-  EXPECT_NE(state.statusMessage.find("dropped 2 poses and 1 key"), std::string::npos) << state.statusMessage;
-  EXPECT_FALSE(state.history.canUndo()) << "the open is the history's first step, with the library as filtered";
+  EXPECT_NE(state.status.message.find("dropped 2 poses and 1 key"), std::string::npos) << state.status.message;
+  EXPECT_FALSE(state.document.history.canUndo())
+      << "the open is the history's first step, with the library as filtered";
   EXPECT_TRUE(makeSession(state).poses.poses().empty());
   EXPECT_FALSE(hasUnsavedChanges(state));
 
@@ -218,7 +219,7 @@ TEST(EditorPoseKeys, OpeningAnotherSceneDropsThePosesThatDoNotFitItsCage) {
   storeCurrentPose(state, "rest");
   installOutcome(state, demoOutcome("20 vertices, other faces", true));  // same size, another cage: dropped
   EXPECT_TRUE(state.animation.poses.poses().empty());
-  EXPECT_NE(state.statusMessage.find("another topology"), std::string::npos) << state.statusMessage;
+  EXPECT_NE(state.status.message.find("another topology"), std::string::npos) << state.status.message;
 }
 
 // A session brings its own library: its poses are kept when they have its cage's shape, a pose of another size is
@@ -228,11 +229,11 @@ TEST(EditorPoseKeys, ASessionsPosesAreKeptWhenTheyFitItsCage) {
   installOutcome(state, demoOutcome("before", false));
   state.animation.poses.store("fits", makeDemoScene(3).restCage.vertices);
   state.animation.poses.store("too small", Eigen::MatrixXd::Zero(10, 3));
-  state.pendingDocumentPath = "session.json";  // what loadSessionFile sets while the session's scene loads
+  state.jobs.load.emplace().documentPath = "session.json";  // what loadSessionFile sets while the session's scene loads
   installOutcome(state, demoOutcome("session scene", true));
   ASSERT_EQ(state.animation.poses.poses().size(), 1u);
   EXPECT_EQ(state.animation.poses.poses()[0].name, "fits");
-  EXPECT_NE(state.statusMessage.find("dropped 1 pose and 0 keys"), std::string::npos) << state.statusMessage;
+  EXPECT_NE(state.status.message.find("dropped 1 pose and 0 keys"), std::string::npos) << state.status.message;
 }
 
 }  // namespace
@@ -253,20 +254,20 @@ class EditorAnimationExport : public ::testing::Test {
     std::ofstream(folder / "mesh.obj")
         << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 -0.5 1\nf 1/1/1 2/2/1 3/3/1\n";
     requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "cage.obj").string());
-    std::optional<PrecomputeOutcome> out = state.worker.wait();
+    std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
     ASSERT_TRUE(out.has_value());
     installOutcome(state, std::move(*out));
-    ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+    ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
     state.animation.timeline.firstFrame = 0;
     state.animation.timeline.lastFrame = 4;
     state.animation.frame = 0;
     keyCurrentPose(state);
-    Eigen::MatrixXd moved = state.pose;
+    Eigen::MatrixXd moved = state.document.pose;
     moved.row(6) += Eigen::RowVector3d(0.3, 0.2, 0.1);
     setPose(state, moved);
     state.animation.frame = 4;
     keyCurrentPose(state);
-    posed = state.pose;
+    posed = state.document.pose;
   }
   void TearDown() override {
     std::error_code ignored;
@@ -288,14 +289,14 @@ class EditorAnimationExport : public ::testing::Test {
 
 TEST_F(EditorAnimationExport, ObjSequenceRunsOnTheWorkerAndHoldsTheTimelineFrames) {
   startAnimationExport(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string());
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   EXPECT_FALSE(state.animation.exportJob.has_value()) << "no frame-loop job: the worker does it";
-  state.exporter.wait();
-  EXPECT_EQ(state.exporter.progress(), 1.0);
-  EXPECT_EQ(state.pose, posed) << "the pose is never touched";
-  const std::vector<Eigen::MatrixXd> expected =
-      deformTimelineFrames(*state.deformers.at(state.method), state.scene->restCage, state.animation.timeline,
-                           state.animation.poses, state.params, state.scene->document->geometry.vertices, 3, 0, 4);
+  state.jobs.exporter.wait();
+  EXPECT_EQ(state.jobs.exporter.progress(), 1.0);
+  EXPECT_EQ(state.document.pose, posed) << "the pose is never touched";
+  const std::vector<Eigen::MatrixXd> expected = deformTimelineFrames(
+      *state.model.deformers.at(state.document.method), state.model.scene->restCage, state.animation.timeline,
+      state.animation.poses, state.document.params, state.model.scene->document->geometry.vertices, 3, 0, 4);
   for (int f = 0; f <= 4; ++f) {
     const std::string name = (folder / "seq" / ("mesh_000" + std::to_string(f) + ".obj")).string();
     const PolygonMesh frame = loadMesh(name);
@@ -346,17 +347,18 @@ TEST_F(EditorAnimationExport, CancelAtAnyPointLeavesNoFileAndNoTemporaryFile) {
                 folder, [&] { return makeAnimationExportJob(state, AnimationExportJob::Kind::ObjSequence, seq); }, seq),
             10)
       << "each frame deformed, then each file written (the temporary folder holds some of them)";
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  EXPECT_EQ(state.pose, posed);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_EQ(state.document.pose, posed);
 }
 
 TEST_F(EditorAnimationExport, MeshExportRunsOnTheWorkerAndCancelLeavesNothing) {
   const std::string out = (folder / "deformed.obj").string();
   ASSERT_TRUE(exportDeformedMesh(state, out));
-  while (state.exporter.busy()) std::this_thread::sleep_for(std::chrono::milliseconds(1));  // as the frame loop polls
+  while (state.jobs.exporter.busy())
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));  // as the frame loop polls
   pollExport(state);
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  EXPECT_NE(state.statusMessage.find("exported the deformed mesh"), std::string::npos) << state.statusMessage;
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_NE(state.status.message.find("exported the deformed mesh"), std::string::npos) << state.status.message;
   EXPECT_LE((loadMesh(out).vertices - displayedPoints(state, 0)).cwiseAbs().maxCoeff(), 1e-12);
   std::filesystem::remove(out);
   EXPECT_GE(cancelAtEveryReport(
@@ -366,17 +368,17 @@ TEST_F(EditorAnimationExport, MeshExportRunsOnTheWorkerAndCancelLeavesNothing) {
   // Through the worker: one export at a time, and the real job held until cancel() was called ends cancelled.
   const ExportWorker::Job job = makeMeshExportJob(state, out);
   std::atomic<bool> release{false};
-  ASSERT_TRUE(state.exporter.start(out, "", [&](const ProgressCallback& progress) {
+  ASSERT_TRUE(state.jobs.exporter.start(out, "", [&](const ProgressCallback& progress) {
     while (!release) std::this_thread::yield();
     return job(progress);
   }));
   EXPECT_FALSE(exportDeformedMesh(state, out)) << "one export at a time";
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors[0].find("another export is running"), std::string::npos) << state.errors[0];
-  state.errors.clear();
-  state.exporter.cancel();
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors[0].find("another export is running"), std::string::npos) << state.status.errors[0];
+  state.status.errors.clear();
+  state.jobs.exporter.cancel();
   release = true;
-  const std::optional<ExportOutcome> outcome = state.exporter.wait();
+  const std::optional<ExportOutcome> outcome = state.jobs.exporter.wait();
   ASSERT_TRUE(outcome.has_value());
   EXPECT_TRUE(outcome->cancelled);
   EXPECT_TRUE(leftOver(folder).empty());

@@ -36,18 +36,18 @@ ViewMeasurement withValues(std::initializer_list<double> values) {
 
 // The demo scene of `dim` with every view's deformer installed.
 void loadDemo(AppState& state, int dim, bool compare) {
-  state.compare = compare;
+  state.view.compare = compare;
   requestDemo(state, dim);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   ASSERT_TRUE(updateDeformation(state));
 }
 
 // Lifts the right end of the 3D demo cage (a bend) and deforms.
 void bend(AppState& state, double lift) {
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i)
     if (pose(i, 0) > 2.0) pose(i, 1) += lift;
   setPose(state, pose);
@@ -178,9 +178,9 @@ double expectDifference(const AppState& state, const ViewMeasurement* m, std::si
   EXPECT_NE(m, nullptr);
   if (!m) return 0;
   const std::vector<ViewSpec> views = state.views();
-  const Eigen::MatrixXd a = state.deformers.at(views[v].method)->deform(state.pose, state.viewParams(v));
-  const Eigen::MatrixXd b = state.deformers.at(views[w].method)->deform(state.pose, state.viewParams(w));
-  const double diameter = restCageDiameter(*state.scene);
+  const Eigen::MatrixXd a = state.model.deformers.at(views[v].method)->deform(state.document.pose, state.viewParams(v));
+  const Eigen::MatrixXd b = state.model.deformers.at(views[w].method)->deform(state.document.pose, state.viewParams(w));
+  const double diameter = restCageDiameter(*state.model.scene);
   EXPECT_EQ(m->values.size(), a.rows());
   // where hover picks the vertex: the view's mesh at the measured pose, whatever the CPU points of the device
   EXPECT_TRUE(m->points.rows() == a.rows() && (m->points - a).cwiseAbs().maxCoeff() < 1e-12);
@@ -201,17 +201,17 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   AppState state;
   loadDemo(state, 3, true);
   bend(state, 0.6);
-  state.quantities.show.setView(0, quantity("difference"), 3);
-  state.quantities.show.views[0].other = 1;  // Green
+  state.view.quantities.show.setView(0, quantity("difference"), 3);
+  state.view.quantities.show.views[0].other = 1;  // Green
   measureViews(state);
-  EXPECT_EQ(state.quantities.measurement(0), nullptr);  // on the worker, not in this call
+  EXPECT_EQ(state.view.quantities.measurement(0), nullptr);  // on the worker, not in this call
   waitForMeasurements(state);
-  EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);  // the methods differ on a bend
-  EXPECT_EQ(state.quantities.measurement(1), nullptr);                              // the other views show shading only
+  EXPECT_GT(expectDifference(state, state.view.quantities.measurement(0), 0, 1), 1e-3);  // the methods differ on a bend
+  EXPECT_EQ(state.view.quantities.measurement(1), nullptr);  // the other views show shading only
   bend(state, -0.3);
   waitForMeasurements(state);
-  EXPECT_GT(expectDifference(state, state.quantities.measurement(0), 0, 1), 1e-3);
-  EXPECT_EQ(state.quantities.droppedStale, 0);
+  EXPECT_GT(expectDifference(state, state.view.quantities.measurement(0), 0, 1), 1e-3);
+  EXPECT_EQ(state.view.quantities.droppedStale, 0);
 }
 
 // With the in-place OpenGL device the UI thread's CPU points stay stale (the Renderer deforms): the difference is measured on
@@ -219,32 +219,33 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
 TEST(EditorQuantities, DifferenceWithTheInPlaceOpenGlDeviceIsMeasuredOnTheWorker) {
   AppState state;
   loadDemo(state, 3, true);
-  ASSERT_EQ(chooseDevice(state.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""), "");
+  ASSERT_EQ(chooseDevice(state.model.devices, {cpuFrameDevice(), inPlaceDevice()}, std::nullopt, kInPlaceDevice, ""),
+            "");
   bend(state, 0.6);
-  const std::vector<std::size_t> stale = state.cpuStale;
+  const std::vector<std::size_t> stale = state.model.cpuStale;
   ASSERT_EQ(stale.size(), 3u);
-  state.quantities.show.setView(2, quantity("difference"), 3);
-  state.quantities.show.views[2].other = 0;  // the third method to the first
+  state.view.quantities.show.setView(2, quantity("difference"), 3);
+  state.view.quantities.show.views[2].other = 0;  // the third method to the first
   waitForMeasurements(state);
-  EXPECT_EQ(state.cpuStale, stale);
-  EXPECT_GT(expectDifference(state, state.quantities.measurement(2), 2, 0), 1e-3);
+  EXPECT_EQ(state.model.cpuStale, stale);
+  EXPECT_GT(expectDifference(state, state.view.quantities.measurement(2), 2, 0), 1e-3);
 }
 
 // The field of a selected cage vertex (and face) is |T_i(x) n_i| (|K_j(x) n_j|) of the full coordinate matrix.
 TEST(EditorQuantities, FieldViewIsTheNormOfTheSelectedElementsCoordinateColumns) {
   AppState state;
   loadDemo(state, 2, false);
-  state.params.nu = 0.25;
+  state.document.params.nu = 0.25;
   const int vertex = 4;
-  state.selection.setIndices({vertex});
-  state.quantities.show.setAll(quantity("field"));
+  state.input.selection.setIndices({vertex});
+  state.view.quantities.show.setAll(quantity("field"));
   measureViews(state);
-  EXPECT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());
-  state.quantities.worker.join();
+  EXPECT_TRUE(state.view.quantities.worker.busy() || state.view.quantities.worker.ready());
+  state.view.quantities.worker.join();
   measureViews(state);
-  const ViewMeasurement* m = state.quantities.measurement(0);
+  const ViewMeasurement* m = state.view.quantities.measurement(0);
   ASSERT_NE(m, nullptr);
-  const Scene& scene = *state.scene;
+  const Scene& scene = *state.model.scene;
   const SomiglianaCoordinates all = computeSomiglianaCoordinates(scene.restCage, scene.meshVertices);
   const Eigen::MatrixXd field = vertexCoordinateField(all, scene.restCage, vertex, 0.25);
   int inside = 0;
@@ -259,13 +260,13 @@ TEST(EditorQuantities, FieldViewIsTheNormOfTheSelectedElementsCoordinateColumns)
   EXPECT_GT(inside, 100);
   // Face mode with a whole face selected: that face's K_j n_j.
   const int face = 2;
-  state.elementMode = ElementMode::Face;
-  state.selection.setIndices({scene.restCage.faces(face, 0), scene.restCage.faces(face, 1)});
+  state.input.elementMode = ElementMode::Face;
+  state.input.selection.setIndices({scene.restCage.faces(face, 0), scene.restCage.faces(face, 1)});
   measureViews(state);
-  state.quantities.worker.join();
+  state.view.quantities.worker.join();
   measureViews(state);
   const Eigen::MatrixXd faceField = faceCoordinateField(all, face, 0.25);
-  m = state.quantities.measurement(0);
+  m = state.view.quantities.measurement(0);
   ASSERT_NE(m, nullptr);
   for (Eigen::Index p = 0; p < faceField.rows(); p += 7)
     if (all.winding[p] >= 0.5) {
@@ -279,26 +280,27 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
   AppState state;
   loadDemo(state, 3, false);
   bend(state, 0.4);
-  state.quantities.show.setAll(quantity("detj"));
+  state.view.quantities.show.setAll(quantity("detj"));
   measureViews(state);  // starts on the 0.4 bend
-  ASSERT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());
+  ASSERT_TRUE(state.view.quantities.worker.busy() || state.view.quantities.worker.ready());
   bend(state, 0.4);  // the pose moves on while it runs
-  state.quantities.worker.join();
+  state.view.quantities.worker.join();
   measureViews(state);
-  EXPECT_EQ(state.quantities.droppedStale, 1);
-  EXPECT_EQ(state.quantities.measurement(0), nullptr);
-  ASSERT_TRUE(state.quantities.worker.busy() || state.quantities.worker.ready());  // measuring the current pose
-  state.quantities.worker.join();
+  EXPECT_EQ(state.view.quantities.droppedStale, 1);
+  EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
+  ASSERT_TRUE(state.view.quantities.worker.busy() ||
+              state.view.quantities.worker.ready());  // measuring the current pose
+  state.view.quantities.worker.join();
   measureViews(state);
-  EXPECT_EQ(state.quantities.droppedStale, 1);
-  const ViewMeasurement* m = state.quantities.measurement(0);
+  EXPECT_EQ(state.view.quantities.droppedStale, 1);
+  const ViewMeasurement* m = state.view.quantities.measurement(0);
   ASSERT_NE(m, nullptr);
-  EXPECT_TRUE(state.quantities.installed == measureKey(measureRequest(state)));
+  EXPECT_TRUE(state.view.quantities.installed == measureKey(measureRequest(state)));
   // det J of the current pose (the 0.8 bend), not of the first one.
-  const Scene& scene = *state.scene;
-  const DeformationGradients gradients(*state.deformers.at(methods::somigliana()), scene.meshVertices);
+  const Scene& scene = *state.model.scene;
+  const DeformationGradients gradients(*state.model.deformers.at(methods::somigliana()), scene.meshVertices);
   Eigen::MatrixXd positions, jacobians;
-  gradients.evaluate(state.pose, state.params, positions, jacobians);
+  gradients.evaluate(state.document.pose, state.document.params, positions, jacobians);
   double largest = 0;
   for (Eigen::Index p = 0; p < jacobians.rows(); ++p) {
     const Eigen::Matrix<double, 1, 9> row = jacobians.row(p);
@@ -308,11 +310,11 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
     largest = std::max(largest, std::abs(std::log(jt.determinant())));
   }
   EXPECT_GT(largest, 0.05);  // the bend changes volumes: the test sees something
-  EXPECT_GT(state.quantities.worker.heldBytes(), 0u);
-  state.quantities.show.setAll(0);
+  EXPECT_GT(state.view.quantities.worker.heldBytes(), 0u);
+  state.view.quantities.show.setAll(0);
   measureViews(state);
-  EXPECT_EQ(state.quantities.worker.heldBytes(), 0u);
-  EXPECT_EQ(state.quantities.measurement(0), nullptr);
+  EXPECT_EQ(state.view.quantities.worker.heldBytes(), 0u);
+  EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
 }
 
 // The J bytes count in the memory check: with too little free memory the quantity is refused, with the estimate.
@@ -320,16 +322,17 @@ TEST(EditorQuantities, GradientsThatWouldNotFitAreRefusedWithTheirSize) {
   AppState state;
   loadDemo(state, 3, false);
   setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "100000", 1);
-  state.quantities.show.setAll(quantity("detj"));
+  state.view.quantities.show.setAll(quantity("detj"));
   measureViews(state);
-  state.quantities.worker.join();
+  state.view.quantities.worker.join();
   measureViews(state);
   unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("measuring the pose failed"), std::string::npos) << state.errors.front();
-  EXPECT_NE(state.errors.front().find("free"), std::string::npos) << state.errors.front();
-  EXPECT_EQ(state.quantities.show.view(0).quantity, 0);  // turned off
-  EXPECT_EQ(state.quantities.measurement(0), nullptr);
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("measuring the pose failed"), std::string::npos)
+      << state.status.errors.front();
+  EXPECT_NE(state.status.errors.front().find("free"), std::string::npos) << state.status.errors.front();
+  EXPECT_EQ(state.view.quantities.show.view(0).quantity, 0);  // turned off
+  EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
 }
 
 // The worker pattern under the measurements: progress and stage are visible while a job runs, Cancel reaches it at
@@ -372,9 +375,9 @@ namespace {
 void sweep(AppState& state) {
   sweepNuNow(state);
   measureViews(state);
-  state.quantities.worker.join();
+  state.view.quantities.worker.join();
   measureViews(state);
-  ASSERT_EQ(state.quantities.nuSweep.size(), 25u);
+  ASSERT_EQ(state.view.quantities.nuSweep.size(), 25u);
 }
 
 }  // namespace
@@ -389,7 +392,7 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
   updateDeformation(state);
   sweep(state);
   EXPECT_TRUE(nuSweepCurrent(state));
-  DeformParams p = state.params;
+  DeformParams p = state.document.params;
   p.nu = 0.3;  // what a click on the plot does
   setParams(state, p);
   updateDeformation(state);
@@ -397,7 +400,7 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
   p.gamma = 1.5;
   setParams(state, p);
   EXPECT_FALSE(nuSweepCurrent(state)) << "gamma changes every point of the sweep";
-  p.gamma = state.quantities.nuSweepParams.gamma;
+  p.gamma = state.view.quantities.nuSweepParams.gamma;
   setParams(state, p);
   EXPECT_TRUE(nuSweepCurrent(state));
   // The named choices and the variant too (before issue 26 only gamma, blend and the traction fix were compared).
@@ -415,7 +418,7 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
   EXPECT_FALSE(nuSweepCurrent(state)) << "another variant";
   setParams(state, p);
   EXPECT_TRUE(nuSweepCurrent(state));
-  Eigen::MatrixXd moved = state.pose;
+  Eigen::MatrixXd moved = state.document.pose;
   moved.row(0).array() += 0.2;
   setPose(state, moved);
   EXPECT_FALSE(nuSweepCurrent(state)) << "another pose";
@@ -423,17 +426,17 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
   sweep(state);
   EXPECT_TRUE(nuSweepCurrent(state));
   setCompare(state, false);  // off already: the plot stays
-  EXPECT_FALSE(state.quantities.nuSweep.empty());
+  EXPECT_FALSE(state.view.quantities.nuSweep.empty());
   setCompare(state, true);
-  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "compare turned on";
+  EXPECT_TRUE(state.view.quantities.nuSweep.empty()) << "compare turned on";
   sweep(state);  // of the panel's method, whose deformer the compare view keeps
   setCompare(state, false);
-  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "compare turned off";
+  EXPECT_TRUE(state.view.quantities.nuSweep.empty()) << "compare turned off";
 
   sweep(state);
   requestDemo(state, 3);
   installNextOutcome(state);
-  EXPECT_TRUE(state.quantities.nuSweep.empty()) << "another scene";
+  EXPECT_TRUE(state.view.quantities.nuSweep.empty()) << "another scene";
 }
 
 // The seams view (Fig. 8): per vertex the largest jump of J across the tetrahedra's faces on its edges. Phong's J jumps
@@ -441,14 +444,14 @@ TEST(EditorNuSweep, ThePlotFollowsThePoseAndParametersNotNuAndGoesWithTheScene) 
 // they are what analyze measures (prepareSeamJumps) for the same pose.
 TEST(EditorQuantities, SeamsViewShowsPhongsJumpsAndNoneForSomigliana) {
   AppState state;
-  state.compareViews = viewsOf({methods::somigliana(), methods::phong()});
+  state.view.compareViews = viewsOf({methods::somigliana(), methods::phong()});
   loadDemo(state, 3, true);
   bend(state, 0.6);
-  state.quantities.show.setAll(quantity("seams"));
+  state.view.quantities.show.setAll(quantity("seams"));
   measureViews(state);
   waitForMeasurements(state);
-  const ViewMeasurement* smooth = state.quantities.measurement(0);
-  const ViewMeasurement* phong = state.quantities.measurement(1);
+  const ViewMeasurement* smooth = state.view.quantities.measurement(0);
+  const ViewMeasurement* phong = state.view.quantities.measurement(1);
   ASSERT_TRUE(smooth && phong);
   double smoothMax = 0, phongMax = 0;
   for (Eigen::Index i = 0; i < smooth->values.size(); ++i)
@@ -462,16 +465,16 @@ TEST(EditorQuantities, SeamsViewShowsPhongsJumpsAndNoneForSomigliana) {
   EXPECT_EQ(range.hi, quantile(phong->values, kRangeQuantile));  // Phong's 98th percentile: the widest view's
   EXPECT_GT(range.hi, 0.1 * phongMax);
 
-  const Scene& scene = *state.scene;
+  const Scene& scene = *state.model.scene;
   std::vector<std::vector<int>> faces;
   for (Eigen::Index f = 0; f < scene.meshTriangles.rows(); ++f)
     faces.push_back({scene.meshTriangles(f, 0), scene.meshTriangles(f, 1), scene.meshTriangles(f, 2)});
   int found = 0;
-  for (const auto& entry : state.deformers) {
+  for (const auto& entry : state.model.deformers) {
     const CageDeformer& d = *entry.second;
     if (d.method() != methods::phong()) continue;
     const auto seams = prepareSeamJumps(d, scene.restCage, scene.meshVertices, faces, {}, "demo");
-    EXPECT_EQ(quantile(seams->evaluate(state.pose, state.viewParams(1)).vertices, 1.0), phongMax);
+    EXPECT_EQ(quantile(seams->evaluate(state.document.pose, state.viewParams(1)).vertices, 1.0), phongMax);
     ++found;
   }
   EXPECT_EQ(found, 1);

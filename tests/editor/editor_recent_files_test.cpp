@@ -130,47 +130,46 @@ TEST(EditorRecentFiles, AppStateRecordsLoadedScenesAndSessions) {
   const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) / "somicage_recent_state";
   std::filesystem::remove_all(dir);
   AppState state;
-  state.recentPath = (dir / "recent.txt").string();
+  state.files.recentPath = (dir / "recent.txt").string();
 
   // A scene that arrives for the pending files is recorded, with absolute paths, and saved.
   auto scene = std::make_shared<Scene>(makeDemoScene(2));
   scene->meshPath = "rel/mesh.obj";
   scene->cagePath = "/abs/cage.obj";
-  state.pendingRecent = RecentEntry::files("rel/mesh.obj", "/abs/cage.obj");
-  state.loadingScene = true;
+  state.jobs.load.emplace().recent = RecentEntry::files("rel/mesh.obj", "/abs/cage.obj");
   PrecomputeOutcome outcome;
   outcome.scene = scene;
   installOutcome(state, outcome);
-  ASSERT_EQ(state.recent.entries().size(), 1u);
-  const RecentEntry& e = state.recent.entries().front();
+  ASSERT_EQ(state.files.recent.entries().size(), 1u);
+  const RecentEntry& e = state.files.recent.entries().front();
   EXPECT_EQ(e.mesh, (std::filesystem::current_path() / "rel/mesh.obj").lexically_normal().string());
   EXPECT_EQ(e.cage, "/abs/cage.obj");
-  EXPECT_FALSE(state.pendingRecent.has_value());
-  EXPECT_EQ(loadRecentFiles(state.recentPath).entries(), state.recent.entries());
+  EXPECT_FALSE(state.loadingScene());
+  EXPECT_EQ(loadRecentFiles(state.files.recentPath).entries(), state.files.recent.entries());
 
   // A failed load records nothing.
-  state.pendingRecent = RecentEntry::files("/x.obj", "/x_cage.obj");
+  state.jobs.load.emplace().recent = RecentEntry::files("/x.obj", "/x_cage.obj");
   PrecomputeOutcome failed;
   failed.error = "cannot open";
   installOutcome(state, failed);
-  EXPECT_EQ(state.recent.entries().size(), 1u);
-  state.errors.clear();
+  EXPECT_EQ(state.files.recent.entries().size(), 1u);
+  state.status.errors.clear();
 
   // A session that fails to parse records nothing; one that loads is recorded first.
   const std::string bad = (dir / "bad.json").string();
   { std::ofstream(bad) << "{ not json"; }
   loadSessionFile(state, bad);
-  EXPECT_EQ(state.recent.entries().size(), 1u);
-  EXPECT_EQ(state.errors.size(), 1u);
-  state.errors.clear();
+  EXPECT_EQ(state.files.recent.entries().size(), 1u);
+  EXPECT_EQ(state.status.errors.size(), 1u);
+  state.status.errors.clear();
   const std::string good = (dir / "good.json").string();
   saveSessionFile(state, good);
   loadSessionFile(state, good);
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_EQ(state.recent.entries().size(), 2u);
-  EXPECT_EQ(state.recent.entries().front(), RecentEntry::sessionFile(good));
-  EXPECT_FALSE(state.pendingRecent.has_value());  // the session's files are not a separate entry
-  state.worker.cancel();
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_EQ(state.files.recent.entries().size(), 2u);
+  EXPECT_EQ(state.files.recent.entries().front(), RecentEntry::sessionFile(good));
+  EXPECT_FALSE(state.jobs.load && state.jobs.load->recent);  // the session's files are not a separate entry
+  state.jobs.precompute.cancel();
   std::filesystem::remove_all(dir);
 }
 
@@ -181,14 +180,14 @@ TEST(EditorRecentFiles, ASavedSessionIsRecentAtOnce) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   AppState state;
-  state.scene = std::make_shared<const Scene>(makeDemoScene(2));
-  state.pose = state.scene->restCage.vertices;
+  state.model.scene = std::make_shared<const Scene>(makeDemoScene(2));
+  state.document.pose = state.model.scene->restCage.vertices;
   const std::string saved = (dir / "saved.json").string();
   ASSERT_TRUE(saveSessionFile(state, saved));
-  ASSERT_EQ(state.recent.entries().size(), 1u);
-  EXPECT_EQ(state.recent.entries().front(), RecentEntry::sessionFile(saved));
-  EXPECT_EQ(missingRecentPath(state.recent.entries().front()), "");
+  ASSERT_EQ(state.files.recent.entries().size(), 1u);
+  EXPECT_EQ(state.files.recent.entries().front(), RecentEntry::sessionFile(saved));
+  EXPECT_EQ(missingRecentPath(state.files.recent.entries().front()), "");
   std::filesystem::remove(saved);
-  EXPECT_EQ(missingRecentPath(state.recent.entries().front()), saved);
+  EXPECT_EQ(missingRecentPath(state.files.recent.entries().front()), saved);
   std::filesystem::remove_all(dir);
 }

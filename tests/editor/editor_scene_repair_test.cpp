@@ -64,9 +64,9 @@ TEST(EditorSceneRepair, FlippedFacesAreRepairedWithANotice) {
   PrecomputeOutcome outcome;
   outcome.scene = std::make_shared<const Scene>(scene);
   installOutcome(state, outcome);
-  EXPECT_NE(state.statusMessage.find("; cage repaired: flipped 2 faces (2, 9)"), std::string::npos)
-      << state.statusMessage;
-  EXPECT_TRUE(state.errors.empty());
+  EXPECT_NE(state.status.message.find("; cage repaired: flipped 2 faces (2, 9)"), std::string::npos)
+      << state.status.message;
+  EXPECT_TRUE(state.status.errors.empty());
 }
 
 TEST(EditorSceneRepair, CageThatStaysInvalidIsRefused) {
@@ -129,17 +129,17 @@ TEST(EditorSceneRepair, PointsOutsideTheCageAndAMeshWithoutFacesAreReported) {
 
   AppState state;
   requestSceneFiles(state, pointSet, cage);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   ::testing::internal::CaptureStderr();
   installOutcome(state, std::move(*out));
   const std::string log = ::testing::internal::GetCapturedStderr();
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   const std::string counted = std::to_string(outside) + " of 20 points lie outside the cage";
-  EXPECT_NE(state.statusMessage.find(counted), std::string::npos) << state.statusMessage;
+  EXPECT_NE(state.status.message.find(counted), std::string::npos) << state.status.message;
   EXPECT_NE(log.find(counted), std::string::npos) << log;
   const std::string noFaces = "has 20 vertices but no faces";
-  EXPECT_NE(state.statusMessage.find(noFaces), std::string::npos) << state.statusMessage;
+  EXPECT_NE(state.status.message.find(noFaces), std::string::npos) << state.status.message;
   EXPECT_NE(log.find(noFaces), std::string::npos) << log;
 }
 

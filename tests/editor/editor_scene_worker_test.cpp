@@ -207,20 +207,20 @@ TEST(EditorWorker, ACancelDuringAPrecomputeDeliversNoDeformer) {
 
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   AppState state;
-  state.compare = true;
+  state.view.compare = true;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_TRUE(state.scene);
-  ASSERT_EQ(state.deformers.size(), 3u);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_TRUE(state.model.scene);
+  ASSERT_EQ(state.model.deformers.size(), 3u);
   ASSERT_TRUE(updateDeformation(state));
   for (std::size_t v = 0; v < state.views().size(); ++v) {
-    const double err = (displayedPoints(state, v) - state.scene->meshVertices).cwiseAbs().maxCoeff();
+    const double err = (displayedPoints(state, v) - state.model.scene->meshVertices).cwiseAbs().maxCoeff();
     EXPECT_LT(err, 1e-6) << methodName(state.views()[v].method) << " at rest";
   }
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i) {
     if (pose(i, 0) > 2.0) pose(i, 1) += 0.5;  // lift the right end of the cage
   }
@@ -229,23 +229,23 @@ TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_FALSE(updateDeformation(state));                    // nothing changed since
   const Eigen::MatrixXd& moved = displayedPoints(state, 0);  // Somigliana
-  EXPECT_GT((moved - state.scene->meshVertices).cwiseAbs().maxCoeff(), 0.1);
+  EXPECT_GT((moved - state.model.scene->meshVertices).cwiseAbs().maxCoeff(), 0.1);
   undo(state);
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_LT((displayedPoints(state, 0) - state.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT((displayedPoints(state, 0) - state.model.scene->meshVertices).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 TEST(EditorAppState, SessionOfTheDemoRoundTripsThroughTheState) {
   AppState state;
   requestDemo(state, 2);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  state.pose(0, 0) -= 0.25;
-  state.params.gamma = 1.5;
+  state.document.pose(0, 0) -= 0.25;
+  state.document.params.gamma = 1.5;
   const Session s = sessionFromJson(sessionToJson(makeSession(state)), "mem");
   EXPECT_EQ(s.demoDim, 2);
-  EXPECT_EQ(s.pose, state.pose);
+  EXPECT_EQ(s.pose, state.document.pose);
   EXPECT_EQ(s.params.gamma, 1.5);
 }
 
@@ -255,14 +255,14 @@ namespace {
 
 // The 3D demo with Somigliana and Green deformers installed.
 void loadDemo(AppState& state) {
-  state.compare = true;
-  state.compareViews = viewsOf({methods::somigliana(), methods::green()});
+  state.view.compare = true;
+  state.view.compareViews = viewsOf({methods::somigliana(), methods::green()});
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_TRUE(state.errors.empty()) << state.errors.front();
-  ASSERT_EQ(state.deformers.size(), 2u);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  ASSERT_EQ(state.model.deformers.size(), 2u);
 }
 
 // What must survive a failed or cancelled load: the scene, its deformers (the same objects) and the pose.
@@ -274,18 +274,18 @@ struct KeptScene {
 
 // ... and a working deformation.
 void expectSceneKept(AppState& state, const KeptScene& kept) {
-  EXPECT_EQ(state.scene, kept.scene);
-  EXPECT_EQ(state.deformers, kept.deformers);
-  EXPECT_EQ(state.pose, kept.pose);
-  EXPECT_FALSE(state.loadingScene);
-  state.deformDirty = true;
+  EXPECT_EQ(state.model.scene, kept.scene);
+  EXPECT_EQ(state.model.deformers, kept.deformers);
+  EXPECT_EQ(state.document.pose, kept.pose);
+  EXPECT_FALSE(state.loadingScene());
+  state.model.deformDirty = true;
   EXPECT_TRUE(updateDeformation(state));
   EXPECT_GT((displayedPoints(state, 0) - kept.scene->meshVertices).cwiseAbs().maxCoeff(), 0.01);
 }
 
 // A bent pose, so that a kept deformation is told apart from the rest mesh.
 void bend(AppState& state) {
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i)
     if (pose(i, 0) > 2.0) pose(i, 1) += 0.5;
   setPose(state, pose);
@@ -295,7 +295,7 @@ void bend(AppState& state) {
 KeptScene loadBentDemo(AppState& state) {
   loadDemo(state);
   bend(state);
-  return {state.scene, state.deformers, state.pose};
+  return {state.model.scene, state.model.deformers, state.document.pose};
 }
 
 }  // namespace
@@ -304,12 +304,13 @@ TEST(EditorWorker, AFailedLoadKeepsTheCurrentScene) {
   AppState state;
   const KeptScene kept = loadBentDemo(state);
   requestSceneFiles(state, "/nonexistent/mesh.obj", "/nonexistent/cage.obj");
-  EXPECT_TRUE(state.loadingScene);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  EXPECT_TRUE(state.loadingScene());
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("/nonexistent/"), std::string::npos) << state.errors.front();  // names the file
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("/nonexistent/"), std::string::npos)
+      << state.status.errors.front();  // names the file
   expectSceneKept(state, kept);
 }
 
@@ -318,14 +319,15 @@ TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   const KeptScene kept = loadBentDemo(state);
   ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "10000", 1);  // 10 kB: far less than the 2D demo needs
   requestDemo(state, 2);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->deformers.empty());
   installOutcome(state, std::move(*out));
-  ASSERT_EQ(state.errors.size(), 1u);
-  EXPECT_NE(state.errors.front().find("points need"), std::string::npos) << state.errors.front();
-  EXPECT_NE(state.errors.front().find("but only 10 kB are free"), std::string::npos) << state.errors.front();
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors.front().find("points need"), std::string::npos) << state.status.errors.front();
+  EXPECT_NE(state.status.errors.front().find("but only 10 kB are free"), std::string::npos)
+      << state.status.errors.front();
   expectSceneKept(state, kept);
 }
 
@@ -367,7 +369,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   const KeptScene kept = loadBentDemo(state);
   // A loader that waits for the cancel, so that it lands before any precompute (deterministically).
   PrecomputeRequest request;
-  PrecomputeWorker& worker = state.worker;
+  PrecomputeWorker& worker = state.jobs.precompute;
   std::atomic<bool> loading{false}, cancelled{false};
   request.loadScene = [&]() {
     loading = true;
@@ -375,7 +377,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
     return makeDemoScene(2);
   };
   request.methods = {methods::somigliana()};
-  state.loadingScene = true;
+  state.jobs.load.emplace();
   worker.start(std::move(request));
   while (!loading) std::this_thread::yield();
   worker.cancel();
@@ -384,7 +386,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled);
   installOutcome(state, std::move(*out));
-  EXPECT_TRUE(state.errors.empty());
-  EXPECT_EQ(state.statusMessage, "precomputation cancelled");
+  EXPECT_TRUE(state.status.errors.empty());
+  EXPECT_EQ(state.status.message, "precomputation cancelled");
   expectSceneKept(state, kept);
 }

@@ -14,7 +14,7 @@ namespace somicage::editor {
 
 // Waits for the worker's running request and installs its outcome (fails the test when there is none).
 inline void installNextOutcome(AppState& state) {
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   ASSERT_TRUE(out.has_value()) << "the worker had no request";
   installOutcome(state, std::move(*out));
 }
@@ -23,7 +23,7 @@ inline void installNextOutcome(AppState& state) {
 inline void openDemoScene(AppState& state, int dim = 3) {
   requestDemo(state, dim);
   installNextOutcome(state);
-  ASSERT_TRUE(state.scene) << (state.errors.empty() ? "no scene" : state.errors.front());
+  ASSERT_TRUE(state.model.scene) << (state.status.errors.empty() ? "no scene" : state.status.errors.front());
 }
 
 // The editor evaluates "opengl" in place (the Renderer's GpuDeformer): its factory must never be called.

@@ -33,12 +33,12 @@ double choiceValue(const char* key, const char* name) { return parseParameter(*f
 
 // The 3D demo with views: Somigliana at nu 0, Somigliana at nu 0.45, Somigliana with the panel's nu; bent.
 void loadTwoNu(AppState& state) {
-  state.compare = true;
-  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}}};
-  state.params.nu = 0.2;
+  state.view.compare = true;
+  state.view.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::somigliana(), {}, {}}};
+  state.document.params.nu = 0.2;
   openDemoScene(state, 3);
-  ASSERT_EQ(state.deformers.size(), 1u);  // one precompute: nu never re-integrates
-  Eigen::MatrixXd pose = state.pose;
+  ASSERT_EQ(state.model.deformers.size(), 1u);  // one precompute: nu never re-integrates
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i)
     if (pose(i, 0) > 2.0) pose(i, 0) += 1.0, pose(i, 1) += 0.6;  // stretch and lift the right end
   setPose(state, pose);
@@ -77,20 +77,21 @@ std::string viewError(const std::vector<std::string>& args) {
 TEST(EditorViews, TwoViewsOfOneMethodDeformAtTheirOwnNuAndTheOthersFollowThePanel) {
   AppState state;
   loadTwoNu(state);
-  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
-  const Eigen::MatrixXd at0 = deformer.deform(state.pose, withNu(state.params, 0.0));
-  const Eigen::MatrixXd at45 = deformer.deform(state.pose, withNu(state.params, 0.45));
-  const Eigen::MatrixXd shared = deformer.deform(state.pose, state.params);
+  const CageDeformer& deformer = *state.model.deformers.at(methods::somigliana());
+  const Eigen::MatrixXd at0 = deformer.deform(state.document.pose, withNu(state.document.params, 0.0));
+  const Eigen::MatrixXd at45 = deformer.deform(state.document.pose, withNu(state.document.params, 0.45));
+  const Eigen::MatrixXd shared = deformer.deform(state.document.pose, state.document.params);
   EXPECT_LE(maxDifference(displayedPoints(state, 0), at0), 1e-12);
   EXPECT_LE(maxDifference(displayedPoints(state, 1), at45), 1e-12);
   EXPECT_LE(maxDifference(displayedPoints(state, 2), shared), 1e-12);
   EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // nu shows
   // The panel's nu moves the view without its own only.
-  setParams(state, withNu(state.params, -0.5));
+  setParams(state, withNu(state.document.params, -0.5));
   ASSERT_TRUE(updateDeformation(state));
   EXPECT_LE(maxDifference(displayedPoints(state, 0), at0), 1e-12);
   EXPECT_LE(maxDifference(displayedPoints(state, 1), at45), 1e-12);
-  EXPECT_LE(maxDifference(displayedPoints(state, 2), deformer.deform(state.pose, state.params)), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 2), deformer.deform(state.document.pose, state.document.params)),
+            1e-12);
   EXPECT_GT(maxDifference(displayedPoints(state, 2), shared), 1e-3);
   // The labels say which nu is the view's own.
   EXPECT_NE(viewLabel(state, 1).find("nu=0.45 (own)"), std::string::npos) << viewLabel(state, 1);
@@ -128,28 +129,29 @@ TEST(EditorViews, AViewsOwnGammaVariantAndTractionFixReplaceThePanelsOnly) {
 // conventions differ visibly at gamma = 2 on the bent demo.
 TEST(EditorViews, TwoViewsOfOneMethodDeformWithTheirOwnBulgingAndNormals) {
   AppState state;
-  state.compare = true;
-  state.compareViews =
+  state.view.compare = true;
+  state.view.compareViews =
       parseEditorArgs({"--view", "somigliana", "--view", "somigliana:bulging=reference:normals=angle"}).views;
-  state.params.gamma = 2.0;
+  state.document.params.gamma = 2.0;
   openDemoScene(state, 3);
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i)
     if (pose(i, 0) > 2.0) pose(i, 1) += 0.8;  // lift the right end: the cage bends, its normals turn
   setPose(state, pose);
   ASSERT_TRUE(updateDeformation(state));
-  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
-  DeformParams own = state.params;
+  const CageDeformer& deformer = *state.model.deformers.at(methods::somigliana());
+  DeformParams own = state.document.params;
   own.bulging = Bulging::Reference;
   own.normals = NormalWeights::Angle;
-  EXPECT_LE(maxDifference(displayedPoints(state, 0), deformer.deform(state.pose, state.params)), 1e-12);
-  EXPECT_LE(maxDifference(displayedPoints(state, 1), deformer.deform(state.pose, own)), 1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 0), deformer.deform(state.document.pose, state.document.params)),
+            1e-12);
+  EXPECT_LE(maxDifference(displayedPoints(state, 1), deformer.deform(state.document.pose, own)), 1e-12);
   EXPECT_GT(maxDifference(displayedPoints(state, 0), displayedPoints(state, 1)), 1e-3);  // gamma^2 = 4 shows
   EXPECT_NE(viewLabel(state, 1).find("bulging reference (own)  normals angle (own)"), std::string::npos)
       << viewLabel(state, 1);
   EXPECT_EQ(viewLabel(state, 0).find("bulging"), std::string::npos) << viewLabel(state, 0);
   // The session keeps them.
-  EXPECT_TRUE(sessionFromJson(sessionToJson(makeSession(state)), "s.json").compareViews == state.compareViews);
+  EXPECT_TRUE(sessionFromJson(sessionToJson(makeSession(state)), "s.json").compareViews == state.view.compareViews);
 }
 
 // det J and the volume change under each pane are those of its own nu: det J against the exact J evaluated here at
@@ -157,19 +159,19 @@ TEST(EditorViews, TwoViewsOfOneMethodDeformWithTheirOwnBulgingAndNormals) {
 TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
   AppState state;
   loadTwoNu(state);
-  state.quantities.show.setAll(quantityIndex("detj", "test"));
+  state.view.quantities.show.setAll(quantityIndex("detj", "test"));
   waitForMeasurements(state);
-  const Scene& scene = *state.scene;
-  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
+  const Scene& scene = *state.model.scene;
+  const CageDeformer& deformer = *state.model.deformers.at(methods::somigliana());
   const DeformationGradients gradients(deformer, scene.meshVertices);
   const double restVolume = signedVolume(scene.meshVertices, scene.meshTriangles);
   double changes[2];
   for (std::size_t v = 0; v < 2; ++v) {
     const double nu = v == 0 ? 0.0 : 0.45;
-    const ViewMeasurement* m = state.quantities.measurement(v);
+    const ViewMeasurement* m = state.view.quantities.measurement(v);
     ASSERT_NE(m, nullptr) << "view " << v;
     Eigen::MatrixXd positions, jacobians;
-    gradients.evaluate(state.pose, withNu(state.params, nu), positions, jacobians);
+    gradients.evaluate(state.document.pose, withNu(state.document.params, nu), positions, jacobians);
     for (Eigen::Index p = 0; p < jacobians.rows(); p += 5) {
       const Eigen::Matrix<double, 1, 9> row = jacobians.row(p);
       const double det = Eigen::Map<const Eigen::Matrix3d>(row.data()).determinant();
@@ -177,7 +179,7 @@ TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
       EXPECT_NEAR(m->detJ[p], det, 1e-9 * std::abs(det)) << "view " << v << " vertex " << p;
     }
     ASSERT_TRUE(m->closed);
-    const Eigen::MatrixXd points = deformer.deform(state.pose, withNu(state.params, nu));
+    const Eigen::MatrixXd points = deformer.deform(state.document.pose, withNu(state.document.params, nu));
     // hover picks on the measured points: the mesh at this nu (to the editor's float storage of C, docs/engine.md)
     ASSERT_EQ(m->points.rows(), points.rows());
     EXPECT_LT((m->points - points).cwiseAbs().maxCoeff(), 1e-5 * cageDiameter(scene.restCage.vertices));
@@ -193,25 +195,26 @@ TEST(EditorViews, EachViewsQuantitiesAreMeasuredAtItsOwnNu) {
 // coordinate columns at its nu.
 TEST(EditorViews, TheCoordinateFieldOfEachViewIsAtItsOwnNu) {
   AppState state;
-  state.compare = true;
-  state.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45)};
+  state.view.compare = true;
+  state.view.compareViews = {somiglianaAt(0.0), somiglianaAt(0.45)};
   openDemoScene(state, 2);
   const int vertex = 0;
-  state.selection.setIndices({vertex});
-  state.quantities.show.setAll(quantityIndex("field", "test"));
+  state.input.selection.setIndices({vertex});
+  state.view.quantities.show.setAll(quantityIndex("field", "test"));
   waitForMeasurements(state);
-  const Scene& scene = *state.scene;
+  const Scene& scene = *state.model.scene;
   const SomiglianaCoordinates all = computeSomiglianaCoordinates(scene.restCage, scene.meshVertices);
   double largestChange = 0;
   for (std::size_t v = 0; v < 2; ++v) {
-    const ViewMeasurement* m = state.quantities.measurement(v);
+    const ViewMeasurement* m = state.view.quantities.measurement(v);
     ASSERT_NE(m, nullptr) << "view " << v;
     const Eigen::MatrixXd field = vertexCoordinateField(all, scene.restCage, vertex, v == 0 ? 0.0 : 0.45);
     for (Eigen::Index p = 0; p < field.rows(); ++p) {
       if (all.winding[p] < 0.5) continue;
       EXPECT_NEAR(m->values[p], field.row(p).norm(), 1e-12 * (1 + field.row(p).norm())) << "view " << v;
       if (v == 1)
-        largestChange = std::max(largestChange, std::abs(m->values[p] - state.quantities.measurement(0)->values[p]));
+        largestChange =
+            std::max(largestChange, std::abs(m->values[p] - state.view.quantities.measurement(0)->values[p]));
     }
   }
   EXPECT_GT(largestChange, 1e-3);  // nu changes the field
@@ -223,17 +226,18 @@ TEST(EditorViews, TheCoordinateFieldOfEachViewIsAtItsOwnNu) {
 TEST(EditorViews, TheDifferenceBetweenTwoViewsOfOneMethodIsAtEachViewsNu) {
   AppState state;
   loadTwoNu(state);
-  const CageDeformer& deformer = *state.deformers.at(methods::somigliana());
-  const Eigen::MatrixXd rest = state.scene->restCage.vertices;
+  const CageDeformer& deformer = *state.model.deformers.at(methods::somigliana());
+  const Eigen::MatrixXd rest = state.model.scene->restCage.vertices;
   const double diameter = (rest.colwise().maxCoeff() - rest.colwise().minCoeff()).norm();
   for (int other : {1, 2}) {
-    state.quantities.show.setView(0, quantityIndex("difference", "test"), 3);
-    state.quantities.show.views[0].other = other;
+    state.view.quantities.show.setView(0, quantityIndex("difference", "test"), 3);
+    state.view.quantities.show.views[0].other = other;
     waitForMeasurements(state);
-    const ViewMeasurement* m = state.quantities.measurement(0);
+    const ViewMeasurement* m = state.view.quantities.measurement(0);
     ASSERT_NE(m, nullptr) << "to view " << other;
-    const Eigen::MatrixXd a = deformer.deform(state.pose, withNu(state.params, 0.0));
-    const Eigen::MatrixXd b = deformer.deform(state.pose, withNu(state.params, other == 1 ? 0.45 : 0.2));
+    const Eigen::MatrixXd a = deformer.deform(state.document.pose, withNu(state.document.params, 0.0));
+    const Eigen::MatrixXd b =
+        deformer.deform(state.document.pose, withNu(state.document.params, other == 1 ? 0.45 : 0.2));
     ASSERT_EQ(m->values.size(), a.rows());
     double largest = 0;
     for (Eigen::Index p = 0; p < a.rows(); ++p) {
@@ -337,7 +341,7 @@ TEST(EditorViews, SessionKeepsTheViewsExactlyAndReadsOldSessions) {
   EXPECT_TRUE(c.compareViews == viewsOf({methods::somigliana(), methods::somigliana(), methods::phong()}));
   // The state takes them over and gives them back.
   AppState state;
-  state.compareViews = b.compareViews;
+  state.view.compareViews = b.compareViews;
   EXPECT_TRUE(makeSession(state).compareViews == b.compareViews);
 }
 
@@ -390,16 +394,17 @@ TEST(EditorViews, AMalformedViewsEntryIsRefusedNamingTheSessionFile) {
 
 TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
   AppState state;
-  state.compare = true;
+  state.view.compare = true;
   setCompareViews(state, {somiglianaAt(0.0)});  // one: refused
-  EXPECT_TRUE(state.compareViews == viewsOf(defaultCompareMethods()));
+  EXPECT_TRUE(state.view.compareViews == viewsOf(defaultCompareMethods()));
   setCompareViews(state, {somiglianaAt(0.0), somiglianaAt(0.45), ViewSpec{methods::mvc(), {}, {}}});
   ASSERT_EQ(state.views().size(), 3u);
-  state.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
+  state.view.quantities.show.setView(2, quantityIndex("detj", "test"), 3);
   removeCompareView(state, 1);
   ASSERT_EQ(state.views().size(), 2u);
   EXPECT_TRUE(state.views()[1] == (ViewSpec{methods::mvc(), {}, {}}));
-  EXPECT_EQ(state.quantities.show.view(1).quantity, quantityIndex("detj", "test"));  // its Show choice moved with it
+  EXPECT_EQ(state.view.quantities.show.view(1).quantity,
+            quantityIndex("detj", "test"));                                          // its Show choice moved with it
   removeCompareView(state, 0);                                                       // two stay
   EXPECT_EQ(state.views().size(), 2u);
   EXPECT_EQ(state.deformerKeys().size(), 2u);
@@ -409,17 +414,17 @@ TEST(EditorViews, AddingAndRemovingViewsKeepsTwoToThree) {
 // session's top-level "methodOptions", which the editor writes and reads; a method without them ignores them.
 TEST(EditorViews, TheSingleViewTakesTheMethodsOwnOptionsFromThePanelAndSessions) {
   AppState state;
-  state.method = methods::phong();
+  state.document.method = methods::phong();
   openDemoScene(state, 3);
-  const int cageVertices = state.scene->restCage.numVertices();
-  ASSERT_EQ(state.deformers.size(), 1u);
-  EXPECT_EQ(state.deformers.begin()->second->volumeMesh()->numVertices(), cageVertices + 1) << "the star";
+  const int cageVertices = state.model.scene->restCage.numVertices();
+  ASSERT_EQ(state.model.deformers.size(), 1u);
+  EXPECT_EQ(state.model.deformers.begin()->second->volumeMesh()->numVertices(), cageVertices + 1) << "the star";
   setMethodOptions(state, {{"tet-level", "1"}});
   installNextOutcome(state);
   ViewSpec level1{methods::phong(), {}, {{"tet-level", "1"}}};
   EXPECT_TRUE(state.views() == std::vector<ViewSpec>{level1});
   ASSERT_TRUE(hasDeformer(state, deformerKey(level1)));
-  EXPECT_GT(state.deformers.at(deformerKey(level1))->volumeMesh()->numVertices(), cageVertices + 1) << "CGAL's";
+  EXPECT_GT(state.model.deformers.at(deformerKey(level1))->volumeMesh()->numVertices(), cageVertices + 1) << "CGAL's";
   EXPECT_NE(viewLabel(state, 0).find("tet-level 1"), std::string::npos) << viewLabel(state, 0);
   // A session keeps them at its top level and gives them back.
   const Session saved = sessionFromJson(sessionToJson(makeSession(state)), "s.json");
@@ -443,24 +448,24 @@ TEST(EditorViews, ViewsWithTheirOwnMethodOptionsHaveTheirOwnDeformers) {
   level1.options["tet-level"] = "1";
   level1AtNu.options["tet-level"] = "1";
   level1AtNu.own["nu"] = 0.3;
-  state.compare = true;
-  state.compareViews = {star, level1, level1AtNu};
+  state.view.compare = true;
+  state.view.compareViews = {star, level1, level1AtNu};
   openDemoScene(state, 3);
-  ASSERT_EQ(state.deformers.size(), 2u);
-  const CageDeformer& a = *state.deformers.at(DeformerKey(methods::phong()));
-  const CageDeformer& b = *state.deformers.at(deformerKey(level1));
-  EXPECT_EQ(a.volumeMesh()->numVertices(), state.scene->restCage.numVertices() + 1) << "the star";
+  ASSERT_EQ(state.model.deformers.size(), 2u);
+  const CageDeformer& a = *state.model.deformers.at(DeformerKey(methods::phong()));
+  const CageDeformer& b = *state.model.deformers.at(deformerKey(level1));
+  EXPECT_EQ(a.volumeMesh()->numVertices(), state.model.scene->restCage.numVertices() + 1) << "the star";
   EXPECT_GT(b.volumeMesh()->numVertices(), a.volumeMesh()->numVertices()) << "CGAL's mesh";
   EXPECT_EQ(deformerKey(level1), deformerKey(level1AtNu));
   EXPECT_NE(viewLabel(state, 1).find("tet-level 1 (own)"), std::string::npos) << viewLabel(state, 1);
   // The panes show what their own deformers give.
-  Eigen::MatrixXd pose = state.pose;
+  Eigen::MatrixXd pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i) pose(i, 1) += 0.3 * pose(i, 0) * pose(i, 0);
   setPose(state, pose);
   ASSERT_TRUE(updateDeformation(state));
-  EXPECT_LE(maxDifference(state.deformed[0], a.deform(pose, state.viewParams(0))), 1e-12);
-  EXPECT_LE(maxDifference(state.deformed[1], b.deform(pose, state.viewParams(1))), 1e-12);
-  EXPECT_GT(maxDifference(state.deformed[0], state.deformed[1]), 1e-3) << "two meshes, two deformations";
+  EXPECT_LE(maxDifference(state.model.deformed[0], a.deform(pose, state.viewParams(0))), 1e-12);
+  EXPECT_LE(maxDifference(state.model.deformed[1], b.deform(pose, state.viewParams(1))), 1e-12);
+  EXPECT_GT(maxDifference(state.model.deformed[0], state.model.deformed[1]), 1e-3) << "two meshes, two deformations";
 }
 
 // The Fig. 8 demo opens posed (the opened state: nothing to undo, nothing unsaved) with its three panes and three
@@ -469,20 +474,21 @@ TEST(EditorViews, TheFig8DemoOpensTwistedWithPhongOnTwoMeshesBesideSomigliana) {
   AppState state;
   requestFig8Demo(state);
   installNextOutcome(state);
-  ASSERT_TRUE(state.scene) << (state.errors.empty() ? "no scene" : state.errors.front());
-  EXPECT_TRUE(state.compare);
+  ASSERT_TRUE(state.model.scene) << (state.status.errors.empty() ? "no scene" : state.status.errors.front());
+  EXPECT_TRUE(state.view.compare);
   EXPECT_TRUE(state.views() == fig8Views());
-  EXPECT_EQ(state.deformers.size(), 3u);
-  EXPECT_FALSE(state.history.canUndo());
+  EXPECT_EQ(state.model.deformers.size(), 3u);
+  EXPECT_FALSE(state.document.history.canUndo());
   EXPECT_FALSE(hasUnsavedChanges(state));
-  const Eigen::MatrixXd& rest = state.scene->restCage.vertices;
-  ASSERT_EQ(state.pose.rows(), rest.rows());
+  const Eigen::MatrixXd& rest = state.model.scene->restCage.vertices;
+  ASSERT_EQ(state.document.pose.rows(), rest.rows());
   const double half = rest.col(0).cwiseAbs().maxCoeff();
   double largestTurn = 0;
   for (Eigen::Index v = 0; v < rest.rows(); ++v) {
     const double t = rest(v, 0) / half, arch = kFig8ArchHeight * (1 - t * t);
-    EXPECT_EQ(state.pose(v, 0), rest(v, 0));
-    const Eigen::Vector2d before(rest(v, 1), rest(v, 2)), after(state.pose(v, 1) - arch, state.pose(v, 2));
+    EXPECT_EQ(state.document.pose(v, 0), rest(v, 0));
+    const Eigen::Vector2d before(rest(v, 1), rest(v, 2)),
+        after(state.document.pose(v, 1) - arch, state.document.pose(v, 2));
     EXPECT_NEAR(after.norm(), before.norm(), 1e-12);
     const double turn = std::atan2(before.x() * after.y() - before.y() * after.x(), before.dot(after));
     EXPECT_NEAR(turn, kFig8TwistRadians * t, 1e-12) << "vertex " << v;

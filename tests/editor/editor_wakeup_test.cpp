@@ -45,30 +45,30 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
 
   sweepNuNow(state);  // the measure worker: the nu sweep (the panel's button)
   measureViews(state);
-  ASSERT_TRUE(state.quantities.worker.busy());
-  state.quantities.worker.join();
+  ASSERT_TRUE(state.view.quantities.worker.busy());
+  state.view.quantities.worker.join();
   EXPECT_EQ(wakes.load(), 2) << "nu sweep";
   measureViews(state);
-  EXPECT_EQ(state.quantities.nuSweep.size(), 25u);
+  EXPECT_EQ(state.view.quantities.nuSweep.size(), 25u);
 
   // File > Make cage...: a generator that returns at once (the real one is tested in editor_cage_maker_test.cpp).
-  state.cageMaker.setGenerator([](const Eigen::MatrixXd&, const Eigen::MatrixXi&, const CageGenerationOptions&,
-                                  const std::string&, const ProgressCallback&) {
+  state.jobs.cageMaker.setGenerator([](const Eigen::MatrixXd&, const Eigen::MatrixXi&, const CageGenerationOptions&,
+                                       const std::string&, const ProgressCallback&) {
     GeneratedCage generated;
     generated.cage = test::makeIcosphere(1);
     generated.cage.vertices *= 10.0;
     return generated;
   });
   openCageMaker(state, 80);
-  state.cageMaker.wait();
+  state.jobs.cageMaker.wait();
   // The worker thread calls the wake-up right after storing the result, which wait() may see first.
   for (int i = 0; i < 5000 && wakes.load() < 3; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
   EXPECT_EQ(wakes.load(), 3) << "cage generation";
-  EXPECT_EQ(state.cageMaker.status(), CageMaker::Status::Ready);
+  EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready);
 
   ASSERT_TRUE(
-      state.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
-  ASSERT_TRUE(state.exporter.wait().has_value());
+      state.jobs.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
+  ASSERT_TRUE(state.jobs.exporter.wait().has_value());
   EXPECT_EQ(wakes.load(), 4) << "export";
 }
 

@@ -117,20 +117,20 @@ struct DemoView {
 DemoView demoView() {
   AppState state;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.worker.wait();
+  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
   installOutcome(state, std::move(*out));
   const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
-  state.viewAspect = view.width / view.height;
+  state.view.viewAspect = view.width / view.height;
   frameAll(state);
   // A handle well apart from the others on screen: the drag picks it and nothing else.
-  const Eigen::MatrixXd& pose = state.pose;
+  const Eigen::MatrixXd& pose = state.document.pose;
   for (Eigen::Index i = 0; i < pose.rows(); ++i) {
     Eigen::Vector2d p;
-    state.camera.project(pose.row(i).transpose(), view.width, view.height, p);
+    state.view.camera.project(pose.row(i).transpose(), view.width, view.height, p);
     double nearest = 1e9;
     for (Eigen::Index j = 0; j < pose.rows(); ++j) {
       Eigen::Vector2d q;
-      state.camera.project(pose.row(j).transpose(), view.width, view.height, q);
+      state.view.camera.project(pose.row(j).transpose(), view.width, view.height, q);
       if (j != i) nearest = std::min(nearest, (p - q).norm());
     }
     if (nearest > 40 && p.x() > 60 && p.y() > 60 && p.x() < view.width - 60 && p.y() < view.height - 60)

@@ -1,0 +1,111 @@
+// The exact coordinate gradients (core/coordinate_gradients.h) of the Somigliana terms: the pack kernel (dual
+// numbers of simd::Pack, four points at once) against the one-point dual-number kernel, the reference, to 1e-12 of
+// each term's size (at least 1) on small cages with points from 1e-5 to 0.1 inside their faces and on a subsample
+// of every shared model; and both against central differences of the closed-form coordinates.
+#include "coordinate_gradients.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <sstream>
+#include <string>
+
+#include "somigliana_coordinates.h"
+#include "test_models.h"
+#include "test_shapes.h"
+
+namespace somicage {
+namespace {
+
+using GradientRows = std::array<Eigen::MatrixXd, 3>;  // [a](p, k) = d row_p[k] / dx_a
+
+GradientRows somiglianaGradientRows(const Cage& cage, const Eigen::MatrixXd& points, bool scalarKernel) {
+  const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
+  GradientRows rows;
+  for (Eigen::MatrixXd& g : rows) g.setConstant(points.rows(), columns, std::nan(""));
+  integrateSomiglianaGradients(
+      cage, points, 2, noProgress,
+      [&](int p, const double* const* r) {
+        for (int a = 0; a < 3; ++a) rows[a].row(p) = Eigen::Map<const Eigen::RowVectorXd>(r[a], columns);
+      },
+      scalarKernel);
+  return rows;
+}
+
+// The largest |packs - scalar| / max(1, |scalar|) over every gradient entry (NaN if a row was never written).
+double worstDifference(const Cage& cage, const Eigen::MatrixXd& points) {
+  const GradientRows reference = somiglianaGradientRows(cage, points, true);
+  const GradientRows packs = somiglianaGradientRows(cage, points, false);
+  double worst = 0;
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::ArrayXXd scale = reference[a].array().abs().max(1.0);
+    const double w = ((packs[a] - reference[a]).array().abs() / scale).maxCoeff();
+    worst = std::isnan(w) ? w : std::max(worst, w);
+  }
+  return worst;
+}
+
+std::string scientific(double x) {
+  std::ostringstream out;
+  out << x;
+  return out.str();
+}
+
+TEST(CoordinateGradients, PacksAgreeWithTheScalarDualNumbersNearAndFarFromFaces) {
+  for (const Cage& cage : {test::makeCube(), test::makeIcosphere(2), test::makeExtrudedL()}) {
+    // 4k + 3 points, so that the last pack is partly padding.
+    Eigen::MatrixXd points(4 * 30 + 3, 3);
+    points << test::pointsNearFaces(cage, 40, 1e-1, 1), test::pointsNearFaces(cage, 40, 1e-3, 2),
+        test::pointsNearFaces(cage, 43, 1e-5, 3);
+    const double worst = worstDifference(cage, points);
+    EXPECT_LE(worst, 1e-12) << cage.numFaces() << " faces";
+    RecordProperty("worst_difference_" + std::to_string(cage.numFaces()) + "_faces", scientific(worst));
+  }
+}
+
+// Central differences of the scalar closed form with step 1e-5 at points at least 0.1 inside a cage of size 1:
+// truncation about 1e-10 and rounding about eps / 1e-5 = 2e-11 of the coordinates' third derivatives and sizes,
+// so 1e-7 of each gradient's size (at least 1) leaves a wide margin and still catches any wrong term.
+TEST(CoordinateGradients, MatchCentralDifferencesOfTheCoordinates) {
+  const Cage cage = test::makeBumpySphere(1);
+  const Eigen::MatrixXd points = test::randomBallPoints(9, 0.55, 7);
+  IntegrationOptions scalar;
+  scalar.scalarKernel = true;
+  const double step = 1e-5;
+  for (bool scalarKernel : {false, true}) {
+    const GradientRows gradients = somiglianaGradientRows(cage, points, scalarKernel);
+    for (int a = 0; a < 3; ++a) {
+      Eigen::MatrixXd plus = points, minus = points;
+      plus.col(a).array() += step;
+      minus.col(a).array() -= step;
+      const Eigen::MatrixXd difference = (computeSomiglianaCoordinates(cage, plus, scalar).values -
+                                          computeSomiglianaCoordinates(cage, minus, scalar).values) /
+                                         (2 * step);
+      const Eigen::MatrixXd exact = gradients[a].leftCols(difference.cols());
+      const double worst =
+          ((exact - difference).array().abs() / exact.array().abs().max(1.0)).maxCoeff();
+      EXPECT_LE(worst, 1e-7) << "d/dx_" << a << (scalarKernel ? " (scalar)" : " (packs)");
+      RecordProperty(std::string(scalarKernel ? "scalar" : "packs") + "_worst_x" + std::to_string(a), scientific(worst));
+    }
+  }
+}
+
+class CoordinateGradientModels : public ::testing::TestWithParam<test::ModelCase> {};
+
+TEST_P(CoordinateGradientModels, PacksAgreeWithTheScalarDualNumbers) {
+  Cage cage;
+  Eigen::MatrixXd sample;
+  if (!test::loadModel(GetParam(), cage, sample)) return;
+  Eigen::MatrixXd points(std::min<Eigen::Index>(sample.rows(), 21), 3);  // a quick subsample, 4k + 1 points
+  for (Eigen::Index p = 0; p < points.rows(); ++p) points.row(p) = sample.row(p * (sample.rows() / points.rows()));
+  const double worst = worstDifference(cage, points);
+  EXPECT_LE(worst, 1e-12);
+  RecordProperty("worst_difference", scientific(worst));
+}
+
+INSTANTIATE_TEST_SUITE_P(SharedModels, CoordinateGradientModels, ::testing::ValuesIn(test::modelCases()),
+                         test::modelCaseName);
+
+}  // namespace
+}  // namespace somicage
