@@ -10,6 +10,8 @@
 #include "cage_repair.h"
 #include "cage_tetrahedralization.h"
 #include "cage_validation.h"
+#include "core/constant_method.h"
+#include "errors.h"
 #include "memory_estimate.h"
 #include "methods/method_descriptors.h"
 #include "precompute_worker.h"
@@ -153,6 +155,54 @@ TEST(EditorWorker, CancelStopsWithoutResults) {
   ASSERT_TRUE(done.has_value());
   EXPECT_FALSE(done->cancelled);
   EXPECT_EQ(done->deformers.size(), 1u);
+}
+
+namespace {
+
+// A method whose precompute reports progress until it is told to stop, then stops as every precompute does
+// (throws Cancelled): a cancel that arrives while a method is precomputing, deterministically, whatever the speed.
+std::atomic<bool> blockingEntered{false};
+const MethodDescriptor& blockingMethod() {
+  static const MethodDescriptor descriptor = [] {
+    MethodDescriptor d = test::constantMethod();
+    d.name = "blocking";
+    d.displayName = "Blocking";
+    d.precompute = [](const Cage&, const Eigen::MatrixXd&, const PrecomputeOptions&,
+                      const ProgressCallback& progress) -> std::unique_ptr<CageDeformer> {
+      blockingEntered = true;
+      while (progress(0.5)) std::this_thread::yield();
+      throw Cancelled();
+    };
+    return d;
+  }();
+  return descriptor;
+}
+
+}  // namespace
+
+// Issue 23: the cancel tests accepted both outcomes. A cancel in the middle of the second method's precompute: the
+// outcome is cancelled and delivers nothing, not even the first method's finished deformer; the worker then runs the
+// next request whole.
+TEST(EditorWorker, ACancelDuringAPrecomputeDeliversNoDeformer) {
+  PrecomputeWorker worker;
+  PrecomputeRequest r;
+  r.scene = std::make_shared<const Scene>(makeDemoScene(3));
+  r.methods = {methods::green(), Method(blockingMethod())};
+  blockingEntered = false;
+  worker.start(r);
+  while (!blockingEntered) std::this_thread::yield();  // green is done, the blocking precompute runs
+  worker.cancel();
+  const std::optional<PrecomputeOutcome> out = worker.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->cancelled);
+  EXPECT_TRUE(out->deformers.empty());
+  EXPECT_TRUE(out->error.empty()) << out->error;
+  r.methods = {methods::green()};
+  worker.start(r);
+  const std::optional<PrecomputeOutcome> again = worker.wait();
+  ASSERT_TRUE(again.has_value());
+  EXPECT_FALSE(again->cancelled);
+  EXPECT_EQ(again->deformers.size(), 1u);
 }
 
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
