@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <optional>
@@ -152,6 +153,7 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level, const ProgressCallbac
                      "give a triangulation of it with --tets FILE.mesh (Dimension 2, Triangles)");
   }
   if (!progress(0.0)) throw Cancelled();
+  std::string fallback;  // why Mesh_3's mesh is not used (level > 0)
   if (level > 0) {
     // Mesh_3 on a worker thread, so that this thread can call progress and stop it (CGAL polls the flag).
     std::atomic<bool> stop{false};
@@ -181,6 +183,18 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level, const ProgressCallbac
       if (!progress(1.0)) throw Cancelled();
       return *mesh;
     }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    char limit[32];
+    std::snprintf(limit, sizeof limit, "%g", bound.seconds);
+    fallback = "CGAL's Mesh_3 " +
+               std::string(mesh ? "made a mesh of the cage that does not keep its boundary"
+                           : seconds >= bound.seconds
+                               ? "did not finish within its bound of " + std::string(limit) + " s"
+                               : "stopped (the cage is not a manifold surface, it reached its cap of " +
+                                     std::to_string(bound.maxVertices) + " vertices, or it moved a cage vertex)") +
+               " at tet level " + std::to_string(level) +
+               "; TetGen's constrained tetrahedralization, refined to that level's cell size, is used instead "
+               "(a different mesh: a lower --tet-level, or --tets FILE, gives one of your choice)";
   }
   // Level 0, or Mesh_3 not done within its bound: the constrained tetrahedralization, cells of the level's size.
   const double h = cageDiameter(cage.vertices) * std::ldexp(1.0, -(level + 1));
@@ -189,6 +203,7 @@ VolumeMesh tetrahedralizeCage(const Cage& cage, int level, const ProgressCallbac
     throw InputError(kGenerated, -1, "neither CGAL's Mesh_3 nor TetGen made a tetrahedral mesh of the cage",
                      "repair the cage (somicage check), or give a tetrahedral mesh with --tets");
   if (!progress(1.0)) throw Cancelled();
+  mesh.fallback = fallback;
   return mesh;
 }
 

@@ -20,7 +20,8 @@ struct TetrahedralizationBound {
 // boundary, all positively oriented, checked by checkVolumeMesh. Level 0: the constrained Delaunay
 // tetrahedralization (constrained_tetrahedralization.h). Level L > 0: Mesh_3 bounding edges, faces and cells by
 // 2^-(L+1) cage diameters (Steiner vertices on the faces and inside); when it is not done within `bound`, or its
-// mesh fails the check (CACTUS's cage: a hole), the constrained tetrahedralization refined to cells of that size. progress (fraction of
+// mesh fails the check (CACTUS's cage: a hole), the constrained tetrahedralization refined to cells of that size,
+// with VolumeMesh::fallback saying so and why (the front ends show it as a warning). progress (fraction of
 // the bound used, on the calling thread) may stop it: Cancelled. A 2D cage gets the star of its edges when it is
 // star-shaped (starVolumeMesh). Throws InputError when neither mesher can mesh the cage.
 VolumeMesh tetrahedralizeCage(const Cage& cage, int level = kDefaultTetLevel,

@@ -21,32 +21,69 @@ namespace {
 template <int Dim>
 using DualOf = dual::Dual<Dim>;
 
-// The query point as dual numbers seeded with the unit vectors: every result carries d/dx_a in its gradient.
-template <int Dim>
-void seedPoint(const Eigen::MatrixXd& points, int p, DualOf<Dim> x[Dim]) {
-  for (int a = 0; a < Dim; ++a) x[a] = DualOf<Dim>::variable(points(p, a), a);
-}
+// The value of lane l of a double (one lane) or a pack.
+inline double lane(double v, int) { return v; }
+#if SOMICAGE_SIMD_PACKS
+using DualPack = dual::Dual<3, simd::Pack>;
+inline double lane(const simd::Pack& v, int l) { return v.v[l]; }
+#endif
 
-// Per-thread storage: a dual row and its split into Dim gradient rows.
-template <int Dim>
+// Per-thread storage: a dual row (Scalar: a dual of doubles, or of packs for kLanes points) and its split into Dim
+// gradient rows.
+template <int Dim, typename Scalar>
 struct GradientBuffers {
-  std::vector<DualOf<Dim>> row;
+  std::vector<Scalar> row;
   std::vector<double> split;
   explicit GradientBuffers(int columns) : row(columns), split(static_cast<std::size_t>(Dim) * columns) {}
 
-  void clear() { std::fill(row.begin(), row.end(), DualOf<Dim>(0.0)); }
-  // Writes rows[a][k] = d row[k] / dx_a and hands them to the sink.
-  void emit(int p, const GradientRowSink& sink) {
+  void clear() { std::fill(row.begin(), row.end(), Scalar(0.0)); }
+  // For each lane l (point first + l < numPoints): writes rows[a][k] = d row[k] / dx_a and hands them to the sink.
+  void emit(int first, int lanes, int numPoints, const GradientRowSink& sink) {
     const std::size_t columns = row.size();
-    const double* rows[Dim];
-    for (int a = 0; a < Dim; ++a) {
-      double* out = split.data() + a * columns;
-      for (std::size_t k = 0; k < columns; ++k) out[k] = row[k].g[a];
-      rows[a] = out;
+    for (int l = 0; l < lanes && first + l < numPoints; ++l) {
+      const double* rows[Dim];
+      for (int a = 0; a < Dim; ++a) {
+        double* out = split.data() + a * columns;
+        for (std::size_t k = 0; k < columns; ++k) out[k] = lane(row[k].g[a], l);
+        rows[a] = out;
+      }
+      sink(first + l, rows);
     }
-    sink(p, rows);
   }
 };
+
+// Calls perPoint(row, x) with x the point as dual numbers seeded with the unit vectors (every result carries d/dx_a
+// in its gradient) and row its zeroed dual row (`columns` numbers), then hands the row to the sink: kLanes points at
+// once (duals of packs) for a 3D cage unless scalarKernel (or a build without packs), else one at a time.
+template <int Dim, typename PerPoint>
+void forEachGradientRow(const Eigen::MatrixXd& points, int numFaces, int threads, const ProgressCallback& progress,
+                        int columns, bool scalarKernel, const GradientRowSink& sink, PerPoint perPoint) {
+  const int numPoints = static_cast<int>(points.rows());
+#if SOMICAGE_SIMD_PACKS
+  if constexpr (Dim == 3) {
+    if (!scalarKernel)
+      return forEachPointPack(
+          points, numFaces, threads, progress, [columns] { return GradientBuffers<3, DualPack>(columns); },
+          [&](GradientBuffers<3, DualPack>& buffers, int first, const simd::Pack x[3]) {
+            buffers.clear();
+            const DualPack xd[3] = {DualPack::variable(x[0], 0), DualPack::variable(x[1], 1),
+                                    DualPack::variable(x[2], 2)};
+            perPoint(buffers.row.data(), xd);
+            buffers.emit(first, simd::kLanes, numPoints, sink);
+          });
+  }
+#endif
+  (void)scalarKernel;
+  forEachPointInBlocks(
+      numPoints, numFaces, threads, progress, [columns] { return GradientBuffers<Dim, DualOf<Dim>>(columns); },
+      [&](GradientBuffers<Dim, DualOf<Dim>>& buffers, int p) {
+        buffers.clear();
+        DualOf<Dim> x[Dim];
+        for (int a = 0; a < Dim; ++a) x[a] = DualOf<Dim>::variable(points(p, a), a);
+        perPoint(buffers.row.data(), x);
+        buffers.emit(p, 1, numPoints, sink);
+      });
+}
 
 std::vector<TriangleFrame> cageFrames(const Cage& cage) {
   std::vector<TriangleFrame> frames;
@@ -58,19 +95,19 @@ std::vector<TriangleFrame> cageFrames(const Cage& cage) {
 }
 
 // Calls perFace(j, integrals) for every non-degenerate face of a 3D cage (PortableTriangleIntegralsOf) or every
-// edge of non-zero length of a 2D one (EdgeIntegralsOf), with the point as dual numbers.
-template <int Dim, typename PerFace>
-void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& frames, const DualOf<Dim> x[Dim],
+// edge of non-zero length of a 2D one (EdgeIntegralsOf), with the point (or pack of points) as dual numbers.
+template <int Dim, typename Scalar, typename PerFace>
+void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& frames, const Scalar x[Dim],
                         PerFace perFace) {
   if constexpr (Dim == 3) {
-    PortableTriangleIntegralsOf<DualOf<3>> I;
+    PortableTriangleIntegralsOf<Scalar> I;
     for (int j = 0; j < cage.numFaces(); ++j) {
       if (frames[j].degenerate) continue;
       integrateTriangle(frames[j], x, I);
       perFace(j, I);
     }
   } else {
-    EdgeIntegralsOf<DualOf<2>> I;
+    EdgeIntegralsOf<Scalar> I;
     for (int j = 0; j < cage.numFaces(); ++j) {
       if (isDegenerateFace(cage, j)) continue;
       const Eigen::Vector2d p0 = cage.vertices.row(cage.faces(j, 0)), p1 = cage.vertices.row(cage.faces(j, 1));
@@ -84,23 +121,19 @@ void integrateDualFaces(const Cage& cage, const std::vector<TriangleFrame>& fram
 // somigliana_coordinates.h and, per face, writeFace(face block, integrals, n, tail integrals).
 template <int Dim, typename WriteFace>
 void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                         const CoordinateLayout& layout, WriteFace writeFace, const GradientRowSink& sink) {
+                         const CoordinateLayout& layout, WriteFace writeFace, const GradientRowSink& sink,
+                         bool scalarKernel) {
   const RowMatrixXd normals = faceNormals(cage, cage.vertices);  // row-major: rows as pointers
-  const int columns = layout.integralColumns(), stride = layout.numVertices;
+  const int stride = layout.numVertices;
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
-  forEachPointInBlocks(
-      static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
-      [columns] { return GradientBuffers<Dim>(columns); },
-      [&](GradientBuffers<Dim>& buffers, int p) {
-        buffers.clear();
-        DualOf<Dim> x[Dim];
-        seedPoint<Dim>(points, p, x);
-        DualOf<Dim>* row = buffers.row.data();
+  forEachGradientRow<Dim>(
+      points, cage.numFaces(), threads, progress, layout.integralColumns(), scalarKernel, sink,
+      [&](auto* row, const auto* x) {
         // The accumulation of somigliana_coordinates.cpp (addVertexTerms), in dual numbers.
         integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
           const double* n = normals.row(j).data();
           for (int k = 0; k < Dim; ++k) {
-            DualOf<Dim>* t = row + layout.vertexColumn(cage.faces(j, k), 0);
+            auto* t = row + layout.vertexColumn(cage.faces(j, k), 0);
             t[0] += I.D[k];
             if constexpr (Dim == 3) {
               const auto& V = I.V[k];
@@ -116,7 +149,6 @@ void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
           }
           writeFace(row + layout.faceColumn(j, 0), I, n, row + layout.mainColumns());
         });
-        buffers.emit(p, sink);
       });
 }
 
@@ -124,21 +156,22 @@ void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
 template <int Dim>
 void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
                          const GradientRowSink& sink) {
-  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double* n, DualOf<Dim>* affine) {
+  auto writeFace = [](auto* f, const auto& I, const double* n, auto* affine) {
     f[0] += I.S;
     for (int a = 0; a < Dim; ++a)
       for (int b = 0; b < Dim; ++b) f[1 + a] += I.M[a][b] * n[b];
     addAffineTerms<Dim>(I.M, n, affine);
   };
   const CoordinateLayout layout = somiglianaLayout(Dim, cage.numVertices(), cage.numFaces());
-  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
+  // One point at a time: the reference (the packs are somiglianaGradientPacks, the whole row in one dispatched call).
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink, /*scalarKernel=*/true);
 }
 
 // The boundary element's face terms S_j and the full moment M_j (bem_layer_integrals.h).
 template <int Dim>
 void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                       const GradientRowSink& sink) {
-  auto writeFace = [](DualOf<Dim>* f, const auto& I, const double*, DualOf<Dim>*) {
+                       const GradientRowSink& sink, bool scalarKernel) {
+  auto writeFace = [](auto* f, const auto& I, const double*, auto*) {
     f[0] = I.S;
     if constexpr (Dim == 3)
       f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[2][2], f[4] = I.M[0][1], f[5] = I.M[0][2], f[6] = I.M[1][2];
@@ -146,35 +179,26 @@ void bemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int thre
       f[1] = I.M[0][0], f[2] = I.M[1][1], f[3] = I.M[0][1];
   };
   const CoordinateLayout layout = bemLayerLayout(Dim, cage.numVertices(), cage.numFaces());
-  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink);
+  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink, scalarKernel);
 }
 
 template <int Dim>
 void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                    const GradientRowSink& sink) {
+                    const GradientRowSink& sink, bool scalarKernel) {
   const double scale = 1 / (Dim == 3 ? 4 * M_PI : 2 * M_PI);                    // green_coordinates.h
   const CoordinateLayout layout{cage.numVertices(), cage.numFaces(), 1, 1, 0};  // [phi | psi]
-  const int columns = layout.mainColumns();
   const std::vector<TriangleFrame> frames = Dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
-  forEachPointInBlocks(
-      static_cast<int>(points.rows()), cage.numFaces(), threads, progress,
-      [columns] { return GradientBuffers<Dim>(columns); },
-      [&](GradientBuffers<Dim>& buffers, int p) {
-        buffers.clear();
-        DualOf<Dim> x[Dim];
-        seedPoint<Dim>(points, p, x);
-        DualOf<Dim>* row = buffers.row.data();
-        integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
-          for (int k = 0; k < Dim; ++k) row[layout.vertexColumn(cage.faces(j, k), 0)] += scale * I.D[k];
-          row[layout.faceColumn(j, 0)] = scale * I.S;
-        });
-        buffers.emit(p, sink);
-      });
+  forEachGradientRow<Dim>(points, cage.numFaces(), threads, progress, layout.mainColumns(), scalarKernel, sink,
+                          [&](auto* row, const auto* x) {
+                            integrateDualFaces<Dim>(cage, frames, x, [&](int j, const auto& I) {
+                              for (int k = 0; k < Dim; ++k)
+                                row[layout.vertexColumn(cage.faces(j, k), 0)] += scale * I.D[k];
+                              row[layout.faceColumn(j, 0)] = scale * I.S;
+                            });
+                          });
 }
 
 #if SOMICAGE_SIMD_PACKS
-using DualPack = dual::Dual<3, simd::Pack>;
-
 // The gradient rows of simd::kLanes points at once: the coordinates' row kernel (integrateSomiglianaRowPack) on the
 // points as dual numbers of packs, the whole pack in one dispatched call (cpu_dispatch.h).
 SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces, int numVertices,
@@ -226,21 +250,21 @@ void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& point
 }
 
 void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                             const ProgressCallback& progress, const GradientRowSink& sink) {
+                             const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel) {
   assertCageAndPoints(cage, points);
   if (cage.dim() == 3)
-    greenGradients<3>(cage, points, threads, progress, sink);
+    greenGradients<3>(cage, points, threads, progress, sink, scalarKernel);
   else
-    greenGradients<2>(cage, points, threads, progress, sink);
+    greenGradients<2>(cage, points, threads, progress, sink, scalarKernel);
 }
 
 void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                const ProgressCallback& progress, const GradientRowSink& sink) {
+                                const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel) {
   assertCageAndPoints(cage, points);
   if (cage.dim() == 3)
-    bemLayerGradients<3>(cage, points, threads, progress, sink);
+    bemLayerGradients<3>(cage, points, threads, progress, sink, scalarKernel);
   else
-    bemLayerGradients<2>(cage, points, threads, progress, sink);
+    bemLayerGradients<2>(cage, points, threads, progress, sink, scalarKernel);
 }
 
 }  // namespace somicage

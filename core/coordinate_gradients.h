@@ -26,12 +26,15 @@ void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& point
 
 // Green: rows [phi (#V) | psi (#F)] (green_coordinates.h). phi_i and psi_j are the double layer of the hats and
 // the single layer of the faces, the integrals D_k and S that the Somigliana kernels compute as well.
+// Green and BEM (3D) integrate kLanes points at once as well, the per-face kernel on duals of packs with the
+// accumulation outside it; scalarKernel as above.
 void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                             const ProgressCallback& progress, const GradientRowSink& sink);
+                             const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel = false);
 
 // BEM: rows in the layout of BemLayerIntegrals::values (bemLayerLayout, bem_layer_integrals.h) for points off the
 // cage.
 void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                const ProgressCallback& progress, const GradientRowSink& sink);
+                                const ProgressCallback& progress, const GradientRowSink& sink,
+                                bool scalarKernel = false);
 
 }  // namespace somicage

@@ -8,10 +8,15 @@
 //   tail column k:     column mainColumns() + k (per-point numbers such as [x | 1], see the method)
 // An integrator writes a point's main block followed by its tailIntegrals (per-point integrals that belong to no
 // single vertex or face): integralColumns() numbers; the method places them in its tail.
+//
+// Sparse rows (rowEntries > 0): a method whose rows have few nonzeros (Phong: a point's simplex's d + 1 vertices
+// times d + 1 terms, of (d + 1) #N columns) stores each row as rowEntries (column, value) pairs in these same column
+// numbers (frame_evaluation.h: FrameCoordinates::entryColumns); every frame evaluator reads that form.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 
 namespace somicage {
 
@@ -25,6 +30,7 @@ struct CoordinateLayout {
   int faceTerms = 0;    // numbers per cage face
   int tailColumns = 0;  // numbers per point after the vertex and face blocks
   int tailIntegrals = 0;  // of them, integrals the integrator writes after the main block (Somigliana's affine terms)
+  int rowEntries = 0;     // > 0: C is stored as sparse rows of this many (column, value) pairs each; 0: dense
 
   int vertexColumns() const { return numVertices * vertexTerms; }
   int mainColumns() const { return vertexColumns() + numFaces * faceTerms; }  // K_main of frame_evaluation.h
@@ -34,9 +40,11 @@ struct CoordinateLayout {
   int faceColumn(int j, int k) const { return vertexColumns() + j * faceTerms + k; }
   int tailColumn(int k) const { return mainColumns() + k; }
 
-  // Bytes of C for `points` rows in float or double.
+  // Bytes of C for `points` rows in float or double (sparse rows: each entry's value and its 32-bit column).
   std::size_t bytes(std::size_t points, bool floatStorage) const {
-    return points * static_cast<std::size_t>(columns()) * (floatStorage ? sizeof(float) : sizeof(double));
+    const std::size_t value = floatStorage ? sizeof(float) : sizeof(double);
+    if (rowEntries > 0) return points * static_cast<std::size_t>(rowEntries) * (value + sizeof(std::int32_t));
+    return points * static_cast<std::size_t>(columns()) * value;
   }
 };
 

@@ -73,6 +73,8 @@ void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& o
              "reoriented " + std::to_string(reoriented) + " of " + std::to_string(options.volumeMesh->numSimplices()) +
                  " elements whose vertices were in negative order"});
   }
+  if (!options.volumeMesh->fallback.empty())  // the mesher made another mesh than asked (a Mesh_3 fallback)
+    notices({Notice::Kind::Warning, "", options.volumeMesh->fallback});
 }
 
 MemoryEstimate requirePrecomputeMemory(Method method, const Cage& cage, std::size_t points,

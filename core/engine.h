@@ -58,7 +58,8 @@ Eigen::MatrixXd meshPointsFor(const Cage& cage, const Eigen::MatrixXd& meshVerti
 
 // For a method that needs a volume mesh of the cage (MethodDescriptor::needsVolumeMesh) and has none yet: makes it
 // (deformer.h: volumeMeshFor, from the method options "tets" / "tet-level" and the mesher) and stores it in
-// options.volumeMesh, with a Repair notice naming the file when simplices were reoriented. Nothing otherwise.
+// options.volumeMesh, with a Repair notice naming the file when simplices were reoriented, and a Warning notice when
+// the mesher fell back to another mesh than asked (VolumeMesh::fallback). Nothing otherwise.
 // progress goes to the mesher, which may take seconds (Cancelled when it returns false).
 void prepareVolumeMesh(Method method, const Cage& restCage, PrecomputeOptions& options, const NoticeSink& notices,
                        const ProgressCallback& progress = noProgress);

@@ -71,5 +71,19 @@ void writeSimilarityRow(const Eigen::MatrixXd& points, int p, Scalar* row, int c
   for (int a = 0; a < d; ++a) row[columns - d - 1 + a] = static_cast<Scalar>(points(p, a));
   row[columns - 1] = 1;
 }
+// The same row as sparse entries (coordinate_layout.h, rowEntries >= d + 1): x and 1 at the last d + 1 of `columns`,
+// the other entries 0 at the last column.
+template <typename Scalar, typename Index>
+void writeSimilarityEntries(const Eigen::MatrixXd& points, int p, Scalar* values, Index* entryColumns, int entries,
+                            int columns) {
+  const int d = static_cast<int>(points.cols());
+  std::fill(values, values + entries, Scalar(0));
+  std::fill(entryColumns, entryColumns + entries, static_cast<Index>(columns - 1));
+  for (int a = 0; a < d; ++a) {
+    values[a] = static_cast<Scalar>(points(p, a));
+    entryColumns[a] = static_cast<Index>(columns - d - 1 + a);
+  }
+  values[d] = 1;
+}
 
 }  // namespace somicage

@@ -248,12 +248,89 @@ void evaluateOutputs(const CoordinateMatrix<Scalar>& C, int mainColumns, const F
   }
 }
 
+// W as frame_point_kernel.h's kernels read it (row-major copies of W_main and W_tail): what a sparse row's entries
+// index, with the CUDA kernel's per-row sums (addSparseFramePartialSums, one lane).
+struct SparseWeights {
+  CoordinateMatrix<double> main, tail;
+  PortableFrameWeights portable;
+
+  SparseWeights(const FrameWeights& W, int columns, int mainColumns) : main(W.main), tail(W.tail) {
+    portable = {main.data(), tail.data(), columns, mainColumns, W.mainOffset, W.outputs, {0, 0, 0}, W.finish};
+    for (int a = 0; a < 3 && a < W.origin.size(); ++a) portable.origin[a] = W.origin(a);
+  }
+};
+
+// The outputs y (kMaxOutputs, added to) of sparse row r.
+template <typename Scalar>
+void sparseRowOutputs(const CoordinateMatrix<Scalar>& values, const CoordinateMatrix<std::int32_t>& columns,
+                      const SparseWeights& W, int r, double* y) {
+  addSparseFramePartialSums(values.row(r).data(), columns.row(r).data(), static_cast<int>(values.cols()), W.portable,
+                            0, 1, y);
+}
+
+template <typename Scalar, int Dim>
+void evaluateSparse(const FrameCoordinates& C, const CoordinateMatrix<Scalar>& values, const FrameWeights& W,
+                    int threads, Eigen::MatrixXd& out) {
+  const SparseWeights weights(W, C.columns(), C.mainColumns);
+  const int numRows = static_cast<int>(values.rows());
+  Eigen::Matrix<double, Eigen::Dynamic, Dim, Eigen::RowMajor> rows(numRows, Dim);
+#pragma omp parallel for schedule(static, 256) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int r = 0; r < numRows; ++r) {
+    double y[kMaxOutputs] = {};
+    sparseRowOutputs(values, C.entryColumns, weights, r, y);
+    finishFramePoint<Dim>(y, W.finish, weights.portable.origin, rows.row(r).data());
+  }
+  out = rows;
+}
+
+template <typename Scalar>
+void evaluateSparseOutputs(const FrameCoordinates& C, const CoordinateMatrix<Scalar>& values, const FrameWeights& W,
+                           int threads, CoordinateMatrix<double>& rows) {
+  const SparseWeights weights(W, C.columns(), C.mainColumns);
+  const int numRows = static_cast<int>(values.rows());
+  rows.resize(numRows, W.outputs);
+#pragma omp parallel for schedule(static, 256) num_threads(threads > 0 ? threads : omp_get_max_threads())
+  for (int r = 0; r < numRows; ++r) {
+    double y[kMaxOutputs] = {};
+    sparseRowOutputs(values, C.entryColumns, weights, r, y);
+    std::copy(y, y + W.outputs, rows.row(r).data());
+  }
+}
+
+template <typename Scalar>
+CoordinateMatrix<Scalar> denseRows(const CoordinateMatrix<Scalar>& values, const CoordinateMatrix<std::int32_t>& columns,
+                                   int numColumns) {
+  CoordinateMatrix<Scalar> dense = CoordinateMatrix<Scalar>::Zero(values.rows(), numColumns);
+  for (Eigen::Index r = 0; r < values.rows(); ++r)
+    for (Eigen::Index k = 0; k < values.cols(); ++k) dense(r, columns(r, k)) += values(r, k);
+  return dense;
+}
+
 }  // namespace
+
+FrameCoordinates denseFrameCoordinates(const FrameCoordinates& C) {
+  FrameCoordinates dense;
+  dense.mainColumns = C.mainColumns;
+  dense.exteriorBlends = C.exteriorBlends;
+  if (!C.isSparse()) {
+    dense.doubles = C.doubles;
+    dense.floats = C.floats;
+  } else if (C.isFloat()) {
+    dense.floats = denseRows(C.floats, C.entryColumns, C.sparseColumns);
+  } else {
+    dense.doubles = denseRows(C.doubles, C.entryColumns, C.sparseColumns);
+  }
+  return dense;
+}
 
 void evaluateFrameOutputs(const FrameCoordinates& C, const FrameWeights& W, int threads, CoordinateMatrix<double>& y) {
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
-  if (C.isFloat())
+  if (C.isSparse() && C.isFloat())
+    evaluateSparseOutputs(C, C.floats, W, threads, y);
+  else if (C.isSparse())
+    evaluateSparseOutputs(C, C.doubles, W, threads, y);
+  else if (C.isFloat())
     evaluateOutputs(C.floats, C.mainColumns, W, threads, y);
   else
     evaluateOutputs(C.doubles, C.mainColumns, W, threads, y);
@@ -263,7 +340,14 @@ void evaluateFrame(const FrameCoordinates& C, const FrameWeights& W, int dim, in
   SOMICAGE_ASSERT(W.outputs == frameOutputs(W.finish, dim), "a frame has the outputs of its finish");
   SOMICAGE_ASSERT(W.main.rows() == C.mainColumns && W.main.cols() == W.outputs - W.mainOffset, "W_main shape");
   SOMICAGE_ASSERT(W.tail.rows() == C.columns() - C.mainColumns, "W_tail shape");
-  if (C.isFloat())
+  if (C.isSparse()) {
+    if (C.isFloat())
+      dim == 3 ? evaluateSparse<float, 3>(C, C.floats, W, threads, out)
+               : evaluateSparse<float, 2>(C, C.floats, W, threads, out);
+    else
+      dim == 3 ? evaluateSparse<double, 3>(C, C.doubles, W, threads, out)
+               : evaluateSparse<double, 2>(C, C.doubles, W, threads, out);
+  } else if (C.isFloat())
     evaluateScalar(C.floats, C.mainColumns, W, dim, threads, out);
   else
     evaluateScalar(C.doubles, C.mainColumns, W, dim, threads, out);

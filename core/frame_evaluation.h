@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "frame_finish.h"
@@ -41,21 +42,37 @@ struct ExteriorBlend {
 // The coordinate matrix C, stored in double or in float (exactly one of the two is non-empty). Float halves the
 // memory and the bytes read per frame at ~1e-7 relative error per entry: the editor's choice; the command line
 // keeps double.
+// Dense (entryColumns empty): doubles/floats are C. Sparse rows (a layout with rowEntries > 0, coordinate_layout.h):
+// doubles/floats hold rowEntries values per row and entryColumns their columns in C, i.e.
+//   C(r, entryColumns(r, k)) += values(r, k)        (unused entries: value 0, any valid column)
+// Every evaluator reads both forms (evaluateFrame here, the OpenGL and CUDA kernels), so a method picks its form
+// by its layout alone.
 struct FrameCoordinates {
   CoordinateMatrix<double> doubles;
   CoordinateMatrix<float> floats;
   int mainColumns = 0;                        // K_main: the remaining columns are the tail
   std::vector<ExteriorBlend> exteriorBlends;  // #E, by ascending point; their rows follow the #P point rows
+  CoordinateMatrix<std::int32_t> entryColumns;  // sparse rows: #P + 2 #E by rowEntries; empty: dense
+  int sparseColumns = 0;                        // sparse rows: C's columns (K_main + K_tail)
 
   bool isFloat() const { return floats.size() > 0 || doubles.size() == 0; }
+  bool isSparse() const { return entryColumns.size() > 0; }
   int rows() const { return static_cast<int>(isFloat() ? floats.rows() : doubles.rows()); }  // #P + 2 #E
   int numPoints() const { return rows() - 2 * static_cast<int>(exteriorBlends.size()); }     // #P
-  int columns() const { return static_cast<int>(isFloat() ? floats.cols() : doubles.cols()); }
-  std::size_t bytes() const { return isFloat() ? floats.size() * sizeof(float) : doubles.size() * sizeof(double); }
+  // Numbers stored per row: C's columns, or the entries of a sparse row.
+  int storedColumns() const { return static_cast<int>(isFloat() ? floats.cols() : doubles.cols()); }
+  int columns() const { return isSparse() ? sparseColumns : storedColumns(); }  // C's columns
+  std::size_t bytes() const {
+    return (isFloat() ? floats.size() * sizeof(float) : doubles.size() * sizeof(double)) +
+           static_cast<std::size_t>(entryColumns.size()) * sizeof(std::int32_t);
+  }
 };
 
 // C in the requested storage (the double matrix is moved, or converted to float).
 FrameCoordinates makeFrameCoordinates(CoordinateMatrix<double> C, int mainColumns, bool floatStorage);
+
+// The dense C of sparse rows (a copy of dense ones), in the same storage: for tests and tools that compare the forms.
+FrameCoordinates denseFrameCoordinates(const FrameCoordinates& C);
 
 struct FrameWeights {
   FrameFinish finish = FrameFinish::Linear;  // the method's (MethodDescriptor::finish)

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <math.h>
+#include <stdint.h>
 
 #include "frame_finish.h"
 #include "portable.h"
@@ -45,6 +46,27 @@ SOMICAGE_HD inline void addFramePartialSums(const Scalar* c, const PortableFrame
 #endif
     for (int o = 0; o < kPortableMaxOutputs; ++o)
       if (o < W.outputs) y[o] += ck * w[o];
+  }
+}
+
+// The same for a sparse row (coordinate_layout.h): its entries lane, lane + lanes, ... of `entries`, entry k being
+// c[k] at column columns[k] of C.
+template <typename Scalar>
+SOMICAGE_HD inline void addSparseFramePartialSums(const Scalar* c, const int32_t* columns, int entries,
+                                                  const PortableFrameWeights& W, int lane, int lanes, double* y) {
+  const int mainOutputs = W.outputs - W.mainOffset;
+  for (int k = lane; k < entries; k += lanes) {
+    const double ck = static_cast<double>(c[k]);
+    const int column = columns[k];
+    const bool main = column < W.mainColumns;
+    const double* w = main ? W.main + static_cast<long>(column) * mainOutputs
+                           : W.tail + static_cast<long>(column - W.mainColumns) * W.outputs;
+    const int first = main ? W.mainOffset : 0;  // W_main feeds the outputs from mainOffset on
+#ifdef __CUDA_ARCH__
+#pragma unroll
+#endif
+    for (int o = 0; o < kPortableMaxOutputs; ++o)
+      if (o >= first && o < W.outputs) y[o] += ck * w[o - first];
   }
 }
 

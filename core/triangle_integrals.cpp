@@ -8,6 +8,7 @@
 
 #include "cage.h"
 #include "cpu_dispatch.h"
+#include "simd_math.h"
 
 namespace somicage {
 
@@ -120,5 +121,12 @@ SOMICAGE_DISPATCH void integrateTriangle(const TriangleFrame& f, const dual::Dua
                                          PortableTriangleIntegralsOf<dual::Dual<3>>& out) {
   integrateTrianglePortable(f.kernel, x, out);
 }
+
+#if SOMICAGE_SIMD_PACKS
+SOMICAGE_DISPATCH void integrateTriangle(const TriangleFrame& f, const dual::Dual<3, simd::Pack> x[3],
+                                         PortableTriangleIntegralsOf<dual::Dual<3, simd::Pack>>& out) {
+  integrateTrianglePortable(f.kernel, x, out);
+}
+#endif
 
 }  // namespace somicage

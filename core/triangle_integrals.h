@@ -9,6 +9,7 @@
 #include <Eigen/Core>
 
 #include "dual_number.h"
+#include "simd_pack.h"
 #include "triangle_integrals_kernel.h"
 
 namespace somicage {
@@ -59,6 +60,11 @@ void integrateTriangle(const TriangleFrame& frame, const Eigen::Vector3d& x, Tri
 // (coordinate_gradients.h). A function of its own, not the template, so that it is dispatched (cpu_dispatch.h).
 void integrateTriangle(const TriangleFrame& frame, const dual::Dual<3> x[3],
                        PortableTriangleIntegralsOf<dual::Dual<3>>& out);
+#if SOMICAGE_SIMD_PACKS
+// The same for simd::kLanes points at once (dual numbers of packs; Green's and BEM's gradients).
+void integrateTriangle(const TriangleFrame& frame, const dual::Dual<3, simd::Pack> x[3],
+                       PortableTriangleIntegralsOf<dual::Dual<3, simd::Pack>>& out);
+#endif
 
 // The limit of integrateTriangle as x tends to the point `onFace` of the face (strictly inside it; it is projected
 // onto the face's plane) from the inside of the cage, h -> 0-: the closed form with h = -0 (exact, no quadrature).

@@ -20,6 +20,9 @@ namespace somicage {
 struct VolumeMesh {
   Eigen::MatrixXd vertices;   // #N by d; rows 0 .. #V - 1 are the cage's
   Eigen::MatrixXi simplices;  // #S by d + 1, 0-based; positively oriented after checkVolumeMesh
+  // A generated mesh that is not the one asked for: why, in one sentence for the user (cage_tetrahedralization.h:
+  // Mesh_3 fell back to TetGen); prepareVolumeMesh (engine.h) turns it into a Warning notice. Empty otherwise.
+  std::string fallback;
 
   int dim() const { return static_cast<int>(vertices.cols()); }
   int numVertices() const { return static_cast<int>(vertices.rows()); }

@@ -96,6 +96,13 @@ py::dict methodInfo(Method method) {
   info["display_name"] = method->displayName;
   info["description"] = method->description;
   info["parameters"] = parameters;
+  std::vector<std::string> options;  // its own precompute options as Deformer keywords: "tets", "tet_level"
+  for (const MethodOptionSpec& option : method->options) {
+    std::string keyword = option.key;
+    std::replace(keyword.begin(), keyword.end(), '-', '_');
+    options.push_back(keyword);
+  }
+  info["options"] = options;
   return info;
 }
 
@@ -173,14 +180,17 @@ void defineDeformer(py::module_& module) {
   py::class_<PythonDeformer>(module, "Deformer",
                              "Precomputed coordinates of points in a rest cage (GIL released, progress, cancel).")
       .def(py::init<const PythonCage&, const ArrayArgument&, const std::string&, int, bool, const ProgressArgument&,
-                    const std::string&>(),
+                    const std::string&, std::optional<int>>(),
            py::arg("cage"), py::arg("points"), py::arg("method") = "somigliana", py::kw_only(), py::arg("threads") = 0,
            py::arg("float_storage") = false, py::arg("progress") = py::none(), py::arg("tets") = "",
+           py::arg("tet_level") = py::none(),
            "points (P, d) (a 2D cage also takes (P, 3) and uses x, y); method: one of somicage.methods(); "
            "threads: 0 = all cores, for the precompute and every deform; float_storage: store the coordinates in "
            "float (half the memory, ~1e-7 relative error); progress(fraction) -> False cancels (somicage.Cancelled); "
            "Ctrl-C raises KeyboardInterrupt; tets: a MEDIT .mesh tetrahedral mesh of the cage for method='phong' "
-           "(default: the cage coned from its centroid, when it is star-shaped from it).")
+           "(default: the cage coned from its centroid, when it is star-shaped from it, else tetrahedralized); "
+           "tet_level: 0 (TetGen, about the cage's vertices) to 4 (CGAL Mesh_3, finer), the tetrahedralization's "
+           "detail for method='phong' (the CLI's --tet-level; default 1 where the cage is not star-shaped).")
       .def(
           "deform",
           [](const PythonDeformer& deformer, const ArrayArgument& posed, double nu, double gamma,
@@ -259,8 +269,9 @@ PYBIND11_MODULE(_somicage, module) {
         for (Method method : allMethods()) info.append(methodInfo(method));
         return info;
       },
-      "One dict per method, in the order of methods(): name, display_name, description and parameters (the "
-      "keyword arguments of Deformer.deform it reads; it ignores the others).");
+      "One dict per method, in the order of methods(): name, display_name, description, parameters (the "
+      "keyword arguments of Deformer.deform it reads; it ignores the others) and options (the keyword arguments "
+      "of Deformer it reads: phong's tets and tet_level).");
   module.def("choice_info", &choiceInfo,
              "One dict per keyword of Deformer.deform that takes a name (bulging, normals): name, description and "
              "values, a list of (name, description) with the default first.");

@@ -1,5 +1,8 @@
 #include "python_deformer.h"
 
+#include <algorithm>
+
+#include "cage_tetrahedralization.h"
 #include "deform_choices.h"
 #include "engine.h"
 #include "errors.h"
@@ -38,6 +41,14 @@ DeformParams deformParams(const PythonDeformOptions& options) {
   return params;
 }
 
+// A method option as the engine names it ("--tet-level", the command line's) as Deformer's keyword ("tet_level").
+std::string keywordOf(const std::string& source) {
+  if (source.rfind("--", 0) != 0) return source;
+  std::string keyword = source.substr(2);
+  std::replace(keyword.begin(), keyword.end(), '-', '_');
+  return keyword;
+}
+
 // A number of analyze --json; None where the command prints null: the volumes of an open mesh.
 py::object numberOrNone(bool defined, double value) { return defined ? py::object(py::float_(value)) : py::none(); }
 
@@ -57,7 +68,8 @@ Eigen::MatrixXd inCageDimension(Eigen::MatrixXd matrix, int dim, const std::stri
 }  // namespace
 
 PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method,
-                               int threads, bool floatStorage, const ProgressArgument& progress, const std::string& tets)
+                               int threads, bool floatStorage, const ProgressArgument& progress, const std::string& tets,
+                               std::optional<int> tetLevel)
     : restCage_(cage.cage) {
   const Method chosen = methodArgument(method);
   const int dim = restCage_.dim();
@@ -70,13 +82,15 @@ PythonDeformer::PythonDeformer(const PythonCage& cage, const ArrayArgument& poin
   options.integration.threads = threads;
   options.floatStorage = floatStorage;
   if (!tets.empty()) options.methodOptions["tets"] = tets;
+  if (tetLevel) options.methodOptions["tet-level"] = std::to_string(*tetLevel);
+  options.volumeMesher = tetrahedralizeCageWithOptions;
   points_ =
       meshPointsFor(restCage_, restPoints, "points", cage.source, [](const Notice& n) { warn(describeNotice(n)); });
 
   try {
     prepareVolumeMesh(chosen, restCage_, options, [](const Notice& n) { warn(describeNotice(n)); });
   } catch (const InputError& e) {  // the keyword, not the command line's option
-    throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+    throw InputError(keywordOf(e.source()), e.line(), e.problem(), e.hint());
   }
   options_ = options;
   PythonProgress bridge(progress);
@@ -126,7 +140,7 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
       try {
         seamJumps = prepareSeamJumps(*deformer_, restCage_, points_, faces, options_, "faces", bridge.callback());
       } catch (const InputError& e) {  // the keyword, not the command line's option
-        throw InputError(e.source() == "--tets" ? "tets" : e.source(), e.line(), e.problem(), e.hint());
+        throw InputError(keywordOf(e.source()), e.line(), e.problem(), e.hint());
       }
     }
     a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces",

@@ -36,9 +36,11 @@ class PythonDeformer {
  public:
   // points: (#P, d), or (#P, 3) for a 2D cage (x, y are used, as by `somicage deform`).
   // tets: a MEDIT volume mesh of the cage for a method that needs one (Phong's option "tets"); empty: the
-  // cage's star when it is star-shaped from its centroid (the module does not link CGAL's tetrahedralization).
+  // cage's star when it is star-shaped from its centroid and no tetLevel is given, else the cage tetrahedralized at
+  // tetLevel (Phong's option "tet-level", cage_tetrahedralization.h; default kDefaultTetLevel), as the CLI does.
   PythonDeformer(const PythonCage& cage, const ArrayArgument& points, const std::string& method, int threads,
-                 bool floatStorage, const ProgressArgument& progress, const std::string& tets = "");
+                 bool floatStorage, const ProgressArgument& progress, const std::string& tets = "",
+                 std::optional<int> tetLevel = std::nullopt);
 
   // posed: the cage's vertices moved, (#V, d) (or (#V, 3) for a 2D cage). Returns (#P, d).
   Eigen::MatrixXd deform(const ArrayArgument& posed, const PythonDeformOptions& options) const;

@@ -60,6 +60,7 @@ struct GpuDeformer::Impl {
   const CageDeformer* deformer = nullptr;
   int numPoints = 0, dim = 0, mainColumns = 0, tailColumns = 0;
   int numBlends = 0;  // exterior points #E: C has #P + 2 #E rows (core/frame_evaluation.h)
+  int rowEntries = 0;  // C in sparse rows (core/coordinate_layout.h): the entries per row; 0: dense
 
   // Row chunks of C, each small enough for one storage block binding (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and
   // starting at an offset the driver accepts (GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT).
@@ -69,9 +70,10 @@ struct GpuDeformer::Impl {
   std::vector<Chunk> chunks;
 
   GlBuffer coordinates, weights, faceNormals, adjacencyOffsets, adjacencyFaces;
+  GlBuffer entryColumns;  // sparse rows: each stored entry's column of C, laid out as `coordinates`
   GlBuffer blends, extraRows;  // the exterior blends (point, weight) and their proxy and anchor rows (2 #E by 3)
   std::vector<float> weightStaging;
-  std::map<std::tuple<int, int, int>, GlComputeProgram> kernels;  // (dim, outputs, mainOffset)
+  std::map<std::tuple<int, int, int, bool>, GlComputeProgram> kernels;  // (dim, outputs, mainOffset, sparse)
   std::unique_ptr<GlComputeProgram> facePass, vertexPass, blendPass;
 
   // The triangles the adjacency was built for (compared every frame: cheap next to the frame itself).
@@ -86,16 +88,17 @@ struct GpuDeformer::Impl {
   double lastGpuMs = std::numeric_limits<double>::quiet_NaN();
 
   // The shader's FINISH is the frame's (core/frame_finish.h); OUTPUTS follows from it.
-  const GlComputeProgram& kernel(int d, FrameFinish finish, int mainOffset) {
+  const GlComputeProgram& kernel(int d, FrameFinish finish, int mainOffset, bool sparse) {
     const int outputs = frameOutputs(finish, d);
-    const auto key = std::make_tuple(d, outputs, mainOffset);
+    const auto key = std::make_tuple(d, outputs, mainOffset, sparse);
     auto it = kernels.find(key);
     if (it != kernels.end()) return it->second;
     const std::string defines = "#define DIM " + std::to_string(d) + "\n#define OUTPUTS " + std::to_string(outputs) +
                                 "\n#define FINISH " + std::to_string(static_cast<int>(finish)) +
                                 "\n#define MAIN_OFFSET " + std::to_string(mainOffset) + "\n#define ROW_THREADS " +
                                 std::to_string(layout.rowThreads) + "\n#define GROUP_POINTS " +
-                                std::to_string(layout.groupPoints) + "\n";
+                                std::to_string(layout.groupPoints) + "\n#define SPARSE " + (sparse ? "1" : "0") +
+                                "\n";
     return kernels.try_emplace(key, "deform_frame.comp.glsl", defines).first->second;
   }
 
@@ -218,10 +221,12 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
   Impl& m = *impl_;
   m.deformer = nullptr;
   const FrameCoordinates& C = deformer.frameCoordinates();
-  const int rows = C.rows(), columns = C.columns();
+  // A sparse C (core/coordinate_layout.h) is stored as its entries per row, their columns in a second buffer of the
+  // same layout: the chunks below fit both.
+  const int rows = C.rows(), columns = C.columns(), stored = C.storedColumns();
 
   // ---- chunks that fit one storage block binding each ----
-  const std::size_t rowBytes = sizeof(float) * static_cast<std::size_t>(std::max(columns, 1));
+  const std::size_t rowBytes = sizeof(float) * static_cast<std::size_t>(std::max(stored, 1));
   const std::size_t maxBlock = static_cast<std::size_t>(glInteger64(GL_MAX_SHADER_STORAGE_BLOCK_SIZE));
   GLint alignment = 1;
   glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &alignment);
@@ -239,7 +244,7 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
         {static_cast<int>(first), static_cast<int>(std::min(chunkRows, static_cast<std::size_t>(rows) - first))});
 
   // ---- C in float, once ----
-  const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
+  const std::size_t bytes = sizeof(float) * static_cast<std::size_t>(rows) * static_cast<std::size_t>(stored);
   for (int i = 0; i < 16 && glGetError() != GL_NO_ERROR; ++i) {
   }  // stale errors of earlier calls are not this upload's
   if (C.isFloat()) {
@@ -247,7 +252,7 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
   } else {
     // Convert in slices of rows, so the float copy never doubles the host memory.
     m.coordinates.upload(GL_SHADER_STORAGE_BUFFER, nullptr, bytes, GL_STATIC_DRAW);
-    const int sliceRows = std::max(1, (1 << 22) / std::max(columns, 1));
+    const int sliceRows = std::max(1, (1 << 22) / std::max(stored, 1));
     CoordinateMatrix<float> slice;
     for (int first = 0; first < rows; first += sliceRows) {
       const int count = std::min(sliceRows, rows - first);
@@ -256,6 +261,11 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
                       static_cast<GLsizeiptr>(sizeof(float) * static_cast<std::size_t>(slice.size())), slice.data());
     }
   }
+  static_assert(sizeof(std::int32_t) == sizeof(float), "an entry's column takes the bytes of its value");
+  if (C.isSparse())  // non-negative int32 columns read as the shader's uint
+    m.entryColumns.upload(GL_SHADER_STORAGE_BUFFER, C.entryColumns.data(), bytes, GL_STATIC_DRAW);
+  else
+    m.entryColumns = GlBuffer();
   // ---- the exterior blends, and room for their rows (never a 0-byte buffer) ----
   struct GpuBlend {
     GLuint point;
@@ -272,6 +282,7 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
   m.dim = deformer.dim();
   m.mainColumns = C.mainColumns;
   m.tailColumns = columns - C.mainColumns;
+  m.rowEntries = C.isSparse() ? stored : 0;
   m.deformer = &deformer;
 }
 
@@ -311,10 +322,11 @@ void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chron
                    GL_STREAM_DRAW);
 
   // ---- pass 1: positions ----
-  const GlComputeProgram& kernel = m.kernel(d, W.finish, W.mainOffset);
+  const GlComputeProgram& kernel = m.kernel(d, W.finish, W.mainOffset, m.rowEntries > 0);
   kernel.use();
   glUniform1ui(kernel.uniform("uMainColumns"), static_cast<GLuint>(m.mainColumns));
   glUniform1ui(kernel.uniform("uTailColumns"), static_cast<GLuint>(m.tailColumns));
+  if (m.rowEntries > 0) glUniform1ui(kernel.uniform("uRowEntries"), static_cast<GLuint>(m.rowEntries));
   glUniform1ui(kernel.uniform("uMeshPoints"), static_cast<GLuint>(m.numPoints));
   float origin[3] = {0, 0, 0};
   for (int a = 0; a < d && a < W.origin.size(); ++a) origin[a] = static_cast<float>(W.origin(a));
@@ -322,12 +334,14 @@ void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chron
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, m.weights.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, out.positions);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, m.extraRows.id());
-  const std::size_t rowBytes = sizeof(float) * static_cast<std::size_t>(m.mainColumns + m.tailColumns);
+  const std::size_t rowBytes =
+      sizeof(float) * static_cast<std::size_t>(m.rowEntries > 0 ? m.rowEntries : m.mainColumns + m.tailColumns);
   for (const Impl::Chunk& chunk : m.chunks) {
     if (rowBytes > 0) {
-      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, m.coordinates.id(),
-                        static_cast<GLintptr>(rowBytes * static_cast<std::size_t>(chunk.first)),
-                        static_cast<GLsizeiptr>(rowBytes * static_cast<std::size_t>(chunk.count)));
+      const auto offset = static_cast<GLintptr>(rowBytes * static_cast<std::size_t>(chunk.first));
+      const auto size = static_cast<GLsizeiptr>(rowBytes * static_cast<std::size_t>(chunk.count));
+      glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, m.coordinates.id(), offset, size);
+      if (m.rowEntries > 0) glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 4, m.entryColumns.id(), offset, size);
     }
     glUniform1ui(kernel.uniform("uFirstPoint"), static_cast<GLuint>(chunk.first));
     glUniform1ui(kernel.uniform("uNumPoints"), static_cast<GLuint>(chunk.count));
@@ -372,7 +386,7 @@ void GpuDeformer::submit(const FrameWeights& W, MeshRenderer& target, std::chron
 
   // The draw reads both as vertex attributes; readBack() reads them with glGetBufferSubData.
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  for (GLuint binding = 0; binding < 4; ++binding) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  for (GLuint binding = 0; binding < 5; ++binding) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
   glUseProgram(0);
   if (timed) {
     glEndQuery(GL_TIME_ELAPSED);

@@ -9,7 +9,8 @@
 //   DIM (2 or 3), FINISH (core/frame_finish.h: 0 Linear, 1 SolveT), OUTPUTS (DIM or DIM*DIM+DIM, FINISH's),
 //   MAIN_OFFSET (first output that W_main feeds),
 //   ROW_THREADS (invocations sharing one point: they read its row of C side by side, coalesced, and reduce in
-//   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group).
+//   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group), SPARSE (1: C is stored as
+//   sparse rows of uRowEntries (value, column) pairs, core/coordinate_layout.h; 0: dense rows).
 // Rows from uMeshPoints on are the exterior points' proxy and anchor rows (core/frame_evaluation.h): they go to
 // the Extra buffer, which shaders/exterior_blend.comp.glsl then folds into the positions.
 // Storage is float throughout (C converted once at upload, W every frame): the error budget is in
@@ -21,6 +22,11 @@ layout(local_size_x = ROW_THREADS, local_size_y = GROUP_POINTS) in;
 
 // The rows [uFirstPoint, uFirstPoint + uNumPoints) of C (#P by uMainColumns + uTailColumns, row-major).
 layout(std430, binding = 0) readonly buffer Coordinates { float C[]; };
+// SPARSE: these rows hold uRowEntries values each, and EntryColumns their columns of C in the same places.
+#if SPARSE
+layout(std430, binding = 4) readonly buffer EntryColumns { uint entryColumns[]; };
+uniform uint uRowEntries;
+#endif
 // W_main (uMainColumns by MAIN_OUTPUTS, row-major), then W_tail (uTailColumns by OUTPUTS, row-major).
 layout(std430, binding = 1) readonly buffer Weights { float W[]; };
 // The mesh renderer's vertex buffer: #P by 3 floats (z = 0 in 2D).
@@ -81,6 +87,22 @@ void main() {
 
   float y[OUTPUTS];
   for (int j = 0; j < OUTPUTS; ++j) y[j] = 0.0;
+#if SPARSE
+  if (inRange) {
+    const uint row = point * uRowEntries;
+    for (uint k = lane; k < uRowEntries; k += uint(ROW_THREADS)) {
+      const float c = C[row + k];
+      const uint column = entryColumns[row + k];
+      if (column < uMainColumns) {
+        const uint w = column * uint(MAIN_OUTPUTS);
+        for (int j = 0; j < MAIN_OUTPUTS; ++j) y[MAIN_OFFSET + j] += c * W[w + uint(j)];
+      } else {
+        const uint w = uMainColumns * uint(MAIN_OUTPUTS) + (column - uMainColumns) * uint(OUTPUTS);
+        for (int j = 0; j < OUTPUTS; ++j) y[j] += c * W[w + uint(j)];
+      }
+    }
+  }
+#else
   if (inRange) {
     const uint row = point * (uMainColumns + uTailColumns);
     for (uint k = lane; k < uMainColumns; k += uint(ROW_THREADS)) {
@@ -95,6 +117,7 @@ void main() {
       for (int j = 0; j < OUTPUTS; ++j) y[j] += c * W[w + uint(j)];
     }
   }
+#endif
 
 #if ROW_THREADS > 1
   // Tree reduction over the lanes of each point (every invocation reaches every barrier).

@@ -283,7 +283,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const double bemFactorMs = median(factorTimes);
   // Every other registered method's frame (deform_ms.cpu_NAME), at the same nu where it reads one. A method on a
   // volume mesh (Phong) also times the factorisation of its Steiner vertices' elastic system (NAME_factor_ms),
-  // once per cage and nu like the BEM's.
+  // once per cage and nu like the BEM's, and reports the bytes of its C (NAME_coord_bytes).
   deformer.reset();
   std::vector<std::pair<std::string, double>> volumeFactorMs;
   for (Method method : allMethods()) {
@@ -311,6 +311,9 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     DeformParams params;
     params.nu = 0.3;
     deformMs.emplace_back("cpu_" + methodName(method), timeFrames(*other, posed, params, frames, false));
+    if (method->needsVolumeMesh)  // its C, stored as sparse rows (coordinate_layout.h)
+      volumeFactorMs.emplace_back(methodName(method) + "_coord_bytes",
+                                  static_cast<double>(other->frameCoordinates().bytes()));
   }
 
   if (json) {

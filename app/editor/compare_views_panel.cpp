@@ -5,7 +5,8 @@
 #include <cmath>
 #include <optional>
 
-#include "panels.h"  // tooltip
+#include "panels.h"           // tooltip
+#include "parameter_panel.h"  // sliderSpan
 
 namespace somicage::editor {
 
@@ -51,7 +52,9 @@ void drawCompareViews(AppState& state) {
       float nu = static_cast<float>(*ownNu);
       ImGui::Indent();
       ImGui::SetNextItemWidth(ImGui::GetContentRegionAvail().x - ImGui::CalcTextSize("nu ").x);
-      if (ImGui::SliderFloat("nu", &nu, -0.99f, 0.49f, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
+      float lo = 0, hi = 0;
+      sliderSpan(*findParameter("nu"), lo, hi);  // the table's range, as the panel's slider
+      if (ImGui::SliderFloat("nu", &nu, lo, hi, "%.3f", ImGuiSliderFlags_AlwaysClamp)) {
         view.own["nu"] = nu;
         changed = true;
       }

@@ -7,8 +7,15 @@ namespace somicage::editor {
 
 namespace {
 
-// GLFW's printable keys: GLFW_KEY_SPACE (32) to GLFW_KEY_WORLD_2 (162).
-bool printable(const InputEvent& e) { return e.type == InputEvent::Type::Key && e.code >= 32 && e.code <= 162; }
+// GLFW_MOD_CONTROL, GLFW_MOD_ALT and GLFW_MOD_SUPER: a printable key held with one is a shortcut, not text.
+constexpr int kShortcutMods = 0x0002 | 0x0004 | 0x0008;
+
+// GLFW's printable keys (GLFW_KEY_SPACE (32) to GLFW_KEY_WORLD_2 (162)) typed as text, without Ctrl, Alt or Super.
+// Ctrl+A in a text field is a key state ImGui reads (select all): it must get its own frames like any chord, or its
+// press and release cancel out (issue 24, row 6: Ctrl+A after clicking into a path field did not select).
+bool printable(const InputEvent& e) {
+  return e.type == InputEvent::Type::Key && e.code >= 32 && e.code <= 162 && (e.mods & kShortcutMods) == 0;
+}
 
 }  // namespace
 

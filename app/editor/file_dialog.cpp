@@ -124,6 +124,23 @@ FileKind purposeKind(FileDialogPurpose purpose) { return info(purpose).kind; }
 bool purposeWrites(FileDialogPurpose purpose) { return info(purpose).writes; }
 const char* purposeTitle(FileDialogPurpose purpose) { return info(purpose).title; }
 
+std::string defaultWriteFolder(const AppState& state) {
+  std::vector<std::string> candidates;
+  if (!state.document.path.empty()) {
+    std::error_code ec;
+    candidates.push_back(fs::absolute(state.document.path, ec).lexically_normal().parent_path().string());
+  }
+  candidates.push_back(currentFolder());
+  if (const char* home = std::getenv("HOME")) candidates.emplace_back(home);
+  return firstWritableFolder(candidates);
+}
+
+std::string writePath(const AppState& state, const std::string& path) {
+  if (path.empty() || fs::path(path).is_absolute()) return path;
+  const std::string folder = defaultWriteFolder(state);
+  return ((folder.empty() ? fs::path(currentFolder()) : fs::path(folder)) / path).lexically_normal().string();
+}
+
 void openFileDialog(AppState& state, FileDialogPurpose purpose) {
   FileDialogState& d = state.files.dialog;
   d.purpose = purpose;
@@ -133,8 +150,14 @@ void openFileDialog(AppState& state, FileDialogPurpose purpose) {
   d.recentChoice.reset();
   const FileKind kind = purpose == FileDialogPurpose::OpenScene ? d.sceneField : purposeKind(purpose);
   const FilePlace& p = place(d, kind);
-  // The kind's own last folder; a kind not used yet starts where the last file went.
-  d.folder = !p.folder.empty() ? p.folder : !d.recentFolders.empty() ? d.recentFolders.front() : currentFolder();
+  if (purposeWrites(purpose)) {
+    // The kind's own last folder while it can be written to, else the session's, working or home folder.
+    d.folder = folderWritable(p.folder) ? p.folder : defaultWriteFolder(state);
+    if (d.folder.empty()) d.folder = currentFolder();  // nothing writable: OK will say why
+  } else {
+    // The kind's own last folder; a kind not used yet starts where the last file went.
+    d.folder = !p.folder.empty() ? p.folder : !d.recentFolders.empty() ? d.recentFolders.front() : currentFolder();
+  }
   if (purpose == FileDialogPurpose::Screenshot) {
     d.name = defaultScreenshotName();
   } else if (purposeWrites(purpose)) {

@@ -41,7 +41,15 @@ struct FileDialogState {
   std::string confirmPath;                       // the path the overwrite question is about
 };
 
-// Opens a dialog in its kind's last folder with its last (or default) name.
+// Where a file the editor writes goes by default: the session's folder, else the working folder, else the home
+// folder, the first of them that is writable (a scene opened from a read-only models folder must not send Save
+// and Export there); "" when none is.
+std::string defaultWriteFolder(const AppState& state);
+// A path typed for writing, made whole: a relative one lies in defaultWriteFolder (the dialogs show full paths).
+std::string writePath(const AppState& state, const std::string& path);
+
+// Opens a dialog in its kind's last folder with its last (or default) name. A dialog that writes starts in its
+// kind's last folder only while that is writable, else in defaultWriteFolder.
 void openFileDialog(AppState& state, FileDialogPurpose purpose);
 // The path OK acts on: `name` when it is absolute (a typed path), else folder / name.
 std::string dialogPath(const FileDialogState& dialog, const std::string& name);

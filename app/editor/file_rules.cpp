@@ -5,6 +5,8 @@
 #include <fstream>
 #include <system_error>
 
+#include <unistd.h>  // access
+
 #include "drop.h"
 
 namespace somicage::editor {
@@ -162,6 +164,17 @@ std::vector<FolderEntry> listFolder(const std::string& folder, const std::string
   std::sort(files.begin(), files.end(), byName);
   folders.insert(folders.end(), files.begin(), files.end());
   return folders;
+}
+
+bool folderWritable(const std::string& folder) {
+  std::error_code ec;
+  return !folder.empty() && fs::is_directory(folder, ec) && ::access(folder.c_str(), W_OK) == 0;
+}
+
+std::string firstWritableFolder(const std::vector<std::string>& candidates) {
+  for (const std::string& folder : candidates)
+    if (folderWritable(folder)) return folder;
+  return "";
 }
 
 void noteFolder(std::vector<std::string>& folders, const std::string& folder, std::size_t limit) {

@@ -51,6 +51,12 @@ struct FolderEntry {
 };
 std::vector<FolderEntry> listFolder(const std::string& folder, const std::string& extension, std::string& error);
 
+// Whether files can be created in `folder` (an existing folder this process may write: not the read-only models
+// folder, not a read-only file system).
+bool folderWritable(const std::string& folder);
+// The first of `candidates` that is writable ("" when none is).
+std::string firstWritableFolder(const std::vector<std::string>& candidates);
+
 // Remembers a folder at the front of a most-recent-first list of at most `limit` entries.
 void noteFolder(std::vector<std::string>& folders, const std::string& folder, std::size_t limit = 8);
 

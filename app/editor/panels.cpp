@@ -14,6 +14,7 @@
 
 #include "compare_views_panel.h"
 #include "fig8_demo.h"
+#include "parameter_panel.h"
 #include "quantity_overlay.h"
 #include "screenshot.h"
 #include "shortcuts.h"
@@ -32,50 +33,6 @@ void sectionHeader(const char* title) {
 
 void openDemo(AppState& state, int dim) {
   guardUnsaved(state, dim == 2 ? "open the 2D demo" : "open the 3D demo", [dim](AppState& s) { requestDemo(s, dim); });
-}
-
-// gamma's tooltip names the bulging convention in use (deform_choices.h).
-std::string gammaTooltip(Bulging bulging) {
-  switch (bulging) {
-    case Bulging::Reference:
-      return "Bulging scale gamma >= 0, the authors' code's convention (bulging: reference):\n"
-             "eta_j = lambda_j exp(gamma^2 dOmega_j / 4 pi), dOmega_j the change of the unsigned solid angle of\n"
-             "the face's vertex normals (2D: signed angle / 2 pi). gamma here = gamma in the paper's figures. 0: none.";
-    case Bulging::SweptVolume:
-      return "Bulging scale gamma >= 0, swept volume (bulging: swept-volume): eta_j = lambda_j exp(gamma^2 V_j / V),\n"
-             "V_j the volume face j swept from the best-fit similarity of its rest place, V that cage's volume.\n"
-             "0: no bulging.";
-    case Bulging::Polygon:
-      return "Bulging scale gamma >= 0, the paper's solid angle per flat polygon (bulging: polygon): as solid-angle,\n"
-             "but coplanar neighbouring faces share one eta from their summed beta, so how a flat face is split into\n"
-             "triangles does not matter (with normals: angle). 0: no bulging.";
-    case Bulging::SolidAngle:
-      break;
-  }
-  return "Bulging scale gamma >= 0 (section 4.4, the paper's text; bulging: solid-angle):\n"
-         "eta_j = lambda_j exp(gamma beta_j / (2^(d-1) pi)), beta_j the change of the face's signed solid angle\n"
-         "of vertex normals. The paper's figures used gamma^2 (bulging: reference). 0: no bulging.";
-}
-
-// A combo box for a choice parameter; true when the user picked another value.
-bool choiceCombo(const ChoiceParameter& choice, DeformParams& p) {
-  const int current = choice.get(p);
-  bool changed = false;
-  if (ImGui::BeginCombo(choice.name, choice.values[static_cast<std::size_t>(current)].name)) {
-    for (int k = 0; k < static_cast<int>(choice.values.size()); ++k) {
-      const ChoiceValue& value = choice.values[static_cast<std::size_t>(k)];
-      if (ImGui::Selectable(value.name, k == current) && k != current) {
-        choice.set(p, k);
-        changed = true;
-      }
-      tooltip(value.description);
-    }
-    ImGui::EndCombo();
-  }
-  std::string help = std::string(choice.description) + ":";
-  for (const ChoiceValue& value : choice.values) help += "\n  " + std::string(value.name) + ": " + value.description;
-  tooltip(help.c_str());
-  return changed;
 }
 
 }  // namespace
@@ -270,83 +227,11 @@ void drawControlPanel(AppState& state) {
       "its own nu or the panel's. A view setting: not an edit, not undone.");
   if (state.view.compare) drawCompareViews(state);
 
-  sectionHeader("Somigliana parameters");
-  // Greyed out (kept in place) when no shown view uses them: Green and MVC have no parameters.
+  sectionHeader("Parameters");
+  // One widget per row of the parameter table (parameter_panel.h); a row no shown view reads is greyed out.
   bool parametersUsed = false;
   for (const DeformerKey& key : state.deformerKeys()) parametersUsed |= key.method->parameters != 0;
-  if (!parametersUsed) ImGui::BeginDisabled();
-  DeformParams p = state.document.params;
-  std::string changed;  // the committed step's name, for edits that are complete at once
-  const std::string variant = variantName(p);
-  const char* variantTooltips[] = {
-      "Global variant: one similarity (R, s) fitted to the whole cage (Umeyama); R_j = R, lambda_j = s.",
-      "Local variant: each face's own polar rotation R_j and stretch lambda_j (Eqs. 12-14).",
-      "Affine variant: the global variant with the best-fit affine map A = R S instead of the similarity;\n"
-      "tractions R sigma(S) n_j, sigma(S) = 2S + lambda tr(S) I. Any affine pose moves the mesh exactly by it.",
-      "Stable variant: the local variant without the fold-overs it makes at high nu (docs/engine.md)."};
-  for (std::size_t k = 0; k < variantChoices().size(); ++k) {
-    const VariantChoice& v = variantChoices()[k];
-    if (k > 0) ImGui::SameLine();
-    if (ImGui::RadioButton(v.name, variant == v.name)) {
-      p.kind = static_cast<VariantKind>(v.kind);
-      p.blend = v.blend;
-      changed = std::string(v.name) + " variant";
-    }
-    tooltip(k < 4 ? variantTooltips[k] : v.description);
-  }
-  if (p.kind != VariantKind::Blend) ImGui::BeginDisabled();
-  float blend = static_cast<float>(p.blend);
-  if (ImGui::SliderFloat("blend", &blend, 0.0f, 1.0f, "%.2f", ImGuiSliderFlags_AlwaysClamp)) p.blend = blend;
-  const bool blendDone = ImGui::IsItemDeactivatedAfterEdit();
-  tooltip(
-      "t in [0, 1] between the global (0) and the local (1) variant (Fig. 4):\n"
-      "R_j(t) = R exp(t log(R^T R_j)), lambda_j(t) = t lambda_j + (1 - t) s. Ctrl+click to type a value.");
-  if (p.kind != VariantKind::Blend) ImGui::EndDisabled();
-
-  bool infinite = std::isinf(p.nu);
-  if (ImGui::Checkbox("nu = infinity", &infinite)) {
-    p.nu = infinite ? std::numeric_limits<double>::infinity() : 0.0;
-    changed = "nu";
-  }
-  tooltip(
-      "The limit nu -> infinity: the Laplace layers of Green coordinates plus an antisymmetric part\n"
-      "(in 2D with gamma = 0 exactly Green coordinates, paper section 5).");
-  bool nuDone = false;
-  if (!infinite) {
-    float nu = static_cast<float>(p.nu);
-    // Typed values (Ctrl+click) are clamped too: nu in (-1, 0.5); +-infinity only through the checkbox.
-    const auto nuMin = static_cast<float>(kNuRange.min + 0.01), nuMax = static_cast<float>(kNuRange.max - 0.01);
-    if (ImGui::SliderFloat("nu", &nu, nuMin, nuMax, "%.3f", ImGuiSliderFlags_AlwaysClamp)) p.nu = nu;
-    nuDone = ImGui::IsItemDeactivatedAfterEdit();
-    tooltip(
-        "Poisson ratio nu in (-1, 0.5): how much the volume is kept. It sets the traction scale\n"
-        "s_j = 2[eta_j + nu/(1-2nu) (eta_j + (d-1) lambda_j)] (Eqs. 12-14). Ctrl+click to type a value.");
-  } else {
-    ImGui::TextDisabled("nu = inf (Green-like limit)");
-  }
-  float gamma = static_cast<float>(p.gamma);
-  // The engine's whole range (deform_params.h), as Blender's and Python's: typed values beyond it were refused.
-  if (ImGui::SliderFloat("gamma", &gamma, static_cast<float>(kGammaRange.min), static_cast<float>(kGammaRange.max),
-                         "%.2f", ImGuiSliderFlags_AlwaysClamp))
-    p.gamma = gamma;
-  const bool gammaDone = ImGui::IsItemDeactivatedAfterEdit();
-  tooltip(gammaTooltip(p.bulging).c_str());
-  if (ImGui::Checkbox("traction fix (Eq. 15)", &p.tractionCorrection)) changed = "Traction fix";
-  tooltip(
-      "Traction correction (Eq. 15): s'_j = s_j - lambda . w_j, so that a similarity pose moves the mesh\n"
-      "exactly as a similarity.");
-  for (const ChoiceParameter& choice : choiceParameters())
-    if (choiceCombo(choice, p)) changed = choice.name;
-  if (ImGui::Checkbox("BEM: corotational", &p.corotational)) changed = "Corotational";
-  tooltip(
-      "BEM only: remove the cage's best-fit rotation (Umeyama) before the linear solve and apply it after,\n"
-      "so that large rotations of the cage do not shear the mesh.");
-  if (!parametersUsed) ImGui::EndDisabled();
-  if (p != state.document.params) setParams(state, p);
-  if (!changed.empty()) commitEdit(state, changed);
-  if (blendDone) commitEdit(state, "blend");
-  if (nuDone) commitEdit(state, "nu");
-  if (gammaDone) commitEdit(state, "gamma");
+  drawParameterWidgets(state);
   if (!parametersUsed) ImGui::TextDisabled("(%s ignores these)", state.document.method->displayName);
   drawNuPlot(state);
 

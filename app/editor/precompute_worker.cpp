@@ -15,14 +15,17 @@ namespace {
 // Each deformer's precompute options: the request's with its key's method options, and a volume method's mesh made
 // now (engine.h: prepareVolumeMesh), so that the memory check counts its columns and the precompute uses that mesh.
 // Making it can take seconds (CGAL): Esc cancels it as it does the precompute.
-std::vector<PrecomputeOptions> preparedOptions(const PrecomputeRequest& request, JobContext& context) {
+std::vector<PrecomputeOptions> preparedOptions(const PrecomputeRequest& request, JobContext& context,
+                                               std::vector<std::string>& notices) {
   std::vector<PrecomputeOptions> prepared;
   for (const DeformerKey& key : request.methods) {
     PrecomputeOptions options = request.options;
     options.methodOptions = key.options;
     if (key.method->needsVolumeMesh) context.setStage(std::string(key.method->displayName) + ": tetrahedra");
-    prepareVolumeMesh(key.method, request.scene->restCage, options, ignoreNotices,
-                      [&context](double) { return !context.cancelled(); });
+    prepareVolumeMesh(
+        key.method, request.scene->restCage, options,
+        [&](const Notice& n) { notices.push_back(std::string(key.method->displayName) + ": " + describeNotice(n)); },
+        [&context](double) { return !context.cancelled(); });
     prepared.push_back(std::move(options));
   }
   return prepared;
@@ -61,7 +64,7 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
     out.scene = request.scene;
     loaded(request.scene);
     request.options.threads = context.threads();
-    const std::vector<PrecomputeOptions> prepared = preparedOptions(request, context);
+    const std::vector<PrecomputeOptions> prepared = preparedOptions(request, context, out.notices);
     requireMemoryFor(request, prepared);
     const std::size_t n = request.methods.size();
     for (std::size_t k = 0; k < n; ++k) {

@@ -48,6 +48,8 @@ struct PrecomputeOutcome {
   double seconds = 0.0;  // wall time of the whole request
   bool cancelled = false;
   std::string error;  // non-empty on failure (InputError text, bad_alloc, ...)
+  // What the user should be told about deformers that were built (describeNotice: a Mesh_3 fallback to TetGen).
+  std::vector<std::string> notices;
 };
 
 class PrecomputeWorker {

@@ -210,10 +210,19 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const float w = 220, h = 14;
   const std::string title = std::string(d.name) + (log ? "  (log scale)" : "") + (isFixed ? "  fixed" : "");
   const char* note = d.source == QuantitySource::Jacobian ? "    fold-over (det J <= 0)" : kUndefinedNote;
-  const float boxW = std::max({w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x});
+  // The automatic range leaves out each view's most extreme 2 % (view_quantity.h): say how many take the end colours.
+  const long beyond = verticesBeyond(
+      viewsShowing(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size())), range);
+  char beyondText[64] = "";
+  if (beyond > 0) std::snprintf(beyondText, sizeof beyondText, "%ld vertices beyond the ends", beyond);
+  const float extra = beyond > 0 ? 18.0f : 0.0f;
+  const float boxW = std::max(
+      {w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x, ImGui::CalcTextSize(beyondText).x});
   const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
-  const float y0 = static_cast<float>(view.y + view.height) - 58;
-  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + h + 36), IM_COL32(20, 20, 24, 190), 3.0f);
+  const float y0 = static_cast<float>(view.y + view.height) - 58 - extra;
+  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + h + 36 + extra), IM_COL32(20, 20, 24, 190),
+                      3.0f);
+  if (beyond > 0) draw->AddText(ImVec2(x0, y0 + h + 37), IM_COL32(170, 170, 180, 255), beyondText);
   draw->AddText(ImVec2(x0, y0 - 20), kText, title.c_str());
   const int steps = 64;
   for (int i = 0; i < steps; ++i) {

@@ -174,6 +174,10 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   if (newScene) showLoadedScene(state, outcome.scene);
   const bool completesLoad = state.jobs.load && state.jobs.load->sceneShown;
   for (auto& [m, d] : outcome.deformers) state.model.deformers[m] = d;
+  for (const std::string& notice : outcome.notices) {  // e.g. Phong's tetrahedral mesh is TetGen's, not Mesh_3's
+    state.status.message += (state.status.message.empty() ? "" : "; ") + notice;
+    std::fprintf(stderr, "somicage: %s\n", notice.c_str());
+  }
   state.model.deformDirty = true;
   if (newScene || completesLoad) {  // what only the deformers tell: points outside the cage
     if (const std::optional<std::string> outside = exteriorNotice(*state.model.scene, outcome.deformers)) {

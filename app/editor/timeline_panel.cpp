@@ -8,7 +8,8 @@
 #include <filesystem>
 #include <system_error>
 
-#include "panels.h"  // tooltip
+#include "file_dialog.h"  // writePath
+#include "panels.h"       // tooltip
 #include "pose_keys.h"
 
 namespace somicage::editor {
@@ -163,6 +164,7 @@ void drawAnimationExportDialogs(AppState& state) {
   if (a.exportDialogRequested) {
     ImGui::OpenPopup("Export animation");
     a.exportDialogRequested = false;
+    path = writePath(state, path);  // a full path in a writable folder, not a bare name
   }
   ImGui::SetNextWindowSize(ImVec2(560, 0), ImGuiCond_Appearing);
   if (ImGui::BeginPopupModal("Export animation", nullptr, ImGuiWindowFlags_NoSavedSettings)) {

@@ -87,20 +87,34 @@ ViewMeasurement jacobianMeasurement(const DeformationAnalysis& a, const Eigen::M
 
 ColorRange sharedRange(const std::vector<const ViewMeasurement*>& views, const QuantityDescriptor& quantity) {
   const bool log = quantity.scale == ColorScale::LogDiverging;
-  double hi = log ? 1.0 : quantity.autoLow;
+  double extent = 0;  // LogDiverging: the widest view's quantile of |log v|; Viridis: of v
   for (const ViewMeasurement* m : views) {
+    if (!m || m->values.size() == 0) continue;
+    Eigen::VectorXd spread(m->values.size());
+    for (Eigen::Index i = 0; i < m->values.size(); ++i) {
+      const double v = m->values[i];
+      const bool folded = m->detJ.size() == m->values.size() && m->detJ[i] <= 0;
+      spread[i] = folded || !std::isfinite(v) || (log && !(v > 0)) ? std::numeric_limits<double>::quiet_NaN()
+                  : log                                            ? std::abs(std::log(v))
+                                                                   : v;
+    }
+    const double q = quantile(spread, kRangeQuantile);  // NaN when the view has no usable value
+    if (std::isfinite(q)) extent = std::max(extent, q);
+  }
+  if (!log) return {quantity.autoLow, std::max(extent, quantity.autoLow + 1e-3)};
+  const double hi = std::max(std::exp(extent), 1.0 + 1e-3);
+  return {1.0 / hi, hi};
+}
+
+long verticesBeyond(const std::vector<const ViewMeasurement*>& views, const ColorRange& range) {
+  long n = 0;
+  for (const ViewMeasurement* m : views)
     for (Eigen::Index i = 0; m && i < m->values.size(); ++i) {
       const double v = m->values[i];
-      if (!std::isfinite(v)) continue;
-      if (!log)
-        hi = std::max(hi, v);
-      else if (v > 0)
-        hi = std::max(hi, std::max(v, 1.0 / v));
+      const bool folded = m->detJ.size() == m->values.size() && m->detJ[i] <= 0;
+      n += !folded && std::isfinite(v) && (v < range.lo || v > range.hi);
     }
-  }
-  if (!log) return {quantity.autoLow, std::max(hi, quantity.autoLow + 1e-3)};
-  hi = std::max(hi, 1.0 + 1e-3);
-  return {1.0 / hi, hi};
+  return n;
 }
 
 std::string rangeProblem(const ColorRange& range, ColorScale scale) {
@@ -172,15 +186,20 @@ ShowSettings parseShow(const std::string& value, const std::string& option, int&
   return show;
 }
 
+std::vector<const ViewMeasurement*> viewsShowing(const ShowSettings& show, int quantity,
+                                                 const std::vector<const ViewMeasurement*>& measured) {
+  std::vector<const ViewMeasurement*> views;
+  for (std::size_t v = 0; v < measured.size(); ++v)
+    if (show.view(v).quantity == quantity) views.push_back(measured[v]);
+  return views;
+}
+
 ColorRange quantityRange(const ShowSettings& show, int quantity, const std::vector<const ViewMeasurement*>& measured) {
   const QuantityDescriptor& d = quantityDescriptor(quantity);
   auto fixed = show.ranges.find(quantity);
   if (fixed != show.ranges.end() && fixed->second.fixed && rangeProblem(fixed->second.range, d.scale).empty())
     return fixed->second.range;
-  std::vector<const ViewMeasurement*> views;
-  for (std::size_t v = 0; v < measured.size(); ++v)
-    if (show.view(v).quantity == quantity) views.push_back(measured[v]);
-  return sharedRange(views, d);
+  return sharedRange(viewsShowing(show, quantity, measured), d);
 }
 
 ColorRange rangeFieldsValue(const ShowSettings& show, int quantity, const ColorRange& drawn) {

@@ -71,10 +71,16 @@ ViewMeasurement jacobianMeasurement(const DeformationAnalysis& analysis, const E
 struct ColorRange {
   double lo = 1, hi = 1;
 };
-// The automatic range over the views showing the quantity (a compare view colours its panes alike).
-// LogDiverging: [1/m, m] with m the largest ratio away from 1 (at least 1 + 1e-3); Viridis: [autoLow, max]
-// (at least autoLow + 1e-3).
+// The automatic range over the views showing the quantity (a compare view colours its panes alike), robust to a
+// few extreme vertices: each view's kRangeQuantile-quantile, the widest of them. LogDiverging: [1/m, m] with log m
+// the quantile of |log v| (at least 1 + 1e-3); Viridis: [autoLow, the quantile of v] (at least autoLow + 1e-3).
+// Fold-overs (det J <= 0) have their own colour and take no part. With the largest value instead, BEM's fold-overs
+// (det J from 0.002 to 513 near them) set a range in which every other pane looked white (issue 24, row 8); the few
+// vertices beyond the range take the end colours and the legend counts them (verticesBeyond).
+constexpr double kRangeQuantile = 0.98;
 ColorRange sharedRange(const std::vector<const ViewMeasurement*>& views, const QuantityDescriptor& quantity);
+// How many vertices of the views (not fold-overs, not NaN) lie outside `range`: drawn in the end colours.
+long verticesBeyond(const std::vector<const ViewMeasurement*>& views, const ColorRange& range);
 // Empty when `range` is usable for the scale, else what is wrong with it ("min must be below 1 ...").
 std::string rangeProblem(const ColorRange& range, ColorScale scale);
 // Where a value falls in the range, in [0, 1]; -1 for a fold-over (det J <= 0), -2 for NaN.
@@ -112,6 +118,9 @@ ShowSettings parseShow(const std::string& value, const std::string& option, int&
 // The range quantity `quantity` is drawn with: the fixed one when set and usable, else sharedRange over the
 // measurements of the views that show it (`measured[v]` may be null).
 ColorRange quantityRange(const ShowSettings& show, int quantity, const std::vector<const ViewMeasurement*>& measured);
+// The measurements of the views that show `quantity` (`measured[v]` may be null).
+std::vector<const ViewMeasurement*> viewsShowing(const ShowSettings& show, int quantity,
+                                                 const std::vector<const ViewMeasurement*>& measured);
 // What the fixed-range fields show: the typed range while "fixed" is ticked, else the range drawn, so that they never
 // show a stale typed range and ticking "fixed" starts from what the legend says.
 ColorRange rangeFieldsValue(const ShowSettings& show, int quantity, const ColorRange& drawn);

@@ -21,6 +21,9 @@ REST_ATTRIBUTE = "somicage_rest"  # the bound mesh's original vertex coordinates
 STORED = ("somicage_rest_matrix", "somicage_cage_rest", "somicage_cage_triangles")  # the object's custom properties
 # The binding's settings that are Deformer.deform keywords; the panel enables those the method reads
 # (somicage.method_info(): "parameters"). nu_infinite goes with nu.
+# The binding's settings that are Deformer keywords (somicage.method_info(): "options"), read at bind: a change
+# makes the deformer again. The tetrahedral mesh's detail of method phong (the CLI's --tet-level).
+OPTION_PROPERTIES = ("tet_level",)
 PARAMETER_PROPERTIES = (("nu", "nu_infinite"), ("gamma",), ("variant",), ("traction_fix",), ("corotational",),
                         ("bulging",), ("normals",))
 VARIANTS = [("global", "Global", "One best-fit rotation for the whole cage (Fig. 4)"),
@@ -68,6 +71,9 @@ class SomicageBinding(bpy.types.PropertyGroup):
                                          "before the linear-elastic solve", default=False, update=_refresh)
     bulging: bpy.props.EnumProperty(name="Bulging", items=BULGING, default="solid-angle", update=_refresh)
     normals: bpy.props.EnumProperty(name="Normals", items=NORMALS, default="area", update=_refresh)
+    tet_level: bpy.props.IntProperty(name="Tet level", description="Detail of the cage's tetrahedral mesh (Phong): "
+                                     "0 TetGen, about the cage's vertices, to 4 CGAL Mesh_3, finer",
+                                     default=1, min=0, max=4, update=_refresh)
     live: bpy.props.BoolProperty(name="Live", description="Re-deform when the cage changes or the frame changes; "
                                  "baked SomiCage shape keys are muted meanwhile", default=True, update=_live_changed)
     bound: bpy.props.BoolProperty(name="Bound", default=False)
@@ -94,19 +100,25 @@ def binding_name(mesh_object):
     return f"'{mesh_object.name}' to cage '{cage.name if cage is not None else ''}'{made}"
 
 
-def make_deformer(cage_vertices, cage_triangles, points, method):
+def deformer_options(binding):
+    """The binding's Deformer keywords its method reads (OPTION_PROPERTIES)."""
+    reads = engine.method_options(binding.method)
+    return {name: getattr(binding, name) for name in OPTION_PROPERTIES if name in reads}
+
+
+def make_deformer(cage_vertices, cage_triangles, points, method, options=None):
     somicage = engine.somicage_module()
     wm = bpy.context.window_manager
     wm.progress_begin(0, 100)
     try:
         return somicage.Deformer(somicage.Cage(cage_vertices, cage_triangles), points, method=method,
-                                 progress=lambda fraction: wm.progress_update(100 * fraction))
+                                 progress=lambda fraction: wm.progress_update(100 * fraction), **(options or {}))
     finally:
         wm.progress_end()
 
 
 def cache_key(binding):
-    return binding.bind_id, binding.method
+    return (binding.bind_id, binding.method, *sorted(deformer_options(binding).items()))
 
 
 def rest_points(mesh_object):
@@ -131,7 +143,7 @@ def deformer_for(mesh_object):
     cage_triangles = np.array(mesh_object["somicage_cage_triangles"], dtype=np.int64).reshape(-1, 3)
     points = to_world(mesh_object["somicage_rest_matrix"], rest_points(mesh_object))
     with engine.engine_warnings():
-        deformer = make_deformer(cage_vertices, cage_triangles, points, binding.method)
+        deformer = make_deformer(cage_vertices, cage_triangles, points, binding.method, deformer_options(binding))
     _deformers[cache_key(binding)] = deformer
     return deformer
 
@@ -157,7 +169,7 @@ def bind(mesh_object, depsgraph):
     rest_local = rest_local.astype(np.float32)
     with engine.engine_warnings() as messages:
         deformer = make_deformer(cage_vertices, cage_triangles, to_world(rest_matrix, rest_local.astype(np.float64)),
-                                 binding.method)
+                                 binding.method, deformer_options(binding))
     warnings = [engine.in_blender_words(m, mesh_object, binding.cage) for m in messages]
     # Nothing can fail from here on.
     if REST_ATTRIBUTE not in mesh.attributes:

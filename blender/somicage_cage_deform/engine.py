@@ -74,6 +74,11 @@ def method_parameters(name):
     return next((set(m["parameters"]) for m in engine_methods() if m["name"] == name), set())
 
 
+def method_options(name):
+    """The Deformer keywords that method reads (somicage.method_info()'s options: phong's tets, tet_level)."""
+    return next((set(m.get("options", [])) for m in engine_methods() if m["name"] == name), set())
+
+
 @contextlib.contextmanager
 def engine_warnings():
     """Collects the engine's warnings (somicage.SomiCageWarning, and any other) as messages instead of letting

@@ -116,6 +116,11 @@ class SOMICAGE_PT_panel(bpy.types.Panel):
             row.enabled = properties[0] in reads
             for name in properties:
                 row.prop(settings, name)
+        options = engine.method_options(settings.method)
+        for name in binding.OPTION_PROPERTIES:  # read at bind (and when changed: the deformer is made again)
+            row = layout.row()
+            row.enabled = name in options
+            row.prop(settings, name)
         layout.prop(settings, "live")
         row = layout.row()
         row.operator(SOMICAGE_OT_bind.bl_idname)

@@ -49,7 +49,8 @@ CudaFrameEvaluator::CudaFrameEvaluator(const FrameCoordinates& C, int dim)
   SOMICAGE_ASSERT(dim == 2 || dim == 3, "a frame is 2D or 3D");
   requireDevice();
   const void* data = C.isFloat() ? static_cast<const void*>(C.floats.data()) : C.doubles.data();
-  frame_ = cuda_device::uploadCoordinates(data, C.isFloat(), rows_, columns_);
+  frame_ = cuda_device::uploadCoordinates(data, C.isSparse() ? C.entryColumns.data() : nullptr, C.isFloat(), rows_,
+                                          C.storedColumns(), columns_);
 }
 
 CudaFrameEvaluator::~CudaFrameEvaluator() { cuda_device::releaseCoordinates(frame_); }

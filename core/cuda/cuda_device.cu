@@ -38,6 +38,23 @@ __global__ void frameKernel(const Scalar* __restrict__ C, int rows, PortableFram
   if (lane == 0) finishFramePoint<Dim>(y, W.finish, W.origin, out + static_cast<size_t>(p) * Dim);
 }
 
+// The same for sparse rows (coordinate_layout.h) of `entries` (value, column) pairs: the lanes stride over a row's
+// entries.
+template <typename Scalar, int Dim>
+__global__ void sparseFrameKernel(const Scalar* __restrict__ C, const int32_t* __restrict__ entryColumns, int entries,
+                                  int rows, PortableFrameWeights W, double* __restrict__ out) {
+  const int p = blockIdx.x * (blockDim.x / kWarp) + threadIdx.x / kWarp;
+  const int lane = threadIdx.x % kWarp;
+  if (p >= rows) return;
+  double y[kPortableMaxOutputs] = {0};
+  const size_t row = static_cast<size_t>(p) * entries;
+  addSparseFramePartialSums(C + row, entryColumns + row, entries, W, lane, kWarp, y);
+#pragma unroll
+  for (int o = 0; o < kPortableMaxOutputs; ++o)
+    for (int offset = kWarp / 2; offset > 0; offset /= 2) y[o] += __shfl_down_sync(0xffffffffu, y[o], offset);
+  if (lane == 0) finishFramePoint<Dim>(y, W.finish, W.origin, out + static_cast<size_t>(p) * Dim);
+}
+
 __global__ void somiglianaRowsKernel(const PortableFace* __restrict__ faces, int numFaces, int numVertices,
                                      const double* __restrict__ points, int numPoints, double* rows,
                                      double* winding) {
@@ -100,14 +117,24 @@ struct DeviceFrame {
   size_t weightCapacity = 0;
   bool isFloat = false;
   int rows = 0, columns = 0;
+  int32_t* entryColumns = nullptr;  // sparse rows: `stored` columns per row; null: dense
+  int stored = 0;
 };
 
-DeviceFrame* uploadCoordinates(const void* data, bool isFloat, int rows, int columns) {
-  auto* frame = new DeviceFrame{nullptr, nullptr, nullptr, 0, isFloat, rows, columns};
+DeviceFrame* uploadCoordinates(const void* data, const int32_t* entryColumns, bool isFloat, int rows, int stored,
+                               int columns) {
+  auto* frame = new DeviceFrame{nullptr, nullptr, nullptr, 0, isFloat, rows, columns, nullptr, stored};
   try {
-    const size_t bytes = static_cast<size_t>(rows) * columns * (isFloat ? sizeof(float) : sizeof(double));
+    const size_t entries = static_cast<size_t>(rows) * stored;
+    const size_t bytes = entries * (isFloat ? sizeof(float) : sizeof(double));
     check(cudaMalloc(&frame->coordinates, std::max<size_t>(1, bytes)), "cudaMalloc (coordinates)");
     check(cudaMemcpy(frame->coordinates, data, bytes, cudaMemcpyHostToDevice), "cudaMemcpy (coordinates)");
+    if (entryColumns) {
+      check(cudaMalloc(&frame->entryColumns, std::max<size_t>(1, entries * sizeof(int32_t))),
+            "cudaMalloc (entry columns)");
+      check(cudaMemcpy(frame->entryColumns, entryColumns, entries * sizeof(int32_t), cudaMemcpyHostToDevice),
+            "cudaMemcpy (entry columns)");
+    }
     check(cudaMalloc(&frame->out, std::max<size_t>(1, static_cast<size_t>(rows) * 3 * sizeof(double))),
           "cudaMalloc (frame output)");
   } catch (...) {
@@ -122,6 +149,7 @@ void releaseCoordinates(DeviceFrame* frame) noexcept {
   cudaFree(frame->coordinates);
   cudaFree(frame->out);
   cudaFree(frame->weights);
+  cudaFree(frame->entryColumns);
   delete frame;
 }
 
@@ -148,7 +176,17 @@ void evaluateFrame(DeviceFrame* frame, const FrameLaunch& launch, double* out) {
                                  {launch.origin[0], launch.origin[1], launch.origin[2]}, launch.finish};
     const auto* floats = static_cast<const float*>(frame->coordinates);
     const auto* doubles = static_cast<const double*>(frame->coordinates);
-    if (frame->isFloat && launch.dim == 3)
+    const int32_t* sparse = frame->entryColumns;
+    const int n = frame->stored;
+    if (sparse && frame->isFloat && launch.dim == 3)
+      sparseFrameKernel<float, 3><<<blocks, kFrameBlock>>>(floats, sparse, n, frame->rows, W, frame->out);
+    else if (sparse && frame->isFloat)
+      sparseFrameKernel<float, 2><<<blocks, kFrameBlock>>>(floats, sparse, n, frame->rows, W, frame->out);
+    else if (sparse && launch.dim == 3)
+      sparseFrameKernel<double, 3><<<blocks, kFrameBlock>>>(doubles, sparse, n, frame->rows, W, frame->out);
+    else if (sparse)
+      sparseFrameKernel<double, 2><<<blocks, kFrameBlock>>>(doubles, sparse, n, frame->rows, W, frame->out);
+    else if (frame->isFloat && launch.dim == 3)
       frameKernel<float, 3><<<blocks, kFrameBlock>>>(floats, frame->rows, W, frame->out);
     else if (frame->isFloat)
       frameKernel<float, 2><<<blocks, kFrameBlock>>>(floats, frame->rows, W, frame->out);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 
@@ -30,9 +31,12 @@ struct DeviceInfo {
 
 DeviceInfo queryDevice();
 
-// The coordinate matrix C on the device (row-major, float or double) and an output buffer.
+// The coordinate matrix C on the device (row-major, float or double) and an output buffer. Sparse rows
+// (coordinate_layout.h): data holds `stored` values per row and entryColumns (rows by stored) their columns of C's
+// `columns`; dense: entryColumns is null and stored == columns.
 struct DeviceFrame;
-DeviceFrame* uploadCoordinates(const void* data, bool isFloat, int rows, int columns);
+DeviceFrame* uploadCoordinates(const void* data, const int32_t* entryColumns, bool isFloat, int rows, int stored,
+                               int columns);
 void releaseCoordinates(DeviceFrame* frame) noexcept;
 
 // The weights of one frame, one row of outputs per column of C: mainWeights is mainColumns by

@@ -18,7 +18,7 @@ DeviceInfo queryDevice() {
 }
 
 struct DeviceFrame {};
-DeviceFrame* uploadCoordinates(const void*, bool, int, int) { unavailable(); }
+DeviceFrame* uploadCoordinates(const void*, const int32_t*, bool, int, int, int) { unavailable(); }
 void releaseCoordinates(DeviceFrame*) noexcept {}
 void evaluateFrame(DeviceFrame*, const FrameLaunch&, double*) { unavailable(); }
 void integrateSomiglianaRows(const PortableFace*, int, int, const double*, int, double*, double*) { unavailable(); }

@@ -5,10 +5,12 @@
 // C W gives the points. C's row for a point X in simplex s with barycentrics l_k, vertex v_k:
 //   column (v_k, 0) = l_k,   column (v_k, 1 + a) = 1/2 l_k (X - X_v_k)_a
 // and W's rows for vertex v: x_v, then the columns of F_v: sum_k l_k x_k + 1/2 sum_k l_k F_k (X - X_k), which is
-// phi(X) of phong_interpolation.h. Points in no simplex (outside the cage) follow the exterior rule.
+// phi(X) of phong_interpolation.h. Points in no simplex (outside the cage) follow the exterior rule. C is stored
+// as sparse rows (coordinate_layout.h): a row has (d + 1)^2 nonzeros of (d + 1) #N + d + 1 columns.
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <vector>
@@ -27,7 +29,10 @@ namespace somicage {
 namespace {
 
 // C = [vertex v term k at k #N + v (k = 0: l_v, k = 1 + a: 1/2 l_v (X - X_v)_a) | x | 1]; #N: the volume mesh's.
-CoordinateLayout phongLayout(int dim, int numVertices, int) { return {numVertices, 0, dim + 1, 0, dim + 1}; }
+// Stored as sparse rows: a point's (d + 1) simplex vertices times d + 1 terms (an outside point's [x | 1] fits too).
+CoordinateLayout phongLayout(int dim, int numVertices, int) {
+  return {numVertices, 0, dim + 1, 0, dim + 1, 0, (dim + 1) * (dim + 1)};
+}
 
 void validatePhongParams(const DeformParams& params) {
   validateDeformParams(params);
@@ -112,30 +117,33 @@ class PhongDeformer final : public CageDeformer {
   }
 
   // d/dX_b of the row above: column (v_k, 0): g_k[b]; column (v_k, 1 + a): 1/2 (g_k[b] (X - X_v_k)_a + l_k delta_ab).
+  // In C's sparse form: the same entry columns as C's point rows, zero where a point is not Inside.
   std::vector<FrameCoordinates> coordinateGradients(const Eigen::MatrixXd& points,
                                                     const ProgressCallback&) const override {
-    const int d = dim(), columns = layout_.columns();
+    const int d = dim(), entries = layout_.rowEntries, numPoints = static_cast<int>(points.rows());
     std::vector<CoordinateMatrix<double>> rows(static_cast<std::size_t>(d));
-    for (auto& g : rows) g.setZero(points.rows(), columns);
-    for (int p = 0; p < static_cast<int>(points.rows()); ++p) {
+    for (auto& g : rows) g.setZero(numPoints, entries);
+    for (int p = 0; p < numPoints; ++p) {
       const int s = pointSimplex_[static_cast<std::size_t>(p)];
       if (s < 0) continue;
       const Eigen::VectorXd X = points.row(p).transpose(), l = locator_.barycentric(s, X);
       const Eigen::MatrixXd& g = gradients_[static_cast<std::size_t>(s)];
       for (int k = 0; k <= d; ++k) {
-        const int v = mesh_->simplices(s, k);
-        const Eigen::VectorXd offset = X - mesh_->vertices.row(v).transpose();
+        const Eigen::VectorXd offset = X - mesh_->vertices.row(mesh_->simplices(s, k)).transpose();
         for (int b = 0; b < d; ++b) {
           CoordinateMatrix<double>& G = rows[static_cast<std::size_t>(b)];
-          G(p, layout_.vertexColumn(v, 0)) = g(k, b);
-          for (int a = 0; a < d; ++a)
-            G(p, layout_.vertexColumn(v, 1 + a)) = 0.5 * (g(k, b) * offset(a) + (a == b ? l(k) : 0.0));
+          G(p, entry(k, 0)) = g(k, b);
+          for (int a = 0; a < d; ++a) G(p, entry(k, 1 + a)) = 0.5 * (g(k, b) * offset(a) + (a == b ? l(k) : 0.0));
         }
       }
     }
     std::vector<FrameCoordinates> frames;
-    for (auto& g : rows)
-      frames.push_back(makeFrameCoordinates(std::move(g), layout_.mainColumns(), coordinates_.isFloat()));
+    for (auto& g : rows) {
+      FrameCoordinates frame = makeFrameCoordinates(std::move(g), layout_.mainColumns(), coordinates_.isFloat());
+      frame.entryColumns = coordinates_.entryColumns.topRows(numPoints);
+      frame.sparseColumns = layout_.columns();
+      frames.push_back(std::move(frame));
+    }
     return frames;
   }
 
@@ -194,33 +202,45 @@ class PhongDeformer final : public CageDeformer {
     const int exterior = static_cast<int>(plan.blends.size());
     FrameCoordinates frame;
     frame.mainColumns = layout_.mainColumns();
-    // Written straight into the stored precision: C is wide ((d + 1) #N columns) and mostly zeros.
+    frame.sparseColumns = layout_.columns();
+    const int rows = numPoints + 2 * exterior;
+    frame.entryColumns.resize(rows, layout_.rowEntries);
+    // Written straight into the stored precision.
     if (options.floatStorage)
-      writeRows(points, plan, frame.floats.setZero(numPoints + 2 * exterior, layout_.columns()));
+      writeRows(points, plan, frame.floats.setZero(rows, layout_.rowEntries), frame.entryColumns);
     else
-      writeRows(points, plan, frame.doubles.setZero(numPoints + 2 * exterior, layout_.columns()));
+      writeRows(points, plan, frame.doubles.setZero(rows, layout_.rowEntries), frame.entryColumns);
     if (!progress(1.0)) throw Cancelled();
     frame.exteriorBlends = std::move(plan.blends);
     return frame;
   }
 
-  // The point rows of C, then each exterior point's proxy and anchor rows (frame_evaluation.h).
+  // A sparse row's entry for simplex vertex k's term t (the row's (d + 1)^2 entries, vertex-major).
+  int entry(int k, int t) const { return k * (dim() + 1) + t; }
+
+  // The point rows of C, then each exterior point's proxy and anchor rows (frame_evaluation.h), as sparse rows.
   template <typename Scalar>
-  void writeRows(const Eigen::MatrixXd& points, ExteriorPlan& plan, CoordinateMatrix<Scalar>& C) const {
-    const int numPoints = static_cast<int>(points.rows()), d = dim(), columns = layout_.columns();
+  void writeRows(const Eigen::MatrixXd& points, ExteriorPlan& plan, CoordinateMatrix<Scalar>& values,
+                 CoordinateMatrix<std::int32_t>& columns) const {
+    const int numPoints = static_cast<int>(points.rows()), d = dim(), entries = layout_.rowEntries,
+              width = layout_.columns();
+    const auto writeSimilarity = [&](const Eigen::MatrixXd& at, int p, int row) {
+      writeSimilarityEntries(at, p, values.row(row).data(), columns.row(row).data(), entries, width);
+    };
     // X in simplex s (-1: the one holding X); false: X is in no simplex.
     const auto writeRow = [&](const Eigen::VectorXd& X, int row, int s) {
       if (s < 0) s = locator_.locate(X).simplex;
       if (s < 0) {
-        writeSimilarityRow(X.transpose(), 0, C.row(row).data(), columns);
+        writeSimilarity(X.transpose(), 0, row);
         return false;
       }
       const Eigen::VectorXd l = locator_.barycentric(s, X);
       for (int k = 0; k <= d; ++k) {
         const int v = mesh_->simplices(s, k);
-        C(row, layout_.vertexColumn(v, 0)) = static_cast<Scalar>(l(k));
+        for (int t = 0; t <= d; ++t) columns(row, entry(k, t)) = layout_.vertexColumn(v, t);
+        values(row, entry(k, 0)) = static_cast<Scalar>(l(k));
         for (int a = 0; a < d; ++a)
-          C(row, layout_.vertexColumn(v, 1 + a)) = static_cast<Scalar>(0.5 * l(k) * (X(a) - mesh_->vertices(v, a)));
+          values(row, entry(k, 1 + a)) = static_cast<Scalar>(0.5 * l(k) * (X(a) - mesh_->vertices(v, a)));
       }
       return true;
     };
@@ -228,7 +248,7 @@ class PhongDeformer final : public CageDeformer {
       if (diagnostics_.regions[static_cast<std::size_t>(p)] == PointRegion::Inside)
         writeRow(points.row(p).transpose(), p, pointSimplex_[static_cast<std::size_t>(p)]);
       else
-        writeSimilarityRow(points, p, C.row(p).data(), columns);
+        writeSimilarity(points, p, p);
     }
     integrateProxies(rest_, plan, [&](const Eigen::MatrixXd& proxies, const std::vector<int>& which) {
       std::vector<bool> located(which.size());
@@ -237,8 +257,7 @@ class PhongDeformer final : public CageDeformer {
       return located;
     });
     for (std::size_t e = 0; e < plan.blends.size(); ++e)
-      writeSimilarityRow(plan.proxies, static_cast<int>(e), C.row(numPoints + 2 * static_cast<int>(e) + 1).data(),
-                         columns);
+      writeSimilarity(plan.proxies, static_cast<int>(e), numPoints + 2 * static_cast<int>(e) + 1);
   }
 
   Cage rest_;
@@ -260,7 +279,7 @@ std::unique_ptr<CageDeformer> precomputePhong(const Cage& restCage, const Eigen:
   return std::make_unique<PhongDeformer>(restCage, std::move(mesh), points, options, progress);
 }
 
-// C is written in its stored precision; the per-point simplices and diagnostics are small.
+// C is written in its stored (sparse) form; the per-point simplices and diagnostics are small.
 std::size_t phongWorkingBytes(const CoordinateLayout&, int, std::size_t points, bool, int) {
   return points * (sizeof(int) + sizeof(double) + 1);
 }

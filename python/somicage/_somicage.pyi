@@ -53,9 +53,11 @@ class Cage:
 
 class Deformer:
     def __init__(self, cage: Cage, points: ArrayLike, method: str = "somigliana", *, threads: int = 0,
-                 float_storage: bool = False, progress: Optional[Progress] = None, tets: str = "") -> None:
+                 float_storage: bool = False, progress: Optional[Progress] = None, tets: str = "",
+                 tet_level: Optional[int] = None) -> None:
         """Precomputes the coordinates of points (P, d) in the rest cage, with the GIL released; tets: a MEDIT
-        tetrahedral mesh of the cage for method="phong"."""
+        tetrahedral mesh of the cage for method="phong"; tet_level: 0 to 4, the detail of the tetrahedral mesh
+        made of the cage otherwise (the CLI's --tet-level)."""
     def deform(self, posed: ArrayLike, *, nu: float = 0.0, gamma: float = 0.0, variant: str = "global",
                blend: Optional[float] = None, traction_fix: bool = True,
                corotational: bool = False, bulging: str = "solid-angle",
@@ -89,7 +91,8 @@ def methods() -> list[str]: ...
 def choice_info() -> list[dict[str, Union[str, list[tuple[str, str]]]]]:
     """Deformer.deform's keywords that take a name (bulging, normals): name, description, values (default first)."""
 def method_info() -> list[dict[str, Union[str, list[str]]]]:
-    """{name, display_name, description, parameters (Deformer.deform's keywords it reads)} per method."""
+    """{name, display_name, description, parameters (Deformer.deform's keywords it reads), options (Deformer's
+    keywords it reads: phong's tets, tet_level)} per method."""
 def parameter_ranges() -> dict[str, tuple[float, float]]:
     """{keyword: (min, max)} for nu (open interval, or +-inf), gamma, blend, threads: the engine's one list."""
 def parameter_schema() -> list[dict[str, object]]:

@@ -1,5 +1,7 @@
 // somicage bench, run as a process: --json prints one object with exactly the documented keys, and its numbers
 // are consistent (exact integrals at round-off, the baseline slower and less accurate, frames timed per variant).
+#include <cmath>
+
 #include "cli_test_support.h"
 #include "cpu_dispatch.h"
 
@@ -27,7 +29,7 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
                                          "gradient_bytes",     "bem_factor_ms",
                                          "editor_measure_ms",  "editor_detj_updates_per_s",
                                          "phong_factor_ms",    "phong_volume_vertices",
-                                         "cpu_kernels"};
+                                         "phong_coord_bytes",  "cpu_kernels"};
   EXPECT_EQ(json.object.size(), keys.size());
   for (const std::string& key : keys) ASSERT_TRUE(json.has(key)) << key;
   EXPECT_EQ(json["mesh_vertices"].number, 5);
@@ -45,6 +47,10 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_TRUE(json["deform_ms"].has("cpu_phong"));
   EXPECT_GT(json["phong_factor_ms"].number, 0);
   EXPECT_EQ(json["phong_volume_vertices"].number, 9);  // the cube's star: its 8 corners and its centre
+  // Phong's C as sparse rows: 16 (float value, int32 column) pairs per row, a row per point (two more per point
+  // outside the cage), not 4 x 9 + 4 columns.
+  EXPECT_GE(json["phong_coord_bytes"].number, 5 * 16 * 8);
+  EXPECT_EQ(std::fmod(json["phong_coord_bytes"].number, 16 * 8), 0.0);
   EXPECT_GT(json["coord_bytes"].number, 0);
   EXPECT_GE(json["peak_rss_bytes"].number, json["coord_bytes"].number);
   ASSERT_EQ(json["analyze_ms"].type, Json::Type::Object);

@@ -117,8 +117,10 @@ class LayoutRecorder:
         return names.union(*(row.enabled_properties() for row in self.rows))
 
 
-# The panel enables a setting exactly when the method reads it (method_info's parameters; nu_infinite goes with nu).
-SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational", "bulging", "normals"}
+# The panel enables a setting exactly when the method reads it (method_info's parameters and options; nu_infinite
+# goes with nu).
+SETTINGS_DRAWN = {"nu", "nu_infinite", "gamma", "variant", "traction_fix", "corotational", "bulging", "normals",
+                  "tet_level"}
 # The choice menus are the engine's table (somicage.choice_info()), names and order.
 for choice in somicage.choice_info():
     items = getattr(addon_binding, choice["name"].upper())
@@ -128,7 +130,8 @@ for m in info:
     binding.method = m["name"]
     panel = type("Panel", (), {"layout": LayoutRecorder()})()
     ui.SOMICAGE_PT_panel.draw(panel, bpy.context)
-    reads = set(m["parameters"]) | ({"nu_infinite"} if "nu" in m["parameters"] else set())
+    # Deformer's own keywords (method_info's options: phong's tet_level) too.
+    reads = set(m["parameters"]) | set(m["options"]) | ({"nu_infinite"} if "nu" in m["parameters"] else set())
     assert panel.layout.enabled_properties() & SETTINGS_DRAWN == reads & SETTINGS_DRAWN, m
 binding.method = "somigliana"
 print(f"method menu: {', '.join(m['name'] for m in info)}")

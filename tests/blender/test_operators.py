@@ -129,6 +129,31 @@ class PanelLayout:
         self.labels.append(text)
 
 
+class RowRecorder:
+    """Stands in for the panel's UILayout: whether the row that draws each property is enabled."""
+    def __init__(self):
+        self.enabled, self.properties = True, {}
+
+    def row(self, **_kwargs):
+        child = RowRecorder()
+        child.properties = self.properties
+        return child
+
+    column = box = row
+
+    def prop(self, _data, name, **_kwargs):
+        self.properties[name] = self.enabled
+
+    def operator(self, *_args, **_kwargs):
+        pass
+
+    def label(self, **_kwargs):
+        pass
+
+    def enabled_of(self, name):
+        return self.properties[name]
+
+
 def panel_text():
     """The messages the SomiCage panel shows for the active object, lines joined."""
     panel = type("Panel", (), {"layout": PanelLayout()})()
@@ -362,8 +387,7 @@ def u_block(name="UBlock"):
 def phong_binds_a_star_shaped_cage():
     """Phong (James 2020, the paper's Fig. 8) from the method menu: on a box (star-shaped: the engine's star of its
     faces is the tetrahedral mesh) it reproduces an affine pose of the cage exactly (a closed form: the mesh moves by
-    the same map). The add-on has no tetrahedral mesh option: a cage that is not star-shaped from its centroid is
-    refused with the engine's reason."""
+    the same map)."""
     mesh_object, cage = ball(radius=0.4), box()
     original = local(mesh_object.data)
     prepare(mesh_object, cage)
@@ -376,19 +400,52 @@ def phong_binds_a_star_shaped_cage():
     cage.data.update()
     bpy.context.view_layer.update()
     check_close("phong, an affine pose", shown(mesh_object), original @ A.T)
-    clear()
+
+
+def phong_tet_level_meshes_any_cage():
+    """The panel's Tet level (the CLI's --tet-level, method_info()'s option tet_level) tetrahedralizes a cage that
+    is not star-shaped (a U): at level 0 (TetGen) and 1 (CGAL Mesh_3) an affine pose of the cage is reproduced
+    exactly (closed form), each level is its own deformer, and a bent pose differs between the two meshes. The panel
+    enables Tet level for phong only."""
     mesh_object, cage = ball(radius=0.3), u_block()
+    mesh_object.location = (-1.0, 0.0, 0.0)  # in the U's left arm
+    bpy.context.view_layer.update()
     original = local(mesh_object.data)
+    offset = np.array(mesh_object.location)
     prepare(mesh_object, cage)
-    mesh_object.somicage.method = "phong"
-    message = bind_error(mesh_object)
-    check_untouched(mesh_object, original)
-    assert "cannot bind 'Ball' to cage 'UBlock'" in message and "not star-shaped" in message, message
+    binding = mesh_object.somicage
+    for method, enabled in (("somigliana", False), ("phong", True)):
+        binding.method = method
+        panel = type("Panel", (), {"layout": RowRecorder()})()
+        addon.ui.SOMICAGE_PT_panel.draw(panel, bpy.context)
+        assert panel.layout.enabled_of("tet_level") == enabled, method
+    binding.method, binding.tet_level = "phong", 0
+    assert bpy.ops.somicage.bind() == {"FINISHED"}
+    A = np.array([[1.2, 0.3, 0.0], [-0.1, 0.8, 0.2], [0.1, 0.0, 1.1]])
+    rest = local(cage.data)
+    posed = {}
+    for level in (0, 1):
+        binding.tet_level = level
+        cage.data.vertices.foreach_set("co", (rest @ A.T).astype(np.float32).ravel())
+        cage.data.update()
+        bpy.context.view_layer.update()
+        check_close(f"phong at tet level {level}, an affine pose", shown(mesh_object), (original + offset) @ A.T - offset,
+                    diameter=3.0)
+        bent = rest.copy()
+        bent[:, 2] += 0.3 * bent[:, 0] ** 2  # not affine: the Steiner vertices and so the points depend on the mesh
+        cage.data.vertices.foreach_set("co", bent.astype(np.float32).ravel())
+        cage.data.update()
+        bpy.context.view_layer.update()
+        posed[level] = shown(mesh_object)
+    assert len(addon_binding._deformers) == 1, "the level 0 deformer is pruned when level 1 is made"
+    assert np.abs(posed[0] - posed[1]).max() > 1e-4, "the tet level changes the tetrahedral mesh"
+    cage.data.vertices.foreach_set("co", rest.astype(np.float32).ravel())
+    cage.data.update()
 
 
 CASES = (module_not_found, failed_binds_change_nothing, modifier_cages_bind, warnings_name_the_objects,
          rebake_replaces_keys, live_and_keys_do_not_fight, unbind_keeps_or_removes_keys, failed_bake_changes_nothing,
-         cache_follows_the_object, phong_binds_a_star_shaped_cage)
+         cache_follows_the_object, phong_binds_a_star_shaped_cage, phong_tet_level_meshes_any_cage)
 failed = []
 for case in CASES:
     clear()

@@ -83,6 +83,7 @@ TEST(CageTetrahedralization, MeshesTheCubeAndTheExtrudedLFinerWithEachLevel) {
       SCOPED_TRACE("level " + std::to_string(level));
       const VolumeMesh mesh = tetrahedralizeCage(c.cage, level);
       expectMeshOf(c.cage, mesh, c.volume);
+      EXPECT_EQ(mesh.fallback, "") << "the mesh asked for: no fallback to tell";
       if (level == 0)
         coarsest = mesh.numVertices();
       else
@@ -141,6 +142,9 @@ TEST(CageTetrahedralization, FallsBackToTheConstrainedTetrahedralizationWhenMesh
   const auto start = std::chrono::steady_clock::now();
   const VolumeMesh mesh = tetrahedralizeCage(cage, 3, noProgress, {1e-3, 500000});
   EXPECT_LT(secondsSince(start), 5.0);
+  // The user is told (VolumeMesh::fallback, a warning in every front end: engine.h, prepareVolumeMesh) and why.
+  EXPECT_NE(mesh.fallback.find("did not finish within its bound of 0.001 s"), std::string::npos) << mesh.fallback;
+  EXPECT_NE(mesh.fallback.find("TetGen"), std::string::npos) << mesh.fallback;
   expectBoundaryIsTheCages(cage, mesh);
   expectMeshOf(cage, mesh, 3.0);
   // TetGen keeps its volume bound loosely (up to 3 % over it measured here): within 25 %.

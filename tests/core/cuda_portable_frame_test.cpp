@@ -1,6 +1,7 @@
 // The CUDA frame kernel's per-point code (core/frame_point_kernel.h), run on the host with the 32 lanes of a
 // warp summed in a loop, against the CPU frame (CageDeformer::deform). This checks the kernel's weight layout and
-// its T^-1 b solve without a GPU; only the shuffle reduction is device-only.
+// its T^-1 b solve without a GPU; only the shuffle reduction is device-only. Sparse rows (Phong) run the sparse
+// kernel's sums (addSparseFramePartialSums), dense rows the dense one's.
 //
 // Tolerances, in cage diameters: 1e-5 from float coordinates (the CPU multiplies in float, this in double),
 // 1e-9 from double coordinates.
@@ -22,13 +23,19 @@ constexpr int kLanes = 32;
 template <typename Scalar, int Dim>
 Eigen::MatrixXd framePortable(const CoordinateMatrix<Scalar>& C, const FrameCoordinates& frame, const FrameWeights& W) {
   const RowMatrixXd main = W.main, tail = W.tail;
-  PortableFrameWeights weights{main.data(), tail.data(), static_cast<int>(C.cols()), frame.mainColumns, W.mainOffset,
-                               W.outputs,   {0, 0, 0},          W.finish};
+  PortableFrameWeights weights{main.data(), tail.data(), frame.columns(), frame.mainColumns, W.mainOffset,
+                               W.outputs,   {0, 0, 0},       W.finish};
   for (int a = 0; a < Dim && a < W.origin.size(); ++a) weights.origin[a] = W.origin(a);
   Eigen::MatrixXd out(C.rows(), Dim);
   for (int p = 0; p < C.rows(); ++p) {
     double y[kPortableMaxOutputs] = {0};
-    for (int lane = 0; lane < kLanes; ++lane) addFramePartialSums(C.row(p).data(), weights, lane, kLanes, y);
+    for (int lane = 0; lane < kLanes; ++lane) {
+      if (frame.isSparse())  // the sparse kernel's sums (Phong's rows, coordinate_layout.h)
+        addSparseFramePartialSums(C.row(p).data(), frame.entryColumns.row(p).data(), static_cast<int>(C.cols()),
+                                  weights, lane, kLanes, y);
+      else
+        addFramePartialSums(C.row(p).data(), weights, lane, kLanes, y);
+    }
     double point[Dim];
     finishFramePoint<Dim>(y, W.finish, weights.origin, point);
     for (int a = 0; a < Dim; ++a) out(p, a) = point[a];

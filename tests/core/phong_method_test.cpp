@@ -13,9 +13,11 @@
 #include "core/test_shapes.h"
 #include "deformer.h"
 #include "elastic_steiner_solve.h"
+#include "engine.h"
 #include "errors.h"
 #include "jacobian.h"
 #include "medit_io.h"
+#include "memory_estimate.h"
 #include "methods/method_descriptors.h"
 #include "phong_interpolation.h"
 
@@ -451,6 +453,86 @@ TEST(PhongMethod, JacobianIsTheDerivativeOfThePositions) {
       const Eigen::RowVector3d fd = (x.row(7 * p + 1 + 2 * b) - x.row(7 * p + 2 + 2 * b)) / (2 * h);
       for (int a = 0; a < 3; ++a) EXPECT_NEAR(J(7 * p, 3 * a + b), fd(a), 1e-6) << "point " << p;
     }
+}
+
+// C is stored as sparse rows (coordinate_layout.h): per point its simplex's d + 1 vertices times d + 1 terms, and an
+// outside point's [x | 1]. Expanded into the dense matrix it stands for, the dense frame kernel gives the same points
+// and the same J to 1e-12 diameters (double storage; float storage within its own rounding, 1e-6), inside and
+// outside the cage, in 3D (TetGen's mesh of the extruded L, Steiner vertices) and 2D (the L polygon's fan); and it
+// takes (d + 1)^2 (value, 32-bit column) pairs per row, which the memory estimate says.
+TEST(PhongMethod, SparseCoordinatesEvaluateAsTheDenseMatrixTheyStandFor) {
+  struct Case {
+    Cage cage;
+    PrecomputeOptions options;
+    std::string name;
+  };
+  std::vector<Case> cases;
+  cases.push_back({test::makeExtrudedL(), {}, "3D extruded L, TetGen"});
+  cases.back().options.volumeMesh = std::make_shared<VolumeMesh>(tetrahedralizeCage(cases.back().cage, 0));
+  cases.push_back({makePolygonCage(test::lLoop()), {}, "2D L polygon"});
+  for (Case& c : cases)
+    for (bool floatStorage : {false, true}) {
+      SCOPED_TRACE(c.name + (floatStorage ? " float" : " double"));
+      const int d = c.cage.dim();
+      const Eigen::MatrixXd points = test::randomBoxPoints(80, d, -0.3, 2.3, 4);  // some outside the L
+      c.options.floatStorage = floatStorage;
+      const auto deformer = makeDeformer(methods::phong(), c.cage, points, c.options);
+      const FrameCoordinates& C = deformer->frameCoordinates();
+      const int n = deformer->volumeMesh()->numVertices(), entries = (d + 1) * (d + 1);
+      ASSERT_TRUE(C.isSparse());
+      ASSERT_GT(C.exteriorBlends.size(), 0u) << "the case has points outside";
+      EXPECT_EQ(C.storedColumns(), entries);
+      EXPECT_EQ(C.columns(), (d + 1) * n + d + 1);
+      const std::size_t valueBytes = floatStorage ? 4 : 8;
+      EXPECT_EQ(C.bytes(), static_cast<std::size_t>(C.rows() * entries) * (valueBytes + 4));
+      EXPECT_EQ(estimateCoordinateBytes(methods::phong(), d, n, c.cage.numFaces(), 80, floatStorage),
+                static_cast<std::size_t>(80 * entries) * (valueBytes + 4));
+
+      const FrameCoordinates dense = denseFrameCoordinates(C);
+      ASSERT_FALSE(dense.isSparse());
+      ASSERT_EQ(dense.columns(), C.columns());
+      const Eigen::MatrixXd posed = test::bendPose(c.cage.vertices, 0.3, 4);
+      const FrameWeights W = deformer->frameWeights(posed, atNu(0.3));
+      Eigen::MatrixXd fromDense;
+      evaluateFrame(dense, W, d, 1, fromDense);
+      const double diameter = cageDiameter(c.cage.vertices), tolerance = floatStorage ? 1e-6 : 1e-12;
+      EXPECT_LE((deformer->deform(posed, atNu(0.3)) - fromDense).cwiseAbs().maxCoeff() / diameter, tolerance);
+
+      // J: the gradient rows are sparse too, with C's columns.
+      const std::vector<FrameCoordinates> sparseGradients = deformer->coordinateGradients(points, noProgress);
+      ASSERT_EQ(sparseGradients.size(), static_cast<std::size_t>(d));
+      for (const FrameCoordinates& g : sparseGradients) {
+        ASSERT_TRUE(g.isSparse());
+        CoordinateMatrix<double> ySparse, yDense;
+        evaluateFrameOutputs(g, W, 1, ySparse);
+        evaluateFrameOutputs(denseFrameCoordinates(g), W, 1, yDense);
+        EXPECT_LE((ySparse - yDense).cwiseAbs().maxCoeff(), tolerance);
+        EXPECT_GT(ySparse.cwiseAbs().maxCoeff(), 0.1) << "the gradients are not all zero";
+      }
+    }
+}
+
+// A mesher that made another mesh than asked (cage_tetrahedralization.h: Mesh_3 fell back to TetGen) is a Warning
+// notice of prepareVolumeMesh, which every front end shows (the CLI on stderr, Python as a SomiCageWarning, the
+// editor in its status bar); a mesh as asked gives none.
+TEST(PhongMethod, AMesherFallbackIsAWarningNotice) {
+  for (bool fellBack : {false, true}) {
+    PrecomputeOptions options;
+    options.methodOptions["tet-level"] = "2";
+    options.volumeMesher = [&](const Cage& cage, const MethodOptions&, const ProgressCallback&) {
+      VolumeMesh mesh = tetrahedralizeCage(cage, 0);
+      if (fellBack) mesh.fallback = "CGAL's Mesh_3 did not finish";
+      return mesh;
+    };
+    std::vector<Notice> notices;
+    prepareVolumeMesh(methods::phong(), test::makeCube(), options, [&](const Notice& n) { notices.push_back(n); });
+    ASSERT_TRUE(options.volumeMesh);
+    ASSERT_EQ(notices.size(), fellBack ? 1u : 0u);
+    if (fellBack) {
+      EXPECT_EQ(notices[0].kind, Notice::Kind::Warning);
+      EXPECT_EQ(describeNotice(notices[0]), "warning: CGAL's Mesh_3 did not finish");
+    }
+  }
 }
 
 }  // namespace

@@ -129,6 +129,29 @@ TEST(EditorEventQueue, TypedTextGoesInAtOnceWhileATextFieldHasTheKeyboard) {
   EXPECT_EQ(q.takeFrame(true).size(), 1u);
 }
 
+// Issue 24, row 6: Ctrl+A after a click into a path field did not select all. While typing, printable keys went in
+// without splitting frames, Ctrl+A's too: its press and release fell in one frame and ImGui never saw A down.
+TEST(EditorEventQueue, AShortcutWhileTypingIsSeenWithItsModifier) {
+  InputEventQueue q;
+  q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_PRESS, 0));
+  tap(q, GLFW_KEY_A, GLFW_MOD_CONTROL);
+  q.push(InputEvent::key(GLFW_KEY_LEFT_CONTROL, 0, GLFW_RELEASE, GLFW_MOD_CONTROL));
+  tap(q, GLFW_KEY_X);  // typed text after it still goes in at once
+  q.push(InputEvent::character('x'));
+  StatePerFrame consumer;
+  bool ctrlHeldWhenAPressed = false;
+  int frames = 0;
+  while (!q.empty() && frames < 10) {
+    ++frames;
+    consumer.frame(q.takeFrame(true));
+    if (!ctrlHeldWhenAPressed &&
+        std::find(consumer.presses.begin(), consumer.presses.end(), GLFW_KEY_A) != consumer.presses.end())
+      ctrlHeldWhenAPressed = consumer.down[GLFW_KEY_LEFT_CONTROL];
+  }
+  EXPECT_TRUE(ctrlHeldWhenAPressed);
+  EXPECT_TRUE(q.empty());
+}
+
 TEST(EditorFramePacing, DrawsForInputThenSettlesThenSleeps) {
   FramePacer pacer;
   FrameDemand idle;

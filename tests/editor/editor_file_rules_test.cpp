@@ -254,3 +254,48 @@ TEST_F(Folder, OpenFillsTheMeshThenTheCageAndARecentEntryOpensOnlyOnOk) {
   EXPECT_NE(state.status.message.find("opened session"), std::string::npos) << state.status.message;
   EXPECT_EQ(fs::path(state.document.path), fs::path(path("s.json")));
 }
+
+// Issue 24, row 14: Save and Export started where the scene was opened from, the read-only models folder, and the
+// Export animation dialog showed a bare file name. A dialog that writes starts in a writable folder: its kind's
+// last one while writable, else the session's folder, else the working folder; Export animation's path is whole.
+// (A folder that does not exist stands in for the read-only one: this test may run as root, who can write anywhere.)
+TEST_F(Folder, SaveAndExportStartInAWritableFolderWithFullPaths) {
+  AppState state;
+  openDemoScene(state);
+  const std::string readOnly = path("models/firehydrant");  // never created
+  state.files.dialog.recentFolders = {readOnly};                  // the scene came from there
+  state.files.dialog.places[static_cast<std::size_t>(FileKind::PosedCage)] = {readOnly, "posed.obj"};
+  ASSERT_FALSE(folderWritable(readOnly));
+  ASSERT_TRUE(folderWritable(root.string()));
+  const std::string cwd = fs::current_path().string();
+  ASSERT_TRUE(folderWritable(cwd));
+  for (FileDialogPurpose purpose : {FileDialogPurpose::SaveSession, FileDialogPurpose::ExportMesh,
+                                    FileDialogPurpose::SavePose, FileDialogPurpose::Screenshot}) {
+    openFileDialog(state, purpose);
+    EXPECT_EQ(state.files.dialog.folder, cwd) << purposeTitle(purpose);
+    cancelFileDialog(state);
+  }
+  // Reading still starts where the last file came from.
+  openFileDialog(state, FileDialogPurpose::LoadPose);
+  EXPECT_EQ(state.files.dialog.folder, readOnly);
+  cancelFileDialog(state);
+
+  // With a session saved in a writable folder, that folder; a writable folder the kind used last wins.
+  openFileDialog(state, FileDialogPurpose::SaveSession);
+  state.files.dialog.name = path("sub/s.json");
+  ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
+  openFileDialog(state, FileDialogPurpose::ExportMesh);
+  EXPECT_EQ(state.files.dialog.folder, path("sub"));
+  cancelFileDialog(state);
+  EXPECT_EQ(defaultWriteFolder(state), path("sub"));
+  state.files.dialog.places[static_cast<std::size_t>(FileKind::DeformedMesh)] = {root.string(), "d.obj"};
+  openFileDialog(state, FileDialogPurpose::ExportMesh);
+  EXPECT_EQ(state.files.dialog.folder, root.string());
+  cancelFileDialog(state);
+
+  // Export animation: a bare name becomes a path in the session's folder; a whole path stays as typed.
+  EXPECT_EQ(writePath(state, "animation.glb"), path("sub/animation.glb"));
+  EXPECT_EQ(writePath(state, "/tmp/x/a.glb"), "/tmp/x/a.glb");
+  const AppState fresh;  // no session: the working folder
+  EXPECT_TRUE(fs::path(writePath(fresh, "animation.glb")).is_absolute());
+}

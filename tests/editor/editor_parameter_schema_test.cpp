@@ -3,6 +3,10 @@
 // and in its help, in --view specs, view labels and sessions, and in the measurement key; the spellings kept from
 // before (--local, --traction-fix off, a session's "tractionCorrection") still read as they did.
 #include <gtest/gtest.h>
+#include <imgui.h>
+#include <imgui_internal.h>  // GImGui->LogBuffer: the text a frame drew
+
+#include <cstring>
 
 #include "app_state.h"
 #include "core/constant_method.h"
@@ -11,6 +15,7 @@
 #include "json.h"
 #include "measure_worker.h"
 #include "methods/method_descriptors.h"
+#include "parameter_panel.h"
 #include "session.h"
 
 namespace somicage::editor {
@@ -66,6 +71,76 @@ TEST(EditorParameterSchema, ARegisteredParameterAndMethodReachEveryEditorFrontEn
   b.views = a.views;
   b.views[0].params.extra["test-shift"] = 0.5;
   EXPECT_TRUE(measureKey(a) != measureKey(b));
+}
+
+// The control panel's parameter widgets are one loop over the table (parameter_panel.h): a row registered here
+// gets its slider, with the row's key, range and tooltip, enabled while a view of a method reading it is shown;
+// drawn in a real (headless) ImGui frame, its label is among the texts the panel draws. Before, the panel's sliders
+// and boxes were written by hand and a new row never showed.
+TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
+  const ConstantMethodRegistration registration;
+  AppState state;
+  state.document.method = test::constantMethod();
+  const auto width = [](const char* text) { return 7.0f * static_cast<float>(std::strlen(text)); };
+  std::vector<ParameterWidget> widgets = parameterWidgets(state, 320, width);
+  ASSERT_EQ(widgets.size(), parameterSchema().size());
+  const auto find = [&](const char* key) -> const ParameterWidget* {
+    for (const ParameterWidget& w : widgets)
+      if (std::string(w.spec->key) == key) return &w;
+    return nullptr;
+  };
+  const ParameterWidget* shift = find("test-shift");
+  ASSERT_NE(shift, nullptr);
+  EXPECT_EQ(shift->kind, ParameterWidgetKind::Slider);
+  EXPECT_EQ(shift->label, "test-shift");
+  EXPECT_EQ(shift->min, -1.0f);  // the row's closed range [-1, 1]
+  EXPECT_EQ(shift->max, 1.0f);
+  EXPECT_TRUE(shift->enabled);
+  EXPECT_NE(shift->tooltip.find("moves the constant method's points along x"), std::string::npos) << shift->tooltip;
+  EXPECT_NE(shift->tooltip.find("Read by Constant."), std::string::npos) << shift->tooltip;
+  EXPECT_FALSE(find("nu")->enabled);  // the constant method reads no nu
+  // The built-in rows by their type: nu's open range (-1, 0.5) inset, switches as boxes, choices listed.
+  const ParameterWidget* nu = find("nu");
+  EXPECT_GT(nu->min, -1.0f);
+  EXPECT_LT(nu->max, 0.5f);
+  EXPECT_GT(nu->max, 0.45f);
+  EXPECT_EQ(find("traction-fix")->kind, ParameterWidgetKind::Checkbox);
+  EXPECT_NE(find("bulging")->kind, ParameterWidgetKind::Slider);
+  EXPECT_NE(find("bulging")->tooltip.find("swept-volume"), std::string::npos);
+
+  state.document.method = methods::somigliana();
+  widgets = parameterWidgets(state, 320, width);
+  EXPECT_FALSE(find("test-shift")->enabled);
+  EXPECT_TRUE(find("nu")->enabled);
+  EXPECT_TRUE(find("blend")->enabled) << "the global variant is the paper's at blend 0";
+  setVariant(state.document.params, "affine", "test");
+  widgets = parameterWidgets(state, 320, width);
+  EXPECT_FALSE(find("blend")->enabled) << "blend applies to the paper's variant only";
+  EXPECT_FALSE(find("corotational")->enabled) << "BEM's alone";
+
+  // A real frame: the panel draws the new row's label.
+  ImGuiContext* context = ImGui::CreateContext();
+  ImGuiIO& io = ImGui::GetIO();
+  io.DisplaySize = ImVec2(800, 600);
+  io.IniFilename = nullptr;
+  unsigned char* pixels = nullptr;
+  int w = 0, h = 0;
+  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  ImGui::NewFrame();
+  ImGui::SetNextWindowSize(ImVec2(340, 560));
+  ImGui::Begin("Controls");
+  state.document.method = test::constantMethod();
+  ImGui::LogToBuffer();
+  drawParameterWidgets(state);
+  const std::string drawn = GImGui->LogBuffer.c_str();
+  ImGui::LogFinish();
+  ImGui::End();
+  ImGui::Render();
+  ImGui::DestroyContext(context);
+  for (const ParameterSpec& spec : parameterSchema())
+    EXPECT_NE(drawn.find(spec.type == ParameterType::Switch ? spec.label : spec.key), std::string::npos)
+        << spec.key << " not drawn:\n" << drawn;
+  EXPECT_NE(drawn.find("test-shift"), std::string::npos) << drawn;
 }
 
 // The measurement key held blend, nu, gamma, the two switches and the two choices but not the variant's kind, so

@@ -10,6 +10,8 @@
 #include "cage_repair.h"
 #include "cage_tetrahedralization.h"
 #include "cage_validation.h"
+#include "core/constant_method.h"
+#include "errors.h"
 #include "memory_estimate.h"
 #include "methods/method_descriptors.h"
 #include "precompute_worker.h"
@@ -155,6 +157,54 @@ TEST(EditorWorker, CancelStopsWithoutResults) {
   EXPECT_EQ(done->deformers.size(), 1u);
 }
 
+namespace {
+
+// A method whose precompute reports progress until it is told to stop, then stops as every precompute does
+// (throws Cancelled): a cancel that arrives while a method is precomputing, deterministically, whatever the speed.
+std::atomic<bool> blockingEntered{false};
+const MethodDescriptor& blockingMethod() {
+  static const MethodDescriptor descriptor = [] {
+    MethodDescriptor d = test::constantMethod();
+    d.name = "blocking";
+    d.displayName = "Blocking";
+    d.precompute = [](const Cage&, const Eigen::MatrixXd&, const PrecomputeOptions&,
+                      const ProgressCallback& progress) -> std::unique_ptr<CageDeformer> {
+      blockingEntered = true;
+      while (progress(0.5)) std::this_thread::yield();
+      throw Cancelled();
+    };
+    return d;
+  }();
+  return descriptor;
+}
+
+}  // namespace
+
+// Issue 23: the cancel tests accepted both outcomes. A cancel in the middle of the second method's precompute: the
+// outcome is cancelled and delivers nothing, not even the first method's finished deformer; the worker then runs the
+// next request whole.
+TEST(EditorWorker, ACancelDuringAPrecomputeDeliversNoDeformer) {
+  PrecomputeWorker worker;
+  PrecomputeRequest r;
+  r.scene = std::make_shared<const Scene>(makeDemoScene(3));
+  r.methods = {methods::green(), Method(blockingMethod())};
+  blockingEntered = false;
+  worker.start(r);
+  while (!blockingEntered) std::this_thread::yield();  // green is done, the blocking precompute runs
+  worker.cancel();
+  const std::optional<PrecomputeOutcome> out = worker.wait();
+  ASSERT_TRUE(out.has_value());
+  EXPECT_TRUE(out->cancelled);
+  EXPECT_TRUE(out->deformers.empty());
+  EXPECT_TRUE(out->error.empty()) << out->error;
+  r.methods = {methods::green()};
+  worker.start(r);
+  const std::optional<PrecomputeOutcome> again = worker.wait();
+  ASSERT_TRUE(again.has_value());
+  EXPECT_FALSE(again->cancelled);
+  EXPECT_EQ(again->deformers.size(), 1u);
+}
+
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   AppState state;
   state.view.compare = true;
@@ -281,9 +331,9 @@ TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   expectSceneKept(state, kept);
 }
 
-// A Phong deformer's columns are per vertex of its tetrahedral mesh: the check counts them (the mesh is made first,
-// then used by the precompute), so a limit between the estimate from the cage's vertices and the one from the mesh's
-// refuses it. Before, it counted the cage's vertices and let it through.
+// A Phong deformer's layout has columns per vertex of its tetrahedral mesh, stored as sparse rows (16 entries a point
+// whatever the mesh): the check is made with the mesh made first, which the precompute then uses, and a limit just
+// below what it needs refuses it.
 TEST(EditorWorker, APhongPrecomputeCountsItsTetrahedralMeshInTheMemoryCheck) {
   const auto scene = std::make_shared<const Scene>(makeDemoScene(3));
   PrecomputeRequest request;
@@ -298,8 +348,9 @@ TEST(EditorWorker, APhongPrecomputeCountsItsTetrahedralMeshInTheMemoryCheck) {
                                     request.options.floatStorage, request.options.threads)
         .total();
   };
-  const double limit = 0.5 * static_cast<double>(total(scene->restCage.numVertices()) + total(meshVertices)) /
-                       kMemorySafetyFraction;
+  // Sparse rows: C's size does not depend on the mesh (coordinate_layout.h).
+  EXPECT_EQ(total(scene->restCage.numVertices()), total(meshVertices));
+  const double limit = 0.99 * static_cast<double>(total(meshVertices)) / kMemorySafetyFraction;
   PrecomputeWorker worker;
   ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", std::to_string(static_cast<long long>(limit)).c_str(), 1);
   worker.start(request);
@@ -339,4 +390,32 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   EXPECT_TRUE(state.status.errors.empty());
   EXPECT_EQ(state.status.message, "precomputation cancelled");
   expectSceneKept(state, kept);
+}
+
+// When Mesh_3 does not finish the tetrahedral mesh asked for (here: a millisecond's bound at level 3) and TetGen's
+// comes instead, the user is told: the outcome carries the warning and installing it puts it in the status bar.
+TEST(EditorWorker, AMesh3FallbackToTetGenIsShownInTheStatusBar) {
+  AppState state;
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> loaded = state.jobs.precompute.wait();
+  ASSERT_TRUE(loaded.has_value());
+  installOutcome(state, std::move(*loaded));
+  ASSERT_TRUE(state.model.scene);
+  PrecomputeRequest request;
+  request.scene = state.model.scene;
+  request.methods = {DeformerKey(methods::phong(), {{"tet-level", "3"}})};  // not the demo cage's star
+  request.options.volumeMesher = [](const Cage& cage, const MethodOptions&, const ProgressCallback& progress) {
+    return tetrahedralizeCage(cage, 3, progress, {1e-3, 500000});
+  };
+  PrecomputeWorker worker;
+  worker.start(request);
+  std::optional<PrecomputeOutcome> out = worker.wait();
+  ASSERT_TRUE(out.has_value() && out->error.empty()) << (out ? out->error : "");
+  ASSERT_EQ(out->notices.size(), 1u);
+  EXPECT_NE(out->notices[0].find("Phong: warning: CGAL's Mesh_3 did not finish"), std::string::npos)
+      << out->notices[0];
+  state.status.message.clear();
+  installOutcome(state, std::move(*out));
+  EXPECT_NE(state.status.message.find("TetGen's constrained tetrahedralization"), std::string::npos)
+      << state.status.message;
 }

@@ -26,8 +26,10 @@ Eigen::MatrixXd independentFrame(const FrameCoordinates& C, const FrameWeights& 
   Eigen::MatrixXd out(C.numPoints(), d);
   for (int p = 0; p < C.numPoints(); ++p) {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(W.outputs);
-    for (int k = 0; k < C.columns(); ++k) {
-      const double c = C.isFloat() ? C.floats(p, k) : C.doubles(p, k);
+    // Stored entry e of the row is column k of C: e itself (dense), or its entryColumns (sparse rows: Phong).
+    for (int e = 0; e < C.storedColumns(); ++e) {
+      const double c = C.isFloat() ? C.floats(p, e) : C.doubles(p, e);
+      const int k = C.isSparse() ? C.entryColumns(p, e) : e;
       for (int j = 0; j < W.outputs; ++j) {
         if (k < C.mainColumns && j >= W.mainOffset) y(j) += c * W.main(k, j - W.mainOffset);
         if (k >= C.mainColumns) y(j) += c * W.tail(k - C.mainColumns, j);

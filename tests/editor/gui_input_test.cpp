@@ -483,3 +483,45 @@ TEST(GuiInput, TheMeshIsDrawnWhileThePrecomputeRuns) {
       "precompute and after it\n",
       100 * covered, 100 * differs);
 }
+
+// Issue 24, row 6, by real input: in File > Open, one click on a file fills the mesh field and opens nothing, and a
+// double click on a second file fills the cage field and opens the scene. Open again (the fields hold the scene's
+// files, Recent one entry more): a click into the mesh field, Ctrl+A and a typed path replace the whole path
+// (before, Ctrl+A while typing was lost and the path was typed into the old one), and OK, where it was before
+// Recent grew, opens it. Then in Save session a click into the file name, Ctrl+A and a name save under exactly that
+// name. Observed in the saved session (its mesh and cage) and the files written. Pixel positions: the dialogs at
+// 1000x700 with ImGui 1.86's default font, read off the screenshots (the list's rows 17 pixels apart from y = 231).
+TEST(GuiInput, FileBrowserDoubleClickOpensAndCtrlASelectsThePath) {
+  SKIP_WITHOUT_X_TOOLS();
+  const gui_test::TestFiles f = gui_test::writeTestFiles();
+  const fs::path dir = kOut / "file_browser";
+  const std::string out = runScenario(
+      dir,
+      "cp '" + f.mesh + "' mesh.obj; cp '" + f.mesh + "' other_mesh.obj; cp '" + f.cage +
+          "' cage.obj\n"
+          "start\nxdotool key ctrl+o; waitfor 'dialog Open mesh + cage' 1 15 || exit 4; settle\n"
+          // [config], cage.obj, mesh.obj, other_mesh.obj: one click on mesh.obj, a double click on cage.obj.
+          "xdotool mousemove 220 265 click 1; settle\n"
+          "[ $(grep -c '^job precompute' \"$log\") -eq 1 ] && echo 'one click: nothing opened'\n"
+          "shot open.png; xdotool mousemove 220 248 click --repeat 2 --delay 120 1\n"
+          "waitfor 'job precompute' 2 60 || exit 4; settle\n"
+          "xdotool key ctrl+o; waitfor 'dialog Open mesh + cage' 2 15 || exit 4; settle\n"
+          "xdotool mousemove 400 133 click 1; sleep 0.5; xdotool key ctrl+a\n"
+          "xdotool type --delay 20 \"$PWD/other_mesh.obj\"; settle; shot typed.png\n"
+          "xdotool mousemove 199 584 click 1; waitfor 'job precompute' 3 60 || exit 4; settle\n"
+          "xdotool key ctrl+s; waitfor 'dialog Save session' 1 15 || exit 4; settle\n"
+          "xdotool mousemove 215 462 click 1; sleep 0.5; xdotool key ctrl+a; xdotool type --delay 20 'typed.json'\n"
+          "xdotool key Return; for i in $(seq 1 300); do [ -f typed.json ] && break; sleep 0.1; done\n"
+          "settle; xdotool key ctrl+q; settle; alive && xdotool key d; finish\n");
+  EXPECT_NE(out.find("one click: nothing opened"), std::string::npos) << out;
+  ASSERT_TRUE(fs::exists(dir / "typed.json")) << out;
+  int sessions = 0;
+  for (const fs::directory_entry& e : fs::directory_iterator(dir)) sessions += e.path().extension() == ".json";
+  EXPECT_EQ(sessions, 1) << "a name typed into the old one";
+  const Session s = loadSession((dir / "typed.json").string());
+  ASSERT_TRUE(fs::exists(s.meshPath) && fs::exists(s.cagePath)) << s.meshPath << " " << s.cagePath;
+  EXPECT_TRUE(fs::equivalent(s.meshPath, dir / "other_mesh.obj"))
+      << s.meshPath << ": the typed path did not replace the scene's";
+  EXPECT_TRUE(fs::equivalent(s.cagePath, dir / "cage.obj")) << s.cagePath << ": not the double-clicked cage";
+  EXPECT_NE(out.find("exit 0"), std::string::npos) << out;
+}
