@@ -11,11 +11,11 @@
 #include <filesystem>
 #include <variant>
 
-#include "cpu_dispatch.h"
-#include "errors.h"
-#include "mesh_formats.h"
+#include "base/cpu_dispatch.h"
+#include "base/errors.h"
+#include "deform/parameter_schema.h"
+#include "io/mesh_formats.h"
 #include "numpy_arrays.h"
-#include "parameter_schema.h"
 #include "python_cage.h"
 #include "python_deformer.h"
 #include "python_errors.h"
@@ -43,7 +43,7 @@ void requireObjExtension(const std::string& path) {
                      "name the file .obj");
 }
 
-// The engine's parameter ranges (core/deformer.h) by Deformer.deform keyword: the editor's and the CLI's too.
+// The engine's parameter ranges (core/deform/deformer.h) by Deformer.deform keyword: the editor's and the CLI's too.
 py::dict parameterRanges() {
   py::dict ranges;
   for (const ParameterSpec& spec : parameterSchema())
@@ -52,7 +52,7 @@ py::dict parameterRanges() {
   return ranges;
 }
 
-// The parameter table (core/parameter_schema.h), one dict per row: what the Blender add-on builds its panel from
+// The parameter table (core/deform/parameter_schema.h), one dict per row: what the Blender add-on builds its panel from
 // and what the tests compare the keywords, the stub and the add-on with.
 py::list parameterSchemaInfo() {
   py::list list;
@@ -261,7 +261,7 @@ PYBIND11_MODULE(_somicage, module) {
         for (Method method : allMethods()) names.push_back(methodName(method));
         return names;
       },
-      "The method names Deformer takes (the engine's registry, core/method.h).");
+      "The method names Deformer takes (the engine's registry, core/deform/method.h).");
   module.def(
       "method_info",
       [] {
@@ -278,10 +278,11 @@ PYBIND11_MODULE(_somicage, module) {
   module.def(
       "parameter_ranges", [] { return parameterRanges(); },
       "{keyword: (min, max)} of Deformer.deform's numbers and Deformer's threads, from the engine's one list "
-      "(core/deformer.h) that the command line and the editor check too: nu in the open interval (or +-inf), "
+      "(core/deform/deformer.h) that the command line and the editor check too: nu in the open interval (or +-inf), "
       "gamma, blend and threads in the closed one.");
   module.def("parameter_schema", &parameterSchemaInfo,
-             "The engine's table of deformation parameters (core/parameter_schema.h), one dict per parameter: key, "
+             "The engine's table of deformation parameters (core/deform/parameter_schema.h), one dict per parameter: "
+             "key, "
              "type (number, switch, choice), keyword (Deformer.deform's), session_key, view_key, cli_flag, label, "
              "tooltip, range, open_range, infinities, default, values ((name, description) of a choice) and methods "
              "(those that read it).");

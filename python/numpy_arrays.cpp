@@ -3,7 +3,7 @@
 #include <cmath>
 #include <type_traits>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace py = pybind11;
 

@@ -5,7 +5,7 @@
 // Any dtype that holds real numbers is taken (float16 ... float64 and longer, int8 ... uint64), in any memory order
 // and with any strides (views, slices): NumPy converts it to double (or a 64-bit integer for indices) into an array
 // that this code owns and keeps alive while it copies from it, once, into the column-major Eigen::MatrixXd the
-// engine's API owns (core/deformer.h). That is #P x d doubles at bind time (under 1% of the precompute's
+// engine's API owns (core/deform/deformer.h). That is #P x d doubles at bind time (under 1% of the precompute's
 // coordinate matrix, #P x 10 #V doubles) and #V x d per frame (a cage: a few kB).
 #pragma once
 

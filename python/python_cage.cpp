@@ -4,9 +4,9 @@
 
 #include <variant>
 
-#include "cage_check.h"
-#include "engine.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "cage/cage_check.h"
+#include "engine/engine.h"
 #include "numpy_arrays.h"
 #include "python_errors.h"
 

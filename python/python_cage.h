@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cage.h"
+#include "geometry/cage.h"
 #include "numpy_arrays.h"
 
 namespace somicage {
@@ -29,7 +29,7 @@ Cage cageFromArrays(const ArrayArgument& vertices, const std::optional<ArrayArgu
 // as a somicage.SomiCageWarning in the command line's words.
 PythonCage makeUsableCage(Cage cage, std::string source);
 
-// The cage keys and values of `somicage check --json` (core/cage_check.h, the one place both are made) as a dict.
+// The cage keys and values of `somicage check --json` (core/cage/cage_check.h, the one place both are made) as a dict.
 pybind11::dict checkReport(const Cage& cage, const std::string& source);
 
 }  // namespace somicage

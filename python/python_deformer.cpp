@@ -2,14 +2,14 @@
 
 #include <algorithm>
 
-#include "cage_tetrahedralization.h"
-#include "deform_choices.h"
-#include "engine.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "deform/deform_choices.h"
+#include "deform/parameter_schema.h"
+#include "engine/engine.h"
 #include "numpy_arrays.h"
-#include "parameter_schema.h"
 #include "python_errors.h"
 #include "python_progress.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace py = pybind11;
 

@@ -14,8 +14,8 @@
 #include <tuple>
 #include <vector>
 
-#include "deformer.h"
-#include "jacobian.h"
+#include "deform/deformer.h"
+#include "deform/jacobian.h"
 #include "numpy_arrays.h"
 #include "python_cage.h"
 #include "python_progress.h"

@@ -1,6 +1,6 @@
 #include "python_errors.h"
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace py = pybind11;
 

@@ -1,5 +1,5 @@
-// The engine's progress callback (core/progress.h) for a computation that runs with the GIL released: at most every
-// kInterval seconds (and at the end) it takes the GIL back, runs Python's signal handlers (so Ctrl-C stops the
+// The engine's progress callback (core/base/progress.h) for a computation that runs with the GIL released: at most
+// every kInterval seconds (and at the end) it takes the GIL back, runs Python's signal handlers (so Ctrl-C stops the
 // computation) and calls the user's callback(fraction). The callback returning False, or raising (KeyboardInterrupt
 // included), asks the engine to stop; finish() then raises that exception, or somicage.Cancelled.
 #pragma once
@@ -9,7 +9,7 @@
 #include <chrono>
 #include <optional>
 
-#include "progress.h"
+#include "base/progress.h"
 
 namespace somicage {
 

@@ -3,13 +3,13 @@
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
 
-#include "engine.h"
-#include "mesh_formats.h"
-#include "obj_io.h"
-#include "parameter_schema.h"
-#include "pose_timeline.h"
+#include "animation/pose_timeline.h"
+#include "deform/parameter_schema.h"
+#include "engine/engine.h"
+#include "engine/session.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
 #include "python_cage.h"
-#include "session.h"
 
 namespace py = pybind11;
 

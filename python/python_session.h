@@ -1,4 +1,4 @@
-// somicage.load_session: an editor session (core/session.h, the reader the editor and `somicage animate` use) as
+// somicage.load_session: an editor session (core/engine/session.h, the reader the editor and `somicage animate` use) as
 // plain Python values, with its timeline evaluated frame by frame as the editor plays it.
 #pragma once
 

@@ -3,7 +3,7 @@
 // every OffscreenGlContext it must not live while the editor (or anything else using GLFW) runs in the process.
 #pragma once
 
-#include "frame_evaluator.h"
+#include "deform/frame_evaluator.h"
 
 namespace somicage::render {
 

@@ -6,7 +6,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "gpu_deformer.h"
 
 namespace somicage::render {

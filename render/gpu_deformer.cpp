@@ -12,7 +12,7 @@
 #include <tuple>
 #include <vector>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "gl_compute.h"
 
 namespace somicage::render {
@@ -59,8 +59,8 @@ struct GpuDeformer::Impl {
   GpuDeformerLayout layout;
   const CageDeformer* deformer = nullptr;
   int numPoints = 0, dim = 0, mainColumns = 0, tailColumns = 0;
-  int numBlends = 0;  // exterior points #E: C has #P + 2 #E rows (core/frame_evaluation.h)
-  int rowEntries = 0;  // C in sparse rows (core/coordinate_layout.h): the entries per row; 0: dense
+  int numBlends = 0;  // exterior points #E: C has #P + 2 #E rows (core/deform/frame_evaluation.h)
+  int rowEntries = 0;  // C in sparse rows (core/deform/coordinate_layout.h): the entries per row; 0: dense
 
   // Row chunks of C, each small enough for one storage block binding (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) and
   // starting at an offset the driver accepts (GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT).
@@ -87,7 +87,7 @@ struct GpuDeformer::Impl {
   double lastCpuMs = std::numeric_limits<double>::quiet_NaN();
   double lastGpuMs = std::numeric_limits<double>::quiet_NaN();
 
-  // The shader's FINISH is the frame's (core/frame_finish.h); OUTPUTS follows from it.
+  // The shader's FINISH is the frame's (core/deform/frame_finish.h); OUTPUTS follows from it.
   const GlComputeProgram& kernel(int d, FrameFinish finish, int mainOffset, bool sparse) {
     const int outputs = frameOutputs(finish, d);
     const auto key = std::make_tuple(d, outputs, mainOffset, sparse);
@@ -221,8 +221,8 @@ void GpuDeformer::upload(const CageDeformer& deformer) {
   Impl& m = *impl_;
   m.deformer = nullptr;
   const FrameCoordinates& C = deformer.frameCoordinates();
-  // A sparse C (core/coordinate_layout.h) is stored as its entries per row, their columns in a second buffer of the
-  // same layout: the chunks below fit both.
+  // A sparse C (core/deform/coordinate_layout.h) is stored as its entries per row, their columns in a second buffer of
+  // the same layout: the chunks below fit both.
   const int rows = C.rows(), columns = C.columns(), stored = C.storedColumns();
 
   // ---- chunks that fit one storage block binding each ----

@@ -1,5 +1,5 @@
 // The editor's per-frame deformation on the GPU: an OpenGL 4.3 compute shader that evaluates exactly what
-// evaluateFrame() (core/frame_evaluation.h) does on the CPU, for every method and with the exterior blend, and
+// evaluateFrame() (core/deform/frame_evaluation.h) does on the CPU, for every method and with the exterior blend, and
 // writes the deformed positions straight into a MeshRenderer's vertex buffer; two more passes compute its smooth
 // vertex normals there. Per frame only W (K by at most 12 floats) goes up; positions never come back to the CPU
 // (readBack() is for tests). No GL types in this header; create, use and destroy only while the GL context that
@@ -15,7 +15,7 @@
 #include <memory>
 #include <string>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "mesh_renderer.h"
 
 namespace somicage::render {

@@ -1,17 +1,17 @@
 #version 430 core
-// One frame of core/frame_evaluation.h on the GPU (render/gpu_deformer.cpp):
+// One frame of core/deform/frame_evaluation.h on the GPU (render/gpu_deformer.cpp):
 //
 //   y_p   = C_p,main . W_main  (into the outputs from MAIN_OFFSET on)  +  C_p,tail . W_tail
 //   out_p = y_p                                  when FINISH == 0 (FrameFinish::Linear: Green, mean value, ...)
 //   out_p = T_p^-1 b_p, T_p = y_p[0 : DIM^2] row-major, b_p = y_p[DIM^2 :]   when FINISH == 1 (SolveT: Eq. 11)
 //
 // Compile-time constants, defined by render/gpu_deformer.cpp right after the #version line:
-//   DIM (2 or 3), FINISH (core/frame_finish.h: 0 Linear, 1 SolveT), OUTPUTS (DIM or DIM*DIM+DIM, FINISH's),
+//   DIM (2 or 3), FINISH (core/deform/frame_finish.h: 0 Linear, 1 SolveT), OUTPUTS (DIM or DIM*DIM+DIM, FINISH's),
 //   MAIN_OFFSET (first output that W_main feeds),
 //   ROW_THREADS (invocations sharing one point: they read its row of C side by side, coalesced, and reduce in
 //   shared memory; 1 = one invocation per point), GROUP_POINTS (points per work group), SPARSE (1: C is stored as
-//   sparse rows of uRowEntries (value, column) pairs, core/coordinate_layout.h; 0: dense rows).
-// Rows from uMeshPoints on are the exterior points' proxy and anchor rows (core/frame_evaluation.h): they go to
+//   sparse rows of uRowEntries (value, column) pairs, core/deform/coordinate_layout.h; 0: dense rows).
+// Rows from uMeshPoints on are the exterior points' proxy and anchor rows (core/deform/frame_evaluation.h): they go to
 // the Extra buffer, which shaders/exterior_blend.comp.glsl then folds into the positions.
 // Storage is float throughout (C converted once at upload, W every frame): the error budget is in
 // render/gpu_deformer.h.
@@ -40,7 +40,7 @@ uniform uint uFirstPoint;
 uniform uint uMainColumns;
 uniform uint uTailColumns;
 uniform vec3 uOrigin;  // FrameWeights::origin: the solve returns uOrigin + T^-1 b
-// kSingularT of core/frame_point_kernel.h for float sums: below it det T is rounding noise in float.
+// kSingularT of core/deform/frame_point_kernel.h for float sums: below it det T is rounding noise in float.
 const float SINGULAR_T = 1e-6;
 
 #if ROW_THREADS > 1
@@ -55,14 +55,14 @@ vec3 finish(float y[OUTPUTS]) {
   return vec3(y[0], y[1], 0.0);
 #endif
 #elif DIM == 3
-  // T = S + A (core/frame_evaluation.h): S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w, omega = y[6..8].
-  // mat3(...) fills columns, so the rows below are written as columns and transposed; solve T x = b.
+  // T = S + A (core/deform/frame_evaluation.h): S = (xx, yy, zz, xy, xz, yz) = y[0..5], A w = omega x w, omega =
+  // y[6..8]. mat3(...) fills columns, so the rows below are written as columns and transposed; solve T x = b.
   const mat3 T = transpose(mat3(y[0], y[3] - y[8], y[4] + y[7],
                                 y[3] + y[8], y[1], y[5] - y[6],
                                 y[4] - y[7], y[5] + y[6], y[2]));
   const vec3 b = vec3(y[9], y[10], y[11]);
   const float norm2 = dot(T[0], T[0]) + dot(T[1], T[1]) + dot(T[2], T[2]);
-  // Singular T (core/frame_point_kernel.h): the regularised least-squares solution instead.
+  // Singular T (core/deform/frame_point_kernel.h): the regularised least-squares solution instead.
   if (abs(determinant(T)) > SINGULAR_T * norm2 * sqrt(norm2)) return uOrigin + inverse(T) * b;
   if (!(norm2 > 0.0)) return uOrigin;
   const mat3 Tt = transpose(T);

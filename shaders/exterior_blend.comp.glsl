@@ -1,6 +1,6 @@
 #version 430 core
-// The exterior blend of core/frame_evaluation.h on the GPU (render/gpu_deformer.cpp), after deform_frame.comp.glsl
-// has written every exterior point's proxy and anchor rows to Extra:
+// The exterior blend of core/deform/frame_evaluation.h on the GPU (render/gpu_deformer.cpp), after
+// deform_frame.comp.glsl has written every exterior point's proxy and anchor rows to Extra:
 //
 //   position_p += w (extra_{2e} - extra_{2e+1})        i.e.  x~ = S(x) + w(d) [phi(x_in) - S(x_in)]
 //

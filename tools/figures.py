@@ -633,7 +633,7 @@ def guide_timeline(out):  # a session with two poses keyed at frames 1 and 48: t
     points = np.vstack([read_vertices(mesh), rest, moved])
     lo, hi = points.min(axis=0), points.max(axis=0)
     radius = 0.5 * np.linalg.norm(hi - lo)
-    half_fov = math.radians(35) / 2  # the editor's framing (app/editor/camera.cpp, OrbitCamera::frame)
+    half_fov = math.radians(35) / 2  # the editor's framing (app/editor/interaction/camera.cpp, OrbitCamera::frame)
     session = {
         "format": "somicage-session", "version": 3, "mesh": mesh, "cage": cage, "demoDim": 3,
         "pose": moved.tolist(), "method": "somigliana",

@@ -6,7 +6,7 @@
 #include <limits>
 #include <sstream>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace somicage {
 

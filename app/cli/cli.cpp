@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.h"
 #include "cli/arg_parser.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
-#include "errors.h"
 
 namespace somicage {
 

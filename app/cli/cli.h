@@ -1,7 +1,7 @@
 // The headless command line: somicage deform | check | bench | help.
 #pragma once
 
-#include "frame_evaluator.h"
+#include "deform/frame_evaluator.h"
 
 namespace somicage {
 

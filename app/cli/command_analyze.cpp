@@ -1,21 +1,21 @@
 // somicage analyze: the numbers behind a pose (issue 12): volume change, det J, conformal distortion, fold-overs
-// and face area ratios of a deformed mesh, from the exact deformation gradient (core/jacobian.h); with a nu sweep,
-// and the per-vertex J as CSV.
+// and face area ratios of a deformed mesh, from the exact deformation gradient (core/deform/jacobian.h); with a nu
+// sweep, and the per-vertex J as CSV.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <limits>
 #include <sstream>
 
+#include "analysis/deformation_analysis.h"
+#include "base/errors.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
-#include "deformation_analysis.h"
-#include "deformer.h"
-#include "errors.h"
-#include "obj_io.h"
+#include "deform/deformer.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 

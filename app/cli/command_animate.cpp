@@ -3,17 +3,17 @@
 #include <iostream>
 #include <sstream>
 
-#include "animation_export.h"
-#include "cage_generation.h"
+#include "animation/animation_export.h"
+#include "base/errors.h"
+#include "base/file_util.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
-#include "errors.h"
-#include "file_util.h"
-#include "mesh_formats.h"
-#include "obj_io.h"
-#include "session.h"
+#include "engine/session.h"
+#include "generation/cage_generation.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 
@@ -56,7 +56,7 @@ void parseFrameRange(const std::string& text, int& first, int& last) {
 std::string animateUsage() {
   std::ostringstream out;
   out << "usage: " << kCommand << " --session S.json --out anim.glb|DIR/ [--fps 24] [--frames A:B]\n\n"
-      << "Plays the session's timeline (its keys, poses and interpolation; core/pose_timeline.h) and writes every\n"
+      << "Plays the session's timeline (its keys, poses and interpolation) and writes every\n"
       << "whole frame of A..B: a .glb OUT gets the mesh at frame A and one morph target per later frame N, named\n"
       << "frame_N, animated at F frames per second (Blender imports them as shape keys); a folder OUT (ending in '/',\n"
       << "or without an extension) becomes a new folder of NAME_0001.obj ... files (numbered by frame), each keeping\n"
@@ -81,7 +81,7 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   const AnimationOutput output = animationOutput(outPath);  // a.obj is refused before any work
   const int threads = threadsOption(args);
 
-  const Session session = loadSession(sessionPath);  // core/session.h: the editor's own reader
+  const Session session = loadSession(sessionPath);  // core/engine/session.h: the editor's own reader
   if (session.meshPath.empty()) {
     throw InputError(sessionPath, -1, "the session animates a built-in demo, which has no mesh file",
                      "open a mesh and a cage in the editor, key it, and save the session again");

@@ -10,21 +10,21 @@
 #include <numeric>
 #include <random>
 
-#include "bem_system.h"
+#include "analysis/deformation_analysis.h"
+#include "analysis/deformation_quantities.h"
+#include "base/cpu_dispatch.h"
 #include "cli/arg_parser.h"
 #include "cli/cli.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
-#include "cpu_dispatch.h"
-#include "deformation_analysis.h"
-#include "deformation_quantities.h"
-#include "elastic_steiner_solve.h"
-#include "jacobian.h"
+#include "coordinates/bem_system.h"
+#include "coordinates/elastic_steiner_solve.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/jacobian.h"
+#include "io/obj_io.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
-#include "somigliana_coordinates.h"
 
 namespace somicage {
 

@@ -1,17 +1,18 @@
-// somicage cage: makes a cage for a mesh (core/cage_generation.h) and writes it as OBJ, with how tight it is.
+// somicage cage: makes a cage for a mesh (core/generation/cage_generation.h) and writes it as OBJ, with how tight it
+// is.
 #include <iostream>
 #include <sstream>
 
-#include "cage_generation.h"
-#include "cage_validation.h"
+#include "base/errors.h"
+#include "cage/cage_validation.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
 #include "cli/tightness_report.h"
-#include "errors.h"
-#include "obj_io.h"
+#include "generation/cage_generation.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 

@@ -7,19 +7,19 @@
 #include <type_traits>
 #include <variant>
 
-#include "cage_check.h"
-#include "cage_enclosure.h"
-#include "cage_tetrahedralization.h"
+#include "base/errors.h"
+#include "cage/cage_check.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/json_writer.h"
 #include "cli/progress_reporter.h"
 #include "cli/tightness_report.h"
-#include "deformer.h"
-#include "errors.h"
-#include "obj_io.h"
-#include "somigliana_coordinates.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/deformer.h"
+#include "generation/cage_enclosure.h"
+#include "io/obj_io.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage {
 

@@ -4,15 +4,15 @@
 #include <iostream>
 #include <sstream>
 
+#include "animation/normal_transform.h"
+#include "base/errors.h"
 #include "cli/arg_parser.h"
 #include "cli/command_support.h"
 #include "cli/commands.h"
 #include "cli/progress_reporter.h"
-#include "deformer.h"
-#include "engine.h"
-#include "errors.h"
-#include "mesh_formats.h"
-#include "normal_transform.h"
+#include "deform/deformer.h"
+#include "engine/engine.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 

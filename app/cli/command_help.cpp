@@ -2,8 +2,8 @@
 #include <iostream>
 #include <sstream>
 
+#include "base/errors.h"
 #include "cli/commands.h"
-#include "errors.h"
 
 namespace somicage {
 

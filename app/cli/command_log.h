@@ -11,7 +11,7 @@
 
 #include "cli/arg_parser.h"
 #include "cli/progress_reporter.h"
-#include "engine.h"
+#include "engine/engine.h"
 
 namespace somicage {
 

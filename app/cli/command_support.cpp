@@ -5,10 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "cage_tetrahedralization.h"
-#include "errors.h"
-#include "memory_estimate.h"
-#include "parameter_schema.h"
+#include "base/errors.h"
+#include "deform/memory_estimate.h"
+#include "deform/parameter_schema.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage {
 

@@ -7,10 +7,10 @@
 
 #include "cli/arg_parser.h"
 #include "cli/command_log.h"
-#include "deformer.h"
-#include "engine.h"
-#include "mesh_formats.h"
-#include "obj_io.h"
+#include "deform/deformer.h"
+#include "engine/engine.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli/command_log.h"
-#include "frame_evaluator.h"
+#include "deform/frame_evaluator.h"
 
 namespace somicage {
 

@@ -1,6 +1,6 @@
 #include "cli/json_writer.h"
 
-#include "json.h"
+#include "base/json.h"
 
 namespace somicage {
 

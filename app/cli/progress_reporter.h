@@ -6,7 +6,7 @@
 #include <chrono>
 #include <string>
 
-#include "progress.h"
+#include "base/progress.h"
 
 namespace somicage {
 

@@ -1,11 +1,11 @@
-// How `somicage check` and `somicage cage` report a cage's fit around a mesh (core/cage_enclosure.h's
+// How `somicage check` and `somicage cage` report a cage's fit around a mesh (core/generation/cage_enclosure.h's
 // CageTightness): the same words and JSON keys in both.
 #pragma once
 
 #include <string>
 
-#include "cage_enclosure.h"
 #include "cli/json_writer.h"
+#include "generation/cage_enclosure.h"
 
 namespace somicage {
 

@@ -1,7 +1,7 @@
 // The interactive editor (GLFW + OpenGL + ImGui).
 #pragma once
 
-#include "frame_evaluator.h"
+#include "deform/frame_evaluator.h"
 
 namespace somicage {
 

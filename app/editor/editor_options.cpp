@@ -4,11 +4,11 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "cage_generation.h"
-#include "errors.h"
-#include "parse_number.h"
-#include "session.h"  // kMaxCompareViews
-#include "view_quantity.h"
+#include "base/errors.h"
+#include "base/parse_number.h"
+#include "engine/session.h"  // kMaxCompareViews
+#include "generation/cage_generation.h"
+#include "model/view_quantity.h"
 
 namespace somicage::editor {
 

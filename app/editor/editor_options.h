@@ -7,10 +7,10 @@
 #include <utility>
 #include <vector>
 
-#include "deformer.h"
-#include "frame_evaluator.h"
-#include "view_quantity.h"
-#include "view_spec.h"
+#include "deform/deformer.h"
+#include "deform/frame_evaluator.h"
+#include "engine/view_spec.h"
+#include "model/view_quantity.h"
 
 namespace somicage::editor {
 

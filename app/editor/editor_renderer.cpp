@@ -6,10 +6,10 @@
 #include <limits>
 #include <string>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "gl_context.h"
 #include "mesh_normals.h"
-#include "quantity_overlay.h"
+#include "ui/quantity_overlay.h"
 
 namespace somicage::editor {
 

@@ -9,11 +9,11 @@
 #include <memory>
 #include <vector>
 
-#include "app_state.h"
 #include "cage_renderer.h"
 #include "gpu_deformer.h"
-#include "layout.h"
 #include "mesh_renderer.h"
+#include "model/app_state.h"
+#include "ui/layout.h"
 
 namespace somicage::editor {
 

@@ -30,8 +30,8 @@ VARIANTS = [("global", "Global", "One best-fit rotation for the whole cage (Fig.
             ("local", "Local", "Per-face rotations blended to the vertices (Fig. 4)"),
             ("affine", "Affine", "Global with the best-fit affine map: reproduces any affine pose exactly"),
             ("stable", "Stable", "Local without the fold-overs local makes at high Poisson ratio")]
-# The engine's choice parameters (somicage.choice_info(), core/deform_choices.h), default first; Blender needs the
-# items when the class is defined, before the module may be found, so they are written out here (the add-on's test
+# The engine's choice parameters (somicage.choice_info(), core/deform/deform_choices.h), default first; Blender needs
+# the items when the class is defined, before the module may be found, so they are written out here (the add-on's test
 # compares them with choice_info()).
 BULGING = [("solid-angle", "Solid angle", "The paper's text: gamma times the change of the signed solid angle"),
            ("reference", "Reference", "The authors' code: gamma squared, unsigned solid angle (the paper's figures)"),

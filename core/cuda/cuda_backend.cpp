@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "errors.h"
-#include "parallel_failure.h"
-#include "triangle_integrals.h"
+#include "base/errors.h"
+#include "base/parallel_failure.h"
+#include "geometry/triangle_integrals.h"
 
 namespace somicage {
 

@@ -10,12 +10,12 @@
 #include <string>
 #include <vector>
 
-#include "cage.h"
+#include "base/progress.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "cuda/cuda_device.h"  // CudaError
-#include "frame_evaluation.h"
-#include "frame_evaluator.h"
-#include "progress.h"
-#include "somigliana_coordinates.h"
+#include "deform/frame_evaluation.h"
+#include "deform/frame_evaluator.h"
+#include "geometry/cage.h"
 
 namespace somicage {
 

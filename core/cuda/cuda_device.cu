@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cuda/cuda_device.h"
-#include "frame_point_kernel.h"
+#include "deform/frame_point_kernel.h"
 
 namespace somicage {
 namespace cuda_device {

@@ -8,8 +8,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "cuda/somigliana_row_portable.h"
-#include "frame_finish.h"
+#include "coordinates/somigliana_row_portable.h"
+#include "deform/frame_finish.h"
 
 namespace somicage {
 

@@ -19,13 +19,13 @@
 #include <utility>
 #include <vector>
 
-#include "bem_layer_integrals.h"
-#include "bem_system.h"
-#include "boundary_conditions.h"
-#include "coordinate_gradients.h"
-#include "deformer.h"
-#include "errors.h"
-#include "exterior_points.h"
+#include "base/errors.h"
+#include "coordinates/bem_layer_integrals.h"
+#include "coordinates/bem_system.h"
+#include "coordinates/coordinate_gradients.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
+#include "deform/exterior_points.h"
 #include "methods/method_descriptors.h"
 
 namespace somicage {

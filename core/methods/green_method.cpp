@@ -4,12 +4,12 @@
 #include <memory>
 #include <vector>
 
-#include "boundary_conditions.h"
-#include "coordinate_gradients.h"
-#include "deformer.h"
-#include "errors.h"
-#include "exterior_points.h"
-#include "green_coordinates.h"
+#include "base/errors.h"
+#include "coordinates/coordinate_gradients.h"
+#include "coordinates/green_coordinates.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
+#include "deform/exterior_points.h"
 #include "methods/method_descriptors.h"
 
 namespace somicage {

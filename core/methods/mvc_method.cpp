@@ -3,9 +3,9 @@
 #include <memory>
 #include <vector>
 
-#include "deformer.h"
-#include "errors.h"
-#include "mean_value_coordinates.h"
+#include "base/errors.h"
+#include "coordinates/mean_value_coordinates.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 
 namespace somicage {

@@ -15,14 +15,14 @@
 #include <mutex>
 #include <vector>
 
-#include "boundary_conditions.h"
-#include "deformer.h"
-#include "elastic_steiner_solve.h"
-#include "errors.h"
-#include "exterior_points.h"
+#include "base/errors.h"
+#include "coordinates/elastic_steiner_solve.h"
+#include "coordinates/phong_interpolation.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
+#include "deform/exterior_points.h"
+#include "geometry/simplex_locator.h"
 #include "methods/method_descriptors.h"
-#include "phong_interpolation.h"
-#include "simplex_locator.h"
 
 namespace somicage {
 

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <vector>
 
-#include "boundary_conditions.h"
-#include "coordinate_gradients.h"
-#include "deformer.h"
-#include "errors.h"
-#include "exterior_points.h"
+#include "base/errors.h"
+#include "coordinates/coordinate_gradients.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
+#include "deform/exterior_points.h"
 #include "methods/method_descriptors.h"
-#include "somigliana_coordinates.h"
 
 namespace somicage {
 

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace somicage {
 namespace {

@@ -1,8 +1,8 @@
 // The command line as a whole, run as a process: help, unknown commands, and bad input of every kind, which must
 // exit 2 with exactly one line on stderr naming the option or file (and line), what is wrong and what to do.
 #include "cli_test_support.h"
-#include "mesh_formats.h"
-#include "method.h"
+#include "deform/method.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

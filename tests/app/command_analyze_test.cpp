@@ -7,7 +7,7 @@
 #include <regex>
 
 #include "cli_test_support.h"
-#include "obj_io.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 namespace {

@@ -16,7 +16,7 @@
 #include <map>
 
 #include "cli_test_support.h"
-#include "obj_io.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 namespace {
@@ -415,11 +415,11 @@ TEST(AnimateNormals, ObjSequenceNormalsFollowTheRotation) {
   EXPECT_GT((recomputed[0] - last[0]).norm(), 0.05) << "the faces' normals, not the file's";
 }
 
-// `animate` plays what the editor shows (issue 23): a version-3 session read by the editor's reader (core/session.h),
-// its inline cage and every parameter included, gives at every frame `somicage deform` of that frame's pose with the
-// session's settings. Keys at frames 0 (rest) and 4 (a twist and a stretch), linear: frame 2 is their mean, which
-// this test computes itself. Before, `animate` had its own reader, which opened the empty cage path of an inline
-// cage ("unknown mesh format") and dropped "corotational".
+// `animate` plays what the editor shows (issue 23): a version-3 session read by the editor's reader
+// (core/engine/session.h), its inline cage and every parameter included, gives at every frame `somicage deform` of that
+// frame's pose with the session's settings. Keys at frames 0 (rest) and 4 (a twist and a stretch), linear: frame 2 is
+// their mean, which this test computes itself. Before, `animate` had its own reader, which opened the empty cage path
+// of an inline cage ("unknown mesh format") and dropped "corotational".
 class AnimateSettings : public ::testing::Test {
  protected:
   void SetUp() override {

@@ -2,8 +2,8 @@
 // are consistent (exact integrals at round-off, the baseline slower and less accurate, frames timed per variant).
 #include <cmath>
 
+#include "base/cpu_dispatch.h"
 #include "cli_test_support.h"
-#include "cpu_dispatch.h"
 
 namespace somicage {
 namespace {

@@ -1,7 +1,7 @@
 // somicage cage, run as a process: it writes a cage that 'somicage check' finds valid with every mesh vertex inside,
 // keeps the face budget, reports what the README documents, and refuses bad options with exit 2 and no file.
 #include "cli_test_support.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

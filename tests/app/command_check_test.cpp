@@ -1,7 +1,7 @@
 // somicage check, run as a process: --json prints one object that parses and has the documented keys; the exit
 // status says whether the cage is valid; points outside the cage are counted, not averaged.
 #include "cli_test_support.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

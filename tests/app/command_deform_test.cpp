@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "cli_test_support.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdio>
 
 #include "cli_test_support.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

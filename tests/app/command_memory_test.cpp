@@ -4,9 +4,9 @@
 #include <cstdlib>
 
 #include "cli_test_support.h"
-#include "memory_estimate.h"
+#include "deform/memory_estimate.h"
+#include "io/obj_io.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
 
 namespace somicage {
 namespace {

@@ -11,7 +11,7 @@
 #include <cstdlib>
 
 #include "cli_test_support.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

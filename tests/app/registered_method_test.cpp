@@ -7,8 +7,8 @@
 #include "../core/constant_method.h"
 #include "cli/cli.h"
 #include "cli_test_support.h"
-#include "mesh_formats.h"
-#include "obj_io.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 namespace {

@@ -8,7 +8,7 @@
 
 #include "cli/progress_reporter.h"
 #include "cli_test_support.h"
-#include "obj_io.h"
+#include "io/obj_io.h"
 
 namespace somicage {
 namespace {

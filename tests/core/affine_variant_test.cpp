@@ -7,11 +7,11 @@
 #include <limits>
 #include <random>
 
-#include "boundary_conditions.h"
-#include "deformer.h"
-#include "jacobian.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
+#include "deform/jacobian.h"
+#include "io/obj_io.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

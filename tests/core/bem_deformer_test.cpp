@@ -9,9 +9,9 @@
 #include <limits>
 #include <random>
 
-#include "deformer.h"
-#include "errors.h"
-#include "kelvin_kernels.h"
+#include "base/errors.h"
+#include "deform/deformer.h"
+#include "geometry/kelvin_kernels.h"
 #include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"

@@ -1,16 +1,16 @@
 // The Kelvin layer integrals of the boundary element method: the interior limit on a point's own face (closed form
 // with h = -0) against the ordinary closed form approached from inside, and the jump it carries (sum_i T_i = I on
 // the cage, Eq. 9), in 2D and 3D.
-#include "bem_layer_integrals.h"
+#include "coordinates/bem_layer_integrals.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <vector>
 
-#include "edge_integrals.h"
+#include "geometry/edge_integrals.h"
+#include "geometry/triangle_integrals.h"
 #include "test_shapes.h"
-#include "triangle_integrals.h"
 
 namespace somicage {
 namespace {

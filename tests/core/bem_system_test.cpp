@@ -1,14 +1,14 @@
 // The boundary element system: for affine displacements the exact tractions sigma n (Hooke's law, mu = 1), zero for
 // rigid translations and infinitesimal rotations, balance for any displacement, the nu = 1/2 refusal, the
 // factorizations cached per nu; 2D and 3D.
-#include "bem_system.h"
+#include "coordinates/bem_system.h"
 
 #include <gtest/gtest.h>
 
 #include <limits>
 #include <random>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "test_shapes.h"
 
 namespace somicage {

@@ -1,5 +1,5 @@
 // Rotations, stretches and traction scales of the corotational deformer (section 4.4, Eqs. 12-15, docs/method.md).
-#include "boundary_conditions.h"
+#include "deform/boundary_conditions.h"
 
 #include <gtest/gtest.h>
 

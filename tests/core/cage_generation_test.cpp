@@ -1,7 +1,7 @@
-// core/cage_generation.h on meshes made here: a knotted tube (genus 1, knotted), two separate spheres (two
+// core/generation/cage_generation.h on meshes made here: a knotted tube (genus 1, knotted), two separate spheres (two
 // components), an open hemisphere (a boundary), a thin plate, and one shape at 1e-3 and 1e3 scale. Each generated
 // cage is checked by generated_cage_checks.h, independently of the CGAL predicates the generator uses.
-#include "cage_generation.h"
+#include "generation/cage_generation.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <vector>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "generated_cage_checks.h"
 #include "test_shapes.h"
 

@@ -1,13 +1,13 @@
 // Cage repair: faces reversed at random come back exactly as they were, inside-out components are turned outward,
 // cavities stay or become inward, clockwise polygons are reversed, and what cannot be repaired is left as it is.
 // Vertices never change.
-#include "cage_repair.h"
+#include "cage/cage_repair.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "cage_validation.h"
+#include "cage/cage_validation.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

@@ -1,12 +1,12 @@
-// shrinkTowardMesh (core/cage_shrink.h): a loose cage moved toward the mesh still strictly encloses it by the exact
-// check of cage_enclosure.h (every vertex inside, no edge crossing, no self-intersection), stays a valid cage, keeps
-// its vertices `clearance` away, and gets tighter.
-#include "cage_shrink.h"
+// shrinkTowardMesh (core/generation/cage_shrink.h): a loose cage moved toward the mesh still strictly encloses it by
+// the exact check of cage_enclosure.h (every vertex inside, no edge crossing, no self-intersection), stays a valid
+// cage, keeps its vertices `clearance` away, and gets tighter.
+#include "generation/cage_shrink.h"
 
 #include <gtest/gtest.h>
 
-#include "cage_enclosure.h"
-#include "cage_validation.h"
+#include "cage/cage_validation.h"
+#include "generation/cage_enclosure.h"
 #include "test_shapes.h"
 
 namespace somicage {

@@ -1,16 +1,17 @@
-// The tetrahedra of a cage (core/cage_tetrahedralization.cpp): the cage's vertices first and exactly, a mesh of
-// the cage that checkVolumeMesh accepts as it is, finer with each level; bounded in time and cancellable.
-#include "cage_tetrahedralization.h"
+// The tetrahedra of a cage (core/tetrahedralization/cage_tetrahedralization.cpp): the cage's vertices first and
+// exactly, a mesh of the cage that checkVolumeMesh accepts as it is, finer with each level; bounded in time and
+// cancellable.
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <chrono>
 
+#include "base/errors.h"
 #include "core/test_models.h"
 #include "core/test_shapes.h"
 #include "core/volume_mesh_checks.h"
-#include "errors.h"
 
 namespace somicage {
 namespace {

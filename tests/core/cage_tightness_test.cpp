@@ -1,11 +1,11 @@
-// measureTightness (core/cage_enclosure.h) against closed forms: a cube cage around a smaller cube and around a
-// sphere (volume ratio, and the one-sided Hausdorff distance cage -> mesh, reached at the cage's corners), and an
-// open mesh, which has no volume ratio.
+// measureTightness (core/generation/cage_enclosure.h) against closed forms: a cube cage around a smaller cube and
+// around a sphere (volume ratio, and the one-sided Hausdorff distance cage -> mesh, reached at the cage's corners), and
+// an open mesh, which has no volume ratio.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "cage_enclosure.h"
+#include "generation/cage_enclosure.h"
 #include "test_shapes.h"
 
 namespace somicage {

@@ -1,6 +1,6 @@
 // Cage validation: each kind of defect on a small cage, the 2D sweep against a brute-force check on random
 // polygons, and the counts models/README.md gives for the shared meshes (boundary edges, inward faces).
-#include "cage_validation.h"
+#include "cage/cage_validation.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <filesystem>
 #include <random>
 
-#include "errors.h"
-#include "mesh_formats.h"
+#include "base/errors.h"
+#include "io/mesh_formats.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

@@ -6,9 +6,9 @@
 
 #include <memory>
 
-#include "deformer.h"
-#include "frame_evaluation.h"
-#include "parameter_schema.h"
+#include "deform/deformer.h"
+#include "deform/frame_evaluation.h"
+#include "deform/parameter_schema.h"
 
 namespace somicage::test {
 

@@ -1,8 +1,8 @@
-// The exact coordinate gradients (core/coordinate_gradients.h) of the Somigliana terms: the pack kernel (dual
-// numbers of simd::Pack, four points at once) against the one-point dual-number kernel, the reference, to 1e-12 of
-// each term's size (at least 1) on small cages with points from 1e-5 to 0.1 inside their faces and on a subsample
+// The exact coordinate gradients (core/coordinates/coordinate_gradients.h) of the Somigliana terms: the pack kernel
+// (dual numbers of simd::Pack, four points at once) against the one-point dual-number kernel, the reference, to 1e-12
+// of each term's size (at least 1) on small cages with points from 1e-5 to 0.1 inside their faces and on a subsample
 // of every shared model; and both against central differences of the closed-form coordinates.
-#include "coordinate_gradients.h"
+#include "coordinates/coordinate_gradients.h"
 
 #include <gtest/gtest.h>
 
@@ -11,8 +11,8 @@
 #include <sstream>
 #include <string>
 
-#include "bem_layer_integrals.h"
-#include "somigliana_coordinates.h"
+#include "coordinates/bem_layer_integrals.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

@@ -1,8 +1,8 @@
-// The dispatch of the hot kernels (core/cpu_dispatch.h): on a CPU with AVX2 and FMA the portable build runs their
+// The dispatch of the hot kernels (core/base/cpu_dispatch.h): on a CPU with AVX2 and FMA the portable build runs their
 // x86-64-v3 copy. The reported target is observed (a dispatched function fused a multiply-add or not) and checked
 // here against the CPU's own feature flags. That the baseline copy runs, and agrees, on a CPU without them is
 // tests/python/test_portable_build.py (qemu's Nehalem).
-#include "cpu_dispatch.h"
+#include "base/cpu_dispatch.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The CUDA frame kernel's per-point code (core/frame_point_kernel.h), run on the host with the 32 lanes of a
+// The CUDA frame kernel's per-point code (core/deform/frame_point_kernel.h), run on the host with the 32 lanes of a
 // warp summed in a loop, against the CPU frame (CageDeformer::deform). This checks the kernel's weight layout and
 // its T^-1 b solve without a GPU; only the shuffle reduction is device-only. Sparse rows (Phong) run the sparse
 // kernel's sums (addSparseFramePartialSums), dense rows the dense one's.
@@ -10,9 +10,9 @@
 #include <random>
 #include <vector>
 
-#include "deformer.h"
+#include "deform/deformer.h"
+#include "deform/frame_point_kernel.h"
 #include "frame_cases.h"
-#include "frame_point_kernel.h"
 #include "test_shapes.h"
 
 namespace somicage {

@@ -1,4 +1,4 @@
-// The portable (host + device) closed-form integrals, core/triangle_integrals_kernel.h and
+// The portable (host + device) closed-form integrals, core/geometry/triangle_integrals_kernel.h and
 // somigliana_row_portable.h, compiled here by the host compiler and compared with an independent reference, the
 // adaptive Gauss-Legendre quadrature of tests/core/reference/ (the CPU engine wraps the same kernel, so comparing
 // with it would compare the code with itself). This is how the CUDA precompute's math is verified on machines
@@ -12,10 +12,10 @@
 #include <random>
 #include <vector>
 
-#include "cuda/somigliana_row_portable.h"
+#include "coordinates/somigliana_row_portable.h"
+#include "geometry/triangle_integrals.h"
 #include "reference/portable_row_check.h"
 #include "test_shapes.h"
-#include "triangle_integrals.h"
 
 namespace somicage {
 namespace {

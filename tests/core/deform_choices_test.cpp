@@ -1,6 +1,6 @@
 // The choice parameters (deform_choices.h): the bulging conventions against their formulas on hand-computed
 // cases, and angle-weighted normals, which make a flat region's normals independent of its triangulation.
-#include "deform_choices.h"
+#include "deform/deform_choices.h"
 
 #include <gtest/gtest.h>
 
@@ -10,9 +10,9 @@
 #include <set>
 #include <string>
 
-#include "boundary_conditions.h"
-#include "deformer.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

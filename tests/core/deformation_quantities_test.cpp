@@ -1,16 +1,16 @@
-// The quantities of a pose (core/deformation_quantities.h, deformation_analysis.h, coordinate_fields.h) against
-// closed forms: volumes of known solids, scales and similarities, an independent quadrature of the coordinates,
+// The quantities of a pose (core/analysis/deformation_quantities.h, deformation_analysis.h, coordinate_fields.h)
+// against closed forms: volumes of known solids, scales and similarities, an independent quadrature of the coordinates,
 // and the nu sweep against single evaluations.
-#include "deformation_quantities.h"
+#include "analysis/deformation_quantities.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "coordinate_fields.h"
-#include "deformation_analysis.h"
-#include "errors.h"
+#include "analysis/coordinate_fields.h"
+#include "analysis/deformation_analysis.h"
+#include "base/errors.h"
 #include "method_cases.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"

@@ -1,9 +1,9 @@
-// Tests of the exact 2D edge integrals (core/edge_integrals.h) against quadrature of their definitions.
+// Tests of the exact 2D edge integrals (core/geometry/edge_integrals.h) against quadrature of their definitions.
 //
 // The reference is written here from the definitions in the header, with its own Gauss-Legendre rule
 // (Golub-Welsch, an eigenvalue problem, rather than the Newton iteration the library uses), graded
 // geometrically towards the point of the edge nearest to x so that it stays accurate down to distances 1e-8 l.
-#include "edge_integrals.h"
+#include "geometry/edge_integrals.h"
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "kelvin_kernels.h"
+#include "geometry/kelvin_kernels.h"
 
 namespace somicage {
 namespace {

@@ -1,13 +1,13 @@
-// The engine facade (core/engine.h): the one load order (repair, validate, notices, refusal), the placement
+// The engine facade (core/engine/engine.h): the one load order (repair, validate, notices, refusal), the placement
 // warning, the pose and parameter checks with the command line's messages, the memory refusal and cancel.
-#include "engine.h"
+#include "engine/engine.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <vector>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

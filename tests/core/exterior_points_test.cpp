@@ -1,8 +1,8 @@
-// Points outside the cage and on it (core/exterior_points.h): x~ = S(x) + w(d) [phi(x_in) - S(x_in)] for the
+// Points outside the cage and on it (core/deform/exterior_points.h): x~ = S(x) + w(d) [phi(x_in) - S(x_in)] for the
 // Somigliana and Green deformers, 2D and 3D. Continuity across a face, an edge and at a vertex; finite results
 // exactly on the cage; the pure similarity beyond the band; C2 in the distance; identity at rest and similarity
 // invariance with exterior points present. Mean value coordinates need no rule: they stay finite on the cage.
-#include "exterior_points.h"
+#include "deform/exterior_points.h"
 
 #include <gtest/gtest.h>
 
@@ -12,11 +12,11 @@
 #include <string>
 #include <vector>
 
-#include "boundary_conditions.h"
-#include "deformer.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/boundary_conditions.h"
+#include "deform/deformer.h"
 #include "method_cases.h"
 #include "methods/method_descriptors.h"
-#include "somigliana_coordinates.h"
 #include "test_shapes.h"
 
 namespace somicage {

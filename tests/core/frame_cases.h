@@ -9,7 +9,7 @@
 #include <functional>
 #include <vector>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 
 namespace somicage::test {
 

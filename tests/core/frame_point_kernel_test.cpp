@@ -1,13 +1,13 @@
 // The per-point finish of a frame (o + T^-1 b, Eq. 11) that the CPU and CUDA kernels share: exact where T is
 // invertible, finite and least-squares where it is singular.
-#include "frame_point_kernel.h"
+#include "deform/frame_point_kernel.h"
 
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
 #include <array>
 
-#include "frame_evaluation.h"
+#include "deform/frame_evaluation.h"
 
 namespace somicage {
 namespace {

@@ -1,7 +1,7 @@
-// What every generated cage must satisfy (core/cage_generation.h), checked independently of CGAL: the project's own
-// validator (closed, manifold, outward, no self-intersection), the generalised winding number of every mesh vertex
-// summed from solid angles (Van Oosterom and Strackee 1983), a brute-force segment-triangle test for every mesh edge,
-// the face budget, and the Somigliana precompute on the cage (partition of unity, Eq. 9; identity at rest).
+// What every generated cage must satisfy (core/generation/cage_generation.h), checked independently of CGAL: the
+// project's own validator (closed, manifold, outward, no self-intersection), the generalised winding number of every
+// mesh vertex summed from solid angles (Van Oosterom and Strackee 1983), a brute-force segment-triangle test for every
+// mesh edge, the face budget, and the Somigliana precompute on the cage (partition of unity, Eq. 9; identity at rest).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -12,11 +12,11 @@
 #include <set>
 #include <utility>
 
-#include "cage.h"
-#include "cage_validation.h"
-#include "deformer.h"
+#include "cage/cage_validation.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/deformer.h"
+#include "geometry/cage.h"
 #include "methods/method_descriptors.h"
-#include "somigliana_coordinates.h"
 
 namespace somicage::test {
 

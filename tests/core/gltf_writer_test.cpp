@@ -3,7 +3,7 @@
 // file) and decoded pixels, every corner's UV against the OBJ's `vt` (v flipped), and which material each face's
 // triangles belong to, in face order. A missing texture is named and left out; a GLB read back through assimp keeps
 // its materials and embedded image when it is written again.
-#include "gltf_writer.h"
+#include "io/gltf_writer.h"
 
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
@@ -13,9 +13,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "errors.h"
-#include "file_util.h"
-#include "mesh_formats.h"
+#include "base/errors.h"
+#include "base/file_util.h"
+#include "io/mesh_formats.h"
 #include "scratch_folder.h"
 
 namespace somicage {

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "deformer.h"
-#include "mesh_formats.h"
+#include "deform/deformer.h"
+#include "io/mesh_formats.h"
 #include "methods/method_descriptors.h"
 #include "reference/somigliana_reference.h"
 #include "test_models.h"

@@ -2,7 +2,7 @@
 // agreement with the Somigliana triangle/edge integrals and with quadrature, finite values near and on the cage,
 // thread-count independence, progress and cancellation, and every triangle cage of ../shared/models.
 // Each test states its tolerance and why.
-#include "green_coordinates.h"
+#include "coordinates/green_coordinates.h"
 
 #include <gtest/gtest.h>
 
@@ -11,12 +11,12 @@
 #include <string>
 #include <vector>
 
-#include "edge_integrals.h"
+#include "geometry/edge_integrals.h"
+#include "geometry/triangle_integrals.h"
+#include "geometry/triangle_quadrature.h"
 #include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"
-#include "triangle_integrals.h"
-#include "triangle_quadrature.h"
 
 namespace somicage {
 namespace {

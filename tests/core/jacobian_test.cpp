@@ -1,6 +1,6 @@
-// The deformation gradient (core/jacobian.h) against independent references: central differences of the exact map
-// (CageDeformer::deform at displaced points), the identity at rest, s I for a uniform scale, and rotations.
-#include "jacobian.h"
+// The deformation gradient (core/deform/jacobian.h) against independent references: central differences of the exact
+// map (CageDeformer::deform at displaced points), the identity at rest, s I for a uniform scale, and rotations.
+#include "deform/jacobian.h"
 
 #include <gtest/gtest.h>
 

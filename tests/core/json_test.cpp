@@ -1,7 +1,8 @@
-// core/json.h: the one encoding of numbers and strings that sessions and every command's --json use. A number reads
-// back to the same double from the shortest text; a non-finite one is null (sessions wrote 0 before, silently, while
+// core/base/json.h: the one encoding of numbers and strings that sessions and every command's --json use. A number
+// reads back to the same double from the shortest text; a non-finite one is null (sessions wrote 0 before, silently,
+// while
 // --json wrote null); strings escape what JSON requires.
-#include "json.h"
+#include "base/json.h"
 
 #include <gtest/gtest.h>
 
@@ -9,7 +10,7 @@
 #include <cstring>
 #include <limits>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace somicage {
 namespace {

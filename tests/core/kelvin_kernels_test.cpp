@@ -1,10 +1,10 @@
-// Independent checks of the pointwise kernels of core/kelvin_kernels.h (paper Eqs. 1-4, mu = 1):
+// Independent checks of the pointwise kernels of core/geometry/kelvin_kernels.h (paper Eqs. 1-4, mu = 1):
 //  - K is a solution of the Navier-Cauchy equation (Eq. 1, b = 0) away from the source, by finite differences;
 //  - T is the traction (Eq. 2) of K, with the transpose and sign that the Somigliana identity (Eq. 5) needs;
 //  - the normalisation: int_{boundary} T(y, x) dsigma_y = I inside a circle / sphere (Eq. 9), and the
 //    identity x = int T y + c K n (Eq. 6), which fixes the scale of K against T.
 // Nothing here reuses the kernels' formulas; only the definitions Eqs. 1, 2, 5, 6, 9 are coded.
-#include "kelvin_kernels.h"
+#include "geometry/kelvin_kernels.h"
 
 #include <gtest/gtest.h>
 

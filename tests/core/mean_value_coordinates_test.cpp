@@ -2,7 +2,7 @@
 // reproduction inside and outside, interpolation at vertices, edges and faces, symmetric golden values, agreement
 // with the defining integral by quadrature, finite values near and on the cage, thread-count independence,
 // progress and cancellation, and every triangle cage of ../shared/models. Each test states its tolerance and why.
-#include "mean_value_coordinates.h"
+#include "coordinates/mean_value_coordinates.h"
 
 #include <gtest/gtest.h>
 
@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
+#include "geometry/triangle_quadrature.h"
 #include "methods/method_descriptors.h"
 #include "test_models.h"
 #include "test_shapes.h"
-#include "triangle_quadrature.h"
 
 namespace somicage {
 namespace {

@@ -1,11 +1,11 @@
-// MEDIT .mesh reading (core/medit_io.cpp): round trip, skipped sections, and a specific error per bad file.
-#include "medit_io.h"
+// MEDIT .mesh reading (core/geometry/medit_io.cpp): round trip, skipped sections, and a specific error per bad file.
+#include "geometry/medit_io.h"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace somicage {
 namespace {

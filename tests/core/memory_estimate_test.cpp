@@ -1,19 +1,19 @@
 // Memory estimates before a precompute: the coordinate bytes equal what each deformer stores (exactly, every
 // method, 2D and 3D, float and double, points inside and outside the cage), and the refusal when the estimate
 // exceeds the free memory (made deterministic with SOMICAGE_MEMORY_LIMIT_BYTES).
-#include "memory_estimate.h"
+#include "deform/memory_estimate.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <string>
 
-#include "cage_tetrahedralization.h"
-#include "deformer.h"
-#include "engine.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "deform/deformer.h"
+#include "engine/engine.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage {
 namespace {

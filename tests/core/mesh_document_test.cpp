@@ -1,7 +1,7 @@
 // Lossless OBJ export: every record but the positions and normals comes back verbatim and in order, positions
 // are exact, the final newline is there, mtllib still resolves from another folder, and the recomputed normals
 // match closed forms (an affine map of a flat patch: A^-T n; a cube with split normals: the face axes).
-#include "mesh_document.h"
+#include "io/mesh_document.h"
 
 #include <gtest/gtest.h>
 #include <stdlib.h>
@@ -11,8 +11,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "errors.h"
-#include "file_util.h"
+#include "base/errors.h"
+#include "base/file_util.h"
 #include "scratch_folder.h"
 
 namespace somicage {

@@ -2,7 +2,7 @@
 // and the same faces as the OBJ of that mesh (coordinates are multiples of 1/4, exact in the 32-bit floats that
 // assimp reads with); STL and FBX bring one vertex per face corner, which --weld joins back; the PLY and GLB
 // writers read back (through assimp) as written.
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 
 #include <assimp/scene.h>
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "errors.h"
+#include "base/errors.h"
 #include "scratch_folder.h"
 
 namespace somicage {

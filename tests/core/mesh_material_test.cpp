@@ -1,10 +1,10 @@
 // .mtl parsing: colours, opacity from `d` (which wins over `Tr`) or 1 - `Tr`, map_Kd's file after its options
 // (a name with blanks and Windows separators included) resolved next to the .mtl, and errors that name the line.
-#include "mesh_material.h"
+#include "io/mesh_material.h"
 
 #include <gtest/gtest.h>
 
-#include "errors.h"
+#include "base/errors.h"
 
 namespace somicage {
 namespace {

@@ -1,6 +1,6 @@
 // The units warning: a mesh that fits its cage gets none; one scaled by a unit factor, or moved beside the cage, gets
 // one sentence naming both files and the factor.
-#include "mesh_placement.h"
+#include "geometry/mesh_placement.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include <ostream>
 #include <string>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 
 namespace somicage::test {
 

@@ -4,7 +4,7 @@
 
 #include <limits>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

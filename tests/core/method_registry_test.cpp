@@ -1,4 +1,4 @@
-// The method registry (core/method.h): every method is listed once, in order, by name; each method's layout is
+// The method registry (core/deform/method.h): every method is listed once, in order, by name; each method's layout is
 // the shape of the matrix C its deformer stores; nothing outside a descriptor knows a method by heart.
 #include <gtest/gtest.h>
 
@@ -6,9 +6,9 @@
 #include <set>
 #include <string>
 
-#include "deformer.h"
-#include "errors.h"
-#include "method.h"
+#include "base/errors.h"
+#include "deform/deformer.h"
+#include "deform/method.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

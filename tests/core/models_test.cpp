@@ -7,9 +7,9 @@
 #include <cmath>
 #include <string>
 
-#include "deformer.h"
+#include "coordinates/somigliana_coordinates.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
-#include "somigliana_coordinates.h"
 #include "test_models.h"
 
 namespace somicage {

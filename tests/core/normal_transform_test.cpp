@@ -1,8 +1,8 @@
-// Normals carried by the deformation's gradient (core/normal_transform.h) against exact cases: an affine cage pose
-// A under mean value coordinates (which reproduce affine maps, so J = A) gives n' = A^-T n / |A^-T n| to 1e-9 for
+// Normals carried by the deformation's gradient (core/animation/normal_transform.h) against exact cases: an affine cage
+// pose A under mean value coordinates (which reproduce affine maps, so J = A) gives n' = A^-T n / |A^-T n| to 1e-9 for
 // per-vertex and shared `vn`; a rotation under Somigliana coordinates keeps every angle between a normal and the
 // faces around it (1e-9 rad); a vertex outside the cage, which has no J, gets the recomputed normal.
-#include "normal_transform.h"
+#include "animation/normal_transform.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <Eigen/LU>
 #include <cmath>
 
-#include "cage.h"
+#include "geometry/cage.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

@@ -1,6 +1,6 @@
 // OBJ reading and writing: every cage and mesh in the shared models, the bad files in tests/data (each names the
 // loader, the line and the message it must produce in its first lines), bit-exact round trips, atomic writes.
-#include "obj_io.h"
+#include "io/obj_io.h"
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
@@ -17,9 +17,9 @@
 #include <regex>
 #include <sstream>
 
-#include "cage_validation.h"
-#include "errors.h"
-#include "mesh_formats.h"
+#include "base/errors.h"
+#include "cage/cage_validation.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

@@ -1,4 +1,4 @@
-// The parameter table (core/parameter_schema.h) against DeformParams' own defaults and fields, its text and JSON
+// The parameter table (core/deform/parameter_schema.h) against DeformParams' own defaults and fields, its text and JSON
 // forms, the sessions that predate it, and a row and a method registered from test code (constant_method.h)
 // through the engine.
 #include <gtest/gtest.h>
@@ -7,12 +7,12 @@
 #include <limits>
 #include <set>
 
+#include "base/errors.h"
+#include "base/json.h"
 #include "constant_method.h"
-#include "engine.h"
-#include "errors.h"
-#include "json.h"
-#include "parameter_json.h"
-#include "session.h"
+#include "deform/parameter_json.h"
+#include "engine/engine.h"
+#include "engine/session.h"
 #include "test_shapes.h"
 
 namespace somicage {

@@ -8,18 +8,18 @@
 #include <random>
 #include <vector>
 
-#include "cage_tetrahedralization.h"
+#include "base/errors.h"
+#include "coordinates/elastic_steiner_solve.h"
+#include "coordinates/phong_interpolation.h"
 #include "core/scratch_folder.h"
 #include "core/test_shapes.h"
-#include "deformer.h"
-#include "elastic_steiner_solve.h"
-#include "engine.h"
-#include "errors.h"
-#include "jacobian.h"
-#include "medit_io.h"
-#include "memory_estimate.h"
+#include "deform/deformer.h"
+#include "deform/jacobian.h"
+#include "deform/memory_estimate.h"
+#include "engine/engine.h"
+#include "geometry/medit_io.h"
 #include "methods/method_descriptors.h"
-#include "phong_interpolation.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage {
 namespace {

@@ -1,7 +1,7 @@
-// The precomputes' parallel loop (core/point_blocks.h): every point once, and an exception thrown on an OpenMP
+// The precomputes' parallel loop (core/base/point_blocks.h): every point once, and an exception thrown on an OpenMP
 // thread (a point that fails, a scratch buffer that cannot be allocated) reaches the caller as that exception,
 // instead of ending the process (std::terminate, which an exception leaving a parallel region calls).
-#include "point_blocks.h"
+#include "base/point_blocks.h"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <new>
 #include <vector>
 
-#include "errors.h"
-#include "parallel_failure.h"
+#include "base/errors.h"
+#include "base/parallel_failure.h"
 
 namespace somicage {
 namespace {

@@ -2,15 +2,15 @@
 // is the mean; Catmull-Rom passes through every key, reproduces motion that is linear in time exactly (unevenly
 // spaced keys included) and is C1 across keys; nu and gamma blend linearly, infinities hold. The pose library's
 // rules, playback wrapping and the JSON round trip.
-#include "pose_timeline.h"
+#include "animation/pose_timeline.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "errors.h"
-#include "pose_timeline_json.h"
+#include "animation/pose_timeline_json.h"
+#include "base/errors.h"
 
 namespace somicage {
 namespace {

@@ -1,5 +1,5 @@
-// The seams of a volume mesh (core/seam_jumps.h): where mesh edges cross faces between simplices, and the jump of J
-// there: Phong's against a closed form worked out by hand, the smooth methods' 0 to round-off on a shared model.
+// The seams of a volume mesh (core/analysis/seam_jumps.h): where mesh edges cross faces between simplices, and the jump
+// of J there: Phong's against a closed form worked out by hand, the smooth methods' 0 to round-off on a shared model.
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
@@ -7,12 +7,12 @@
 #include <map>
 #include <set>
 
+#include "analysis/deformation_quantities.h"
+#include "analysis/seam_jumps.h"
 #include "core/test_models.h"
-#include "deformation_quantities.h"
-#include "engine.h"
+#include "engine/engine.h"
+#include "geometry/simplex_locator.h"
 #include "methods/method_descriptors.h"
-#include "seam_jumps.h"
-#include "simplex_locator.h"
 #include "test_shapes.h"
 
 namespace somicage {

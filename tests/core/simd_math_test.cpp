@@ -1,7 +1,7 @@
-// The packs' log1p and atan2 (core/simd_math.h) against glibc's libm, lane by lane, over the ranges the closed form
-// uses them on: log1p of non-negative numbers from 1e-300 to 1e300 (and 0), atan2 in all four quadrants with
+// The packs' log1p and atan2 (core/base/simd_math.h) against glibc's libm, lane by lane, over the ranges the closed
+// form uses them on: log1p of non-negative numbers from 1e-300 to 1e300 (and 0), atan2 in all four quadrants with
 // ratios from 1e-12 to 1e12 and signed zeros. The bound is the header's: 2 ulp of the result.
-#include "simd_math.h"
+#include "base/simd_math.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
-// The precompute's SIMD packs (core/simd_pack.h, simd_math.h) against the scalar closed form, which stays the
+// The precompute's SIMD packs (core/base/simd_pack.h, simd_math.h) against the scalar closed form, which stays the
 // reference (IntegrationOptions::scalarKernel): every coordinate term and winding number agrees to 1e-13 of the
-// term's size (at least 1), on small cages with points from 1e-7 to 0.1 inside their faces and on a subsample of every shared
-// model, and the packs' partition of unity holds to 1e-12 inside the shared models' cages.
+// term's size (at least 1), on small cages with points from 1e-7 to 0.1 inside their faces and on a subsample of every
+// shared model, and the packs' partition of unity holds to 1e-12 inside the shared models' cages.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,8 +9,8 @@
 #include <sstream>
 #include <string>
 
-#include "simd_pack.h"
-#include "somigliana_coordinates.h"
+#include "base/simd_pack.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

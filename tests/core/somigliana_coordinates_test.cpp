@@ -1,16 +1,16 @@
 // Somigliana coordinates (Eq. 8): partition of unity, the reproduction identity (Eq. 7), the nu-independent split,
 // thread-count independence and cancellation. Tolerances are stated per test, with the reason.
-#include "somigliana_coordinates.h"
+#include "coordinates/somigliana_coordinates.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 
-#include "errors.h"
-#include "kelvin_kernels.h"
+#include "base/errors.h"
+#include "geometry/kelvin_kernels.h"
+#include "geometry/triangle_quadrature.h"
 #include "test_shapes.h"
-#include "triangle_quadrature.h"
 
 namespace somicage {
 namespace {

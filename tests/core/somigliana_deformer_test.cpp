@@ -5,8 +5,8 @@
 #include <limits>
 #include <string>
 
-#include "deformer.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 #include "reference/somigliana_reference.h"
 #include "test_shapes.h"
@@ -195,7 +195,7 @@ INSTANTIATE_TEST_SUITE_P(Dimensions, SomiglianaDeformerTest, ::testing::Values(2
                          [](const auto& info) { return info.param == 3 ? "3D" : "2D"; });
 
 // Found by fuzz_precompute_deform: a cage collapsed to one point, with blended rotations, made T(x) singular and
-// every point NaN. The regularised solve (core/frame_point_kernel.h) keeps the points finite; with every cage
+// every point NaN. The regularised solve (core/deform/frame_point_kernel.h) keeps the points finite; with every cage
 // vertex at c the right-hand side is T c, so they all land on c (to round-off of the cage's offset).
 TEST_P(SomiglianaDeformerTest, ACageCollapsedToAPointTakesEveryPointThere) {
   const Scene s = scene();

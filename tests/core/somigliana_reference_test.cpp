@@ -22,7 +22,7 @@
 #include <string>
 #include <vector>
 
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 #include "test_shapes.h"
 

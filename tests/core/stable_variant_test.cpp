@@ -4,11 +4,11 @@
 // where local does not fold, closer to local than half the local-global distance.
 #include <gtest/gtest.h>
 
-#include "deformation_analysis.h"
-#include "deformer.h"
-#include "jacobian.h"
+#include "analysis/deformation_analysis.h"
+#include "deform/deformer.h"
+#include "deform/jacobian.h"
+#include "io/obj_io.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
 #include "test_models.h"
 #include "test_shapes.h"
 

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "cage.h"
-#include "deformer.h"
-#include "errors.h"
-#include "mesh_formats.h"
+#include "base/errors.h"
+#include "deform/deformer.h"
+#include "geometry/cage.h"
+#include "io/mesh_formats.h"
 
 namespace somicage::test {
 

@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "cage.h"
+#include "geometry/cage.h"
 
 namespace somicage::test {
 

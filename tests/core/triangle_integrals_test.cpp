@@ -1,10 +1,10 @@
-// Closed-form triangle integrals (core/triangle_integrals.h) against an independent adaptive quadrature, plus the
-// identities of shared docs/closed-form.md section 4, the cube's solid angle and extreme scales.
+// Closed-form triangle integrals (core/geometry/triangle_integrals.h) against an independent adaptive quadrature, plus
+// the identities of shared docs/closed-form.md section 4, the cube's solid angle and extreme scales.
 //
 // Golden data: an adaptive high-order quadrature written here (the same construction as the reference in
 // shared reference/closed-form/closedform.py): it shares no formula with the closed form, only the 1D
 // Gauss-Legendre rule, which triangle_quadrature_test.cpp checks for polynomial exactness.
-#include "triangle_integrals.h"
+#include "geometry/triangle_integrals.h"
 
 #include <gtest/gtest.h>
 
@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "triangle_quadrature.h"
+#include "geometry/triangle_quadrature.h"
 
 namespace somicage {
 namespace {

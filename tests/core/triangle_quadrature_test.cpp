@@ -1,7 +1,7 @@
-// The paper's quadrature baseline (core/triangle_quadrature.h): the 1D rule is exact where it must be, the
+// The paper's quadrature baseline (core/geometry/triangle_quadrature.h): the 1D rule is exact where it must be, the
 // triangle rule converges to the closed form away from the face, and it is visibly wrong near the face, which
 // is why the closed form is the default.
-#include "triangle_quadrature.h"
+#include "geometry/triangle_quadrature.h"
 
 #include <gtest/gtest.h>
 
@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <random>
 
-#include "triangle_integrals.h"
+#include "geometry/triangle_integrals.h"
 
 namespace somicage {
 namespace {

@@ -1,7 +1,7 @@
 // What the volume mesh tests measure of a mesh.
 #pragma once
 
-#include "volume_mesh.h"
+#include "geometry/volume_mesh.h"
 
 namespace somicage::test {
 

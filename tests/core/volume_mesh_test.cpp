@@ -1,6 +1,6 @@
-// Volume meshes of a cage (core/volume_mesh.cpp): what checkVolumeMesh accepts, repairs and refuses, and the
+// Volume meshes of a cage (core/geometry/volume_mesh.cpp): what checkVolumeMesh accepts, repairs and refuses, and the
 // star of a star-shaped cage.
-#include "volume_mesh.h"
+#include "geometry/volume_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -8,9 +8,9 @@
 #include <set>
 #include <utility>
 
+#include "base/errors.h"
 #include "core/test_shapes.h"
 #include "core/volume_mesh_checks.h"
-#include "errors.h"
 
 namespace somicage {
 namespace {

@@ -18,7 +18,7 @@
 #include "core/frame_cases.h"
 #include "core/reference/portable_row_check.h"
 #include "core/test_shapes.h"
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "methods/method_descriptors.h"
 
 namespace somicage {

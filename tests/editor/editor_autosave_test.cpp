@@ -9,12 +9,12 @@
 #include <fstream>
 #include <string>
 
-#include "app_state.h"
-#include "autosave.h"
+#include "base/errors.h"
 #include "editor_options.h"
-#include "errors.h"
+#include "engine/session.h"
 #include "methods/method_descriptors.h"
-#include "session.h"
+#include "model/app_state.h"
+#include "model/autosave.h"
 
 using namespace somicage;
 using namespace somicage::editor;

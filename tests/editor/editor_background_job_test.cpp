@@ -12,8 +12,8 @@
 #include <thread>
 #include <vector>
 
-#include "background_job.h"
-#include "thread_budget.h"
+#include "jobs/background_job.h"
+#include "jobs/thread_budget.h"
 
 namespace somicage::editor {
 namespace {

@@ -10,15 +10,15 @@
 #include <filesystem>
 #include <thread>
 
-#include "app_state.h"
-#include "autosave.h"
-#include "cage_enclosure.h"
-#include "cage_maker.h"
+#include "base/errors.h"
 #include "core/test_shapes.h"
 #include "editor_test_support.h"
-#include "errors.h"
+#include "generation/cage_enclosure.h"
+#include "io/obj_io.h"
+#include "jobs/cage_maker.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
+#include "model/app_state.h"
+#include "model/autosave.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -4,7 +4,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "camera.h"
+#include "interaction/camera.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -8,18 +8,18 @@
 #include <memory>
 #include <string>
 
-#include "app_state.h"
+#include "base/errors.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "cuda/cuda_backend.h"
 #include "editor_options.h"
 #include "editor_test_support.h"
-#include "engine.h"
-#include "errors.h"
-#include "frame_device_evaluators.h"
+#include "engine/engine.h"
+#include "jobs/precompute_worker.h"
+#include "jobs/thread_budget.h"
 #include "methods/method_descriptors.h"
-#include "panels.h"
-#include "precompute_worker.h"
-#include "somigliana_coordinates.h"
-#include "thread_budget.h"
+#include "model/app_state.h"
+#include "model/frame_device_evaluators.h"
+#include "ui/panels.h"
 
 using namespace somicage;
 using namespace somicage::editor;

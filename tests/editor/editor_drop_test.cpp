@@ -8,10 +8,10 @@
 #include <fstream>
 #include <memory>
 
-#include "app_state.h"
-#include "drop.h"
-#include "obj_io.h"
-#include "scene.h"
+#include "interaction/drop.h"
+#include "io/obj_io.h"
+#include "model/app_state.h"
+#include "model/scene.h"
 
 using namespace somicage;
 using namespace somicage::editor;

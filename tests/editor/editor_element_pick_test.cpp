@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "element_pick.h"
+#include "interaction/element_pick.h"
 
 using namespace somicage::editor;
 

@@ -9,8 +9,8 @@
 #include <algorithm>
 #include <map>
 
-#include "event_queue.h"
 #include "frame_pacing.h"
+#include "interaction/event_queue.h"
 
 using namespace somicage::editor;
 

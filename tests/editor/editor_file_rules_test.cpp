@@ -7,10 +7,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "app_state.h"
-#include "autosave.h"
+#include "base/file_util.h"
 #include "editor_test_support.h"
-#include "file_util.h"
+#include "model/app_state.h"
+#include "model/autosave.h"
 
 using namespace somicage;
 using namespace somicage::editor;

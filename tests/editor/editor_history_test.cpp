@@ -9,12 +9,12 @@
 #include <functional>
 #include <limits>
 
-#include "app_state.h"
 #include "editor_test_support.h"
-#include "history.h"
+#include "io/obj_io.h"
 #include "methods/method_descriptors.h"
-#include "obj_io.h"
-#include "pose_clear.h"
+#include "model/app_state.h"
+#include "model/history.h"
+#include "model/pose_clear.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -11,10 +11,10 @@
 #include <cstdio>
 #include <thread>
 
-#include "app_state.h"
-#include "input.h"
-#include "layout.h"
-#include "pose_keys.h"
+#include "interaction/input.h"
+#include "model/app_state.h"
+#include "model/pose_keys.h"
+#include "ui/layout.h"
 
 using namespace somicage;
 using namespace somicage::editor;

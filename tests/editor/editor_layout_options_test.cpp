@@ -3,11 +3,11 @@
 
 #include <cmath>
 
+#include "base/errors.h"
 #include "editor_options.h"
-#include "errors.h"
-#include "layout.h"
 #include "methods/method_descriptors.h"
-#include "view_quantity.h"
+#include "model/view_quantity.h"
+#include "ui/layout.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -12,13 +12,13 @@
 #include <string>
 
 #include "app/cli_test_support.h"
+#include "base/json.h"
 #include "core/test_shapes.h"
-#include "app_state.h"
-#include "deform_choices.h"
+#include "deform/deform_choices.h"
 #include "editor_test_support.h"
-#include "json.h"
-#include "obj_io.h"
-#include "quantity_overlay.h"
+#include "io/obj_io.h"
+#include "model/app_state.h"
+#include "ui/quantity_overlay.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -1,5 +1,5 @@
-// Issue 23: the editor's front ends read the parameter table (core/parameter_schema.h) and the method registry at
-// run time. A row and a method registered from test code (core/constant_method.h) are on the editor's command line
+// Issue 23: the editor's front ends read the parameter table (core/deform/parameter_schema.h) and the method registry
+// at run time. A row and a method registered from test code (core/constant_method.h) are on the editor's command line
 // and in its help, in --view specs, view labels and sessions, and in the measurement key; the spellings kept from
 // before (--local, --traction-fix off, a session's "tractionCorrection") still read as they did.
 #include <gtest/gtest.h>
@@ -8,15 +8,15 @@
 
 #include <cstring>
 
-#include "app_state.h"
+#include "base/errors.h"
+#include "base/json.h"
 #include "core/constant_method.h"
 #include "editor_options.h"
-#include "errors.h"
-#include "json.h"
-#include "measure_worker.h"
+#include "engine/session.h"
+#include "jobs/measure_worker.h"
 #include "methods/method_descriptors.h"
-#include "parameter_panel.h"
-#include "session.h"
+#include "model/app_state.h"
+#include "ui/parameter_panel.h"
 
 namespace somicage::editor {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <Eigen/Geometry>
 
-#include "pose_clear.h"
-#include "scene.h"
+#include "model/pose_clear.h"
+#include "model/scene.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -13,13 +13,13 @@
 #include <functional>
 #include <thread>
 
-#include "animation_export.h"
-#include "app_state.h"
-#include "errors.h"
-#include "export_jobs.h"
-#include "obj_io.h"
-#include "pose_keys.h"
-#include "session.h"
+#include "animation/animation_export.h"
+#include "base/errors.h"
+#include "engine/session.h"
+#include "io/obj_io.h"
+#include "jobs/export_jobs.h"
+#include "model/app_state.h"
+#include "model/pose_keys.h"
 
 using namespace somicage;
 using namespace somicage::editor;

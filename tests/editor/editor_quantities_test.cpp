@@ -10,16 +10,16 @@
 #include <cstdlib>
 #include <thread>
 
-#include "app_state.h"
-#include "background_job.h"
-#include "coordinate_fields.h"
+#include "analysis/coordinate_fields.h"
+#include "base/errors.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "editor_test_support.h"
-#include "engine.h"
-#include "errors.h"
+#include "engine/engine.h"
+#include "jobs/background_job.h"
 #include "methods/method_descriptors.h"
-#include "quantity_overlay.h"
-#include "scene.h"
-#include "somigliana_coordinates.h"
+#include "model/app_state.h"
+#include "model/scene.h"
+#include "ui/quantity_overlay.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -214,8 +214,8 @@ TEST(EditorQuantities, DifferenceViewIsTheDistanceToTheOtherViewInCageDiameters)
   EXPECT_EQ(state.view.quantities.droppedStale, 0);
 }
 
-// With the in-place OpenGL device the UI thread's CPU points stay stale (the Renderer deforms): the difference is measured on
-// the worker all the same, and nothing on the UI thread deforms on the CPU for it (cpuStale untouched).
+// With the in-place OpenGL device the UI thread's CPU points stay stale (the Renderer deforms): the difference is
+// measured on the worker all the same, and nothing on the UI thread deforms on the CPU for it (cpuStale untouched).
 TEST(EditorQuantities, DifferenceWithTheInPlaceOpenGlDeviceIsMeasuredOnTheWorker) {
   AppState state;
   loadDemo(state, 3, true);

@@ -7,9 +7,9 @@
 #include <fstream>
 #include <memory>
 
-#include "app_state.h"
-#include "recent_files.h"
-#include "scene.h"
+#include "model/app_state.h"
+#include "model/recent_files.h"
+#include "model/scene.h"
 
 using namespace somicage;
 using namespace somicage::editor;

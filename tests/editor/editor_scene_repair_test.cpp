@@ -1,4 +1,4 @@
-// Loading files into the editor repairs the cage as the command line does (core/cage_repair.h), keeps what was
+// Loading files into the editor repairs the cage as the command line does (core/cage/cage_repair.h), keeps what was
 // done as notices that the status bar shows, and refuses a cage that stays invalid.
 #include <gtest/gtest.h>
 
@@ -6,12 +6,12 @@
 #include <fstream>
 #include <iterator>
 
-#include "app_state.h"
-#include "cage_generation.h"
-#include "cage_validation.h"
-#include "errors.h"
-#include "obj_io.h"
-#include "scene.h"
+#include "base/errors.h"
+#include "cage/cage_validation.h"
+#include "generation/cage_generation.h"
+#include "io/obj_io.h"
+#include "model/app_state.h"
+#include "model/scene.h"
 
 using namespace somicage;
 using namespace somicage::editor;
@@ -97,7 +97,8 @@ TEST(EditorSceneRepair, AMeshInOtherUnitsGetsANotice) {
 
 namespace {
 
-// A mesh opened alone gets a generated cage that encloses it (core/cage_generation.h), and a notice saying so.
+// A mesh opened alone gets a generated cage that encloses it (core/generation/cage_generation.h), and a notice saying
+// so.
 TEST(EditorSceneRepair, MeshWithoutACageGetsAGeneratedOne) {
   CubeFiles files("scene_generated_cage");
   const std::string mesh = files.cage("cube_mesh.obj", files.cube);  // the cube as a mesh this time

@@ -6,16 +6,16 @@
 #include <cstdlib>
 #include <thread>
 
-#include "app_state.h"
-#include "cage_repair.h"
-#include "cage_tetrahedralization.h"
-#include "cage_validation.h"
+#include "base/errors.h"
+#include "cage/cage_repair.h"
+#include "cage/cage_validation.h"
 #include "core/constant_method.h"
-#include "errors.h"
-#include "memory_estimate.h"
+#include "deform/memory_estimate.h"
+#include "jobs/precompute_worker.h"
 #include "methods/method_descriptors.h"
-#include "precompute_worker.h"
-#include "scene.h"
+#include "model/app_state.h"
+#include "model/scene.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -1,7 +1,7 @@
 // Picking, box selection and the Selection set.
 #include <gtest/gtest.h>
 
-#include "selection.h"
+#include "model/selection.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -8,11 +8,11 @@
 #include <fstream>
 #include <limits>
 
+#include "base/errors.h"
+#include "base/json.h"
 #include "core/test_shapes.h"
-#include "errors.h"
-#include "json.h"
+#include "engine/session.h"
 #include "methods/method_descriptors.h"
-#include "session.h"
 
 using namespace somicage;
 

@@ -7,8 +7,8 @@
 #include <memory>
 #include <optional>
 
-#include "app_state.h"
-#include "frame_device_evaluators.h"
+#include "model/app_state.h"
+#include "model/frame_device_evaluators.h"
 
 namespace somicage::editor {
 

@@ -4,8 +4,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "gizmo.h"
-#include "transform.h"
+#include "interaction/gizmo.h"
+#include "interaction/transform.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -10,17 +10,17 @@
 #include <limits>
 #include <string>
 
-#include "app_state.h"
-#include "coordinate_fields.h"
+#include "analysis/coordinate_fields.h"
+#include "base/errors.h"
+#include "base/json.h"
+#include "coordinates/somigliana_coordinates.h"
 #include "editor_options.h"
 #include "editor_test_support.h"
-#include "errors.h"
-#include "fig8_demo.h"
-#include "json.h"
+#include "engine/session.h"
 #include "methods/method_descriptors.h"
-#include "quantity_overlay.h"
-#include "session.h"
-#include "somigliana_coordinates.h"
+#include "model/app_state.h"
+#include "model/fig8_demo.h"
+#include "ui/quantity_overlay.h"
 
 using namespace somicage;
 using namespace somicage::editor;

@@ -9,11 +9,11 @@
 #include <chrono>
 #include <thread>
 
-#include "app_state.h"
-#include "background_job.h"
 #include "core/test_shapes.h"
 #include "editor_test_support.h"
-#include "quantity_overlay.h"
+#include "jobs/background_job.h"
+#include "model/app_state.h"
+#include "ui/quantity_overlay.h"
 
 using namespace somicage;
 using namespace somicage::editor;

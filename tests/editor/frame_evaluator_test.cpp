@@ -1,11 +1,11 @@
-// The frame devices (core/frame_evaluator.h): the CPU evaluator and the OpenGL one (render/gl_frame_evaluator.h)
+// The frame devices (core/deform/frame_evaluator.h): the CPU evaluator and the OpenGL one (render/gl_frame_evaluator.h)
 // against an independent evaluation of the frame from C and W written here from frame_evaluation.h's definition
 // (y_p = C_p W, then o + T_p^-1 b_p for the d^2 + d outputs of Somigliana), on a bent cube pose that is not a
 // similarity, for Somigliana (local, Eq. 11 with the per-point solve) and mean value coordinates (y_p itself).
 // The CPU holds it to 1e-12 of the cage diameter (double C), OpenGL to 1e-5 (float C and float sums, as the
 // editor's GPU deformer). Needs an OpenGL 4.3 context (ctest runs this binary under xvfb-run); the OpenGL half
 // skips visibly without one.
-#include "frame_evaluator.h"
+#include "deform/frame_evaluator.h"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 
 #include "core/test_shapes.h"
-#include "deformer.h"
+#include "deform/deformer.h"
 #include "gl_frame_evaluator.h"
 #include "methods/method_descriptors.h"
 

@@ -19,17 +19,17 @@
 #include <string>
 #include <vector>
 
+#include "base/errors.h"
 #include "core/method_cases.h"
 #include "core/test_shapes.h"
-#include "deformer.h"
-#include "errors.h"
+#include "deform/deformer.h"
 #include "gpu_benchmark.h"
-#include "mesh_formats.h"
+#include "io/mesh_formats.h"
 #include "mesh_normals.h"
 #include "mesh_renderer.h"
 #include "methods/method_descriptors.h"
+#include "model/scene.h"
 #include "offscreen_context.h"
-#include "scene.h"
 
 namespace somicage {
 namespace {
@@ -185,7 +185,7 @@ TEST_P(GpuDeformerTest, MatchesCpu) {
 
 INSTANTIATE_TEST_SUITE_P(AllMethods, GpuDeformerTest, ::testing::ValuesIn(allCases()), test::methodCaseName);
 
-// Points outside the cage, in the blend band and beyond, and exactly on it (core/exterior_points.h): the GPU's
+// Points outside the cage, in the blend band and beyond, and exactly on it (core/deform/exterior_points.h): the GPU's
 // second pass (shaders/exterior_blend.comp.glsl) gives what the CPU's blend gives, within the same tolerance.
 TEST(GpuDeformer, ExteriorPointsMatchCpu) {
   REQUIRE_GPU();

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "autosave.h"
-#include "camera.h"
-#include "scene.h"
-#include "session.h"
+#include "engine/session.h"
+#include "interaction/camera.h"
+#include "model/autosave.h"
+#include "model/scene.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The Fig. 8 demo (app/editor/fig8_demo.h) as the editor draws it under xvfb-run (Mesa llvmpipe): the Phong panes
+// The Fig. 8 demo (app/editor/model/fig8_demo.h) as the editor draws it under xvfb-run (Mesa llvmpipe): the Phong panes
 // crease where the mesh crosses tetrahedra and the Somigliana pane does not, measured on the picture (not compared
 // with a stored one); View > Show tetrahedra draws the posed tetrahedra on the Phong panes only.
 #include <gtest/gtest.h>

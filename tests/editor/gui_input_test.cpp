@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "app_state.h"
+#include "engine/session.h"
 #include "gui_screenshot_support.h"
-#include "layout.h"
-#include "panels.h"
-#include "session.h"
+#include "model/app_state.h"
+#include "ui/layout.h"
+#include "ui/panels.h"
 
 namespace {
 

@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "camera.h"
 #include "gui_screenshot_support.h"
-#include "obj_io.h"
-#include "scene.h"
+#include "interaction/camera.h"
+#include "io/obj_io.h"
+#include "model/scene.h"
 
 using namespace gui_test;
 

@@ -1,6 +1,6 @@
-// libFuzzer target: the OBJ loaders (core/obj_io.h) on arbitrary bytes, as `somicage deform` and the editor read
+// libFuzzer target: the OBJ loaders (core/io/obj_io.h) on arbitrary bytes, as `somicage deform` and the editor read
 // them: parse (loadMesh), turn into a cage (loadCage), read as a pose (loadPosedVertices); and the same bytes as a
-// MEDIT volume mesh (core/medit_io.h, --tets), checked against the unit cube's cage (volume_mesh.h).
+// MEDIT volume mesh (core/geometry/medit_io.h, --tets), checked against the unit cube's cage (volume_mesh.h).
 // Contract: no crash and no sanitizer report; bad input throws InputError; what is accepted is well formed
 // (finite coordinates, indices in range).
 #include <cstdint>
@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "errors.h"
-#include "medit_io.h"
-#include "obj_io.h"
+#include "base/errors.h"
+#include "geometry/medit_io.h"
+#include "io/obj_io.h"
 
 namespace {
 

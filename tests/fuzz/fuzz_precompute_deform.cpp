@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "cage.h"
-#include "cage_validation.h"
-#include "deformer.h"
-#include "errors.h"
+#include "base/errors.h"
+#include "cage/cage_validation.h"
+#include "deform/deformer.h"
+#include "geometry/cage.h"
 #include "methods/method_descriptors.h"
 
 namespace {

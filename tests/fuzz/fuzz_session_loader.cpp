@@ -1,5 +1,5 @@
-// libFuzzer target: the session reader (core/session.h, json.h: the editor's, animate's and Python's) on any text.
-// Contract: no crash and no sanitizer report; bad input throws InputError; an accepted session has finite numbers
+// libFuzzer target: the session reader (core/engine/session.h, json.h: the editor's, animate's and Python's) on any
+// text. Contract: no crash and no sanitizer report; bad input throws InputError; an accepted session has finite numbers
 // where the editor needs them, an inline cage is well-formed, and saving it and reading it back gives the same session.
 #include <cmath>
 #include <cstdint>
@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <string>
 
-#include "errors.h"
-#include "json.h"
-#include "session.h"
+#include "base/errors.h"
+#include "base/json.h"
+#include "engine/session.h"
 
 namespace {
 

@@ -1,14 +1,14 @@
-// core/cage_generation.h on every mesh of ../shared/models (skipped visibly when absent), at the face count of the
-// model's hand-made cage, checked by generated_cage_checks.h. How tight the cages are is measured, not asserted
+// core/generation/cage_generation.h on every mesh of ../shared/models (skipped visibly when absent), at the face count
+// of the model's hand-made cage, checked by generated_cage_checks.h. How tight the cages are is measured, not asserted
 // here (docs/cli.md's table compares them with the hand-made ones). Labelled "slow" (about two minutes in all on two
 // busy cores): run_all.sh runs it, the sanitizer build does not.
 #include <gtest/gtest.h>
 
-#include "cage_enclosure.h"
-#include "cage_generation.h"
 #include "core/generated_cage_checks.h"
 #include "core/test_models.h"
-#include "mesh_formats.h"
+#include "generation/cage_enclosure.h"
+#include "generation/cage_generation.h"
+#include "io/mesh_formats.h"
 
 namespace somicage {
 namespace {

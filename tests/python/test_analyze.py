@@ -1,4 +1,4 @@
-"""Deformer.analyze, the facade's "deform to quantities" (core/engine.h: analyzePose): the numbers of
+"""Deformer.analyze, the facade's "deform to quantities" (core/engine/engine.h: analyzePose): the numbers of
 `somicage analyze --json` (the same keys, the same values to 1e-12 relative), and checked independently: the volume
 change is the signed volume of Deformer.deform's output (NumPy) over the rest volume, and a similarity s R x + t has
 det J = s^3, no distortion and area ratios s^2 for every method."""

@@ -133,7 +133,7 @@ def test_gamma_beyond_the_range_has_the_clis_message(tmp_path, cube_cage, cube_p
 
 
 def test_largest_gamma_stays_finite_under_a_face_turned_inside_out(cube_cage, cube_points):
-    """At the largest gamma the normal stretch is at most exp(gamma) (core/deformer.h): even a pose that pushes a
+    """At the largest gamma the normal stretch is at most exp(gamma) (core/deform/deformer.h): even a pose that pushes a
     corner through the cube (solid angles change by up to 4 pi) gives finite points, within exp(gamma) cage
     diameters of the cage."""
     gamma = somicage.parameter_ranges()["gamma"][1]

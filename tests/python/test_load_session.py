@@ -1,4 +1,4 @@
-"""somicage.load_session reads a session with the reader the editor and `somicage animate` use (core/session.h):
+"""somicage.load_session reads a session with the reader the editor and `somicage animate` use (core/engine/session.h):
 its inline cage, every parameter, the poses and the timeline; its frames deform to what `animate` writes. And the
 module reads every mesh format `deform` reads (one loader)."""
 import json

@@ -1,4 +1,4 @@
-"""Python's and Blender's parameters against the engine's one table (core/parameter_schema.h, issue 23): the
+"""Python's and Blender's parameters against the engine's one table (core/deform/parameter_schema.h, issue 23): the
 keywords of Deformer.deform and analyze (as built and in the stub), load_session's keywords and the Blender panel's
 properties are the table's rows with its defaults and ranges, so a row added to the table fails here until every
 front end has it."""

@@ -1,4 +1,4 @@
-"""The portable build on an old CPU (core/cpu_dispatch.h, docs/performance.md): `somicage deform` and the module's
+"""The portable build on an old CPU (core/base/cpu_dispatch.h, docs/performance.md): `somicage deform` and the module's
 Deformer run FIREHYDRANT under `qemu-x86_64 -cpu Nehalem` (SSE4.2: no AVX, no FMA; qemu stops at any newer
 instruction) and give the same points to 1e-12 as on this machine, where the kernels run their AVX2/FMA copy.
 Kept short for CI: the mesh's first 400 vertices, one thread (qemu is 10-50x slower than the host)."""

@@ -1,12 +1,12 @@
-// Checks one point's row of 3D Somigliana terms, as the CUDA precompute writes it (core/cuda/somigliana_row_portable.h
-// in the layout of core/coordinate_layout.h: 10 terms per cage vertex, D, omega, B (xx, yy, zz, xy, xz, yz), then 4
-// per face, S, q = Q n), against the
+// Checks one point's row of 3D Somigliana terms, as the CUDA precompute writes it
+// (core/coordinates/somigliana_row_portable.h in the layout of core/deform/coordinate_layout.h: 10 terms per cage
+// vertex, D, omega, B (xx, yy, zz, xy, xz, yz), then 4 per face, S, q = Q n), against the
 // reference quadrature (somigliana_reference.h): the row is turned back into T_i(x) and K_j(x) n_j with Eqs. 3-4's
 // own scalars, T_i = (a - 2b)(D_i I + A_i) + 6b B_i (A_i w = omega_i x w) and K_j n_j = (a - b) S_j n_j + b q_j,
 // and compared at two Poisson ratios, so that a term written to the wrong column, with the wrong sign or the wrong
 // factor shows up however the kernel computes it. The 18 affine terms after them (the affine variant's tail,
-// core/affine_terms.h) are turned back into sum_j K_j sigma n_j for each of the six symmetric basis stresses sigma
-// (xx, yy, zz, xy, xz, yz) and compared with the reference's full K_j: K_j sigma n_j = (a - b) S_j sigma n_j +
+// core/geometry/affine_terms.h) are turned back into sum_j K_j sigma n_j for each of the six symmetric basis stresses
+// sigma (xx, yy, zz, xy, xz, yz) and compared with the reference's full K_j: K_j sigma n_j = (a - b) S_j sigma n_j +
 // b M_j sigma n_j, whose second part is the affine terms' column of that sigma.
 #pragma once
 
@@ -15,7 +15,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "coordinate_layout.h"
+#include "deform/coordinate_layout.h"
 #include "somigliana_reference.h"
 
 namespace somicage::reference {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "adaptive_quadrature.h"
-#include "cage.h"
+#include "geometry/cage.h"
 
 namespace somicage::reference {
 

@@ -1,0 +1,55 @@
+// The orbit camera: pure math, no GL. Y is up; screen coordinates are pixels inside a viewport, x to the
+// right and y downwards from its top-left corner (the convention of GLFW and ImGui).
+#pragma once
+
+#include <Eigen/Core>
+
+#include "engine/camera_state.h"
+
+namespace somicage::editor {
+
+class OrbitCamera {
+ public:
+  static constexpr double kFovY = 0.6108652381980153;  // 35 degrees
+  static constexpr double kMaxPitch = 1.55;
+
+  // mode2D: looks down -z with an orthographic projection; orbiting is disabled.
+  void setMode2D(bool on);
+  bool mode2D() const { return mode2D_; }
+  const CameraState& state() const { return state_; }
+  void setState(const CameraState& state);
+
+  Eigen::Vector3d eye() const;
+  Eigen::Vector3d forward() const;  // unit, from the eye to the target
+  Eigen::Vector3d right() const;    // unit, screen +x
+  Eigen::Vector3d up() const;       // unit, screen -y
+
+  // Column-vector matrices (clip = projection * view * world), single precision for upload.
+  Eigen::Matrix4d viewMatrix() const;
+  Eigen::Matrix4d projectionMatrix(double aspect) const;
+
+  // Dragging by (dx, dy) pixels; pan keeps the point under the cursor (at the target's depth) under it.
+  void orbit(double dxPixels, double dyPixels);
+  void pan(double dxPixels, double dyPixels, double viewportHeight);
+  // Wheel steps (positive = closer), multiplicative.
+  void zoom(double steps);
+  // Fits the box [lo, hi] in a viewport of the given aspect (width / height), keeping the direction.
+  void frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double aspect = 1.0);
+
+  // World length of one pixel at the depth of `point` for a viewport `viewportHeight` pixels high.
+  double worldPerPixel(const Eigen::Vector3d& point, double viewportHeight) const;
+
+  // Screen position (pixels) of a world point in a width x height viewport; depth = distance along forward().
+  // Returns false when the point is behind the eye.
+  bool project(const Eigen::Vector3d& world, double width, double height, Eigen::Vector2d& screen,
+               double* depth = nullptr) const;
+  // The world point at screen position `screen` and the given depth along forward().
+  Eigen::Vector3d unproject(const Eigen::Vector2d& screen, double depth, double width, double height) const;
+
+ private:
+  double halfHeightAt(double depth) const;  // half the visible world height at a depth
+  CameraState state_;
+  bool mode2D_ = false;
+};
+
+}  // namespace somicage::editor

@@ -1,0 +1,86 @@
+// Runs scene loading and makeDeformer() on a job (background_job.h), with progress and cancellation, so the UI stays
+// responsive and keeps showing the old scene until the new one is ready. A request whose deformers would not fit in
+// the free memory fails before any precompute, with the estimate in its error (core/deform/memory_estimate.h). No GL.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "deform/deformer.h"
+#include "engine/view_spec.h"
+#include "jobs/background_job.h"
+#include "model/scene.h"
+
+namespace somicage::editor {
+
+// The editor stores coordinates in float: half the memory and the bytes read per frame (docs/engine.md).
+inline PrecomputeOptions interactiveOptions() {
+  PrecomputeOptions options;
+  options.floatStorage = true;
+  return options;
+}
+
+// One deformer per method and method options (views with equal keys share it).
+using DeformerSet = std::map<DeformerKey, std::shared_ptr<const CageDeformer>>;
+
+struct PrecomputeRequest {
+  // Either a ready scene, or a loader run on the worker (file loading can take a while too).
+  std::shared_ptr<const Scene> scene;
+  std::function<Scene()> loadScene;
+  std::vector<DeformerKey> methods;  // deformers to build, in this order (each with its options)
+  PrecomputeOptions options = interactiveOptions();
+  bool withGradients = false;  // a J-based quantity is shown: its gradients count in the memory check too
+  // The cores it may use (thread_budget.h): all of them while a scene loads (the UI has nothing to deform), else all
+  // but the UI's.
+  int threads = ThreadBudget::machine().cores();
+};
+
+struct PrecomputeOutcome {
+  std::uint64_t id = 0;                // as returned by start()
+  std::shared_ptr<const Scene> scene;  // the scene the deformers belong to (null if loading failed)
+  DeformerSet deformers;
+  double seconds = 0.0;  // wall time of the whole request
+  bool cancelled = false;
+  std::string error;  // non-empty on failure (InputError text, bad_alloc, ...)
+  // What the user should be told about deformers that were built (describeNotice: a Mesh_3 fallback to TetGen).
+  std::vector<std::string> notices;
+};
+
+class PrecomputeWorker {
+ public:
+  // Supersedes any running request (its outcome never arrives; nothing waits for it), then starts this one. Returns
+  // its id.
+  std::uint64_t start(PrecomputeRequest request);
+  void cancel() { job_.cancel(); }  // asks the running request to stop; it finishes with cancelled = true
+  bool busy() const { return job_.busy(); }
+  // Called on the job's thread when a request has finished (background_job.h), and when its scene has loaded.
+  void setOnFinished(std::function<void()> onFinished);
+  // The latest request's scene once it has loaded (before its deformers), once; null before or when taken. The
+  // editor shows it, undeformed, while the deformers are computed.
+  std::shared_ptr<const Scene> takeLoadedScene();
+  double progress() const { return job_.progress(); }  // 0..1 over all methods of the request
+  std::string stage() const { return job_.stage(); }   // e.g. "Loading files", "Somigliana 2/3"
+  // The outcome of the last finished request, once; empty while running or when already taken.
+  std::optional<PrecomputeOutcome> poll() { return job_.poll(); }
+  // Blocks until the running request finishes and returns its outcome (empty when nothing ran).
+  std::optional<PrecomputeOutcome> wait() { return job_.wait(); }
+
+ private:
+  struct LoadedScene {  // written by the job, taken by the UI thread
+    std::mutex mutex;
+    std::uint64_t id = 0;
+    std::shared_ptr<const Scene> scene;
+  };
+  std::uint64_t nextId_ = 1;
+  std::shared_ptr<LoadedScene> loaded_ = std::make_shared<LoadedScene>();
+  std::shared_ptr<const std::function<void()>> wake_;
+  BackgroundJob<PrecomputeOutcome> job_;
+};
+
+}  // namespace somicage::editor

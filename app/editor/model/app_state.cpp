@@ -1,0 +1,123 @@
+// The views: which are shown, their labels, the compare settings and framing.
+#include "model/app_state.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "geometry/volume_mesh.h"
+
+namespace somicage::editor {
+
+std::vector<ViewSpec> AppState::views() const {
+  if (view.compare && view.compareViews.size() >= 2) return view.compareViews;
+  return {singleView()};
+}
+
+ViewSpec AppState::singleView() const {
+  return withMethod(ViewSpec{document.method, {}, view.methodOptions}, document.method);
+}
+
+std::vector<DeformerKey> AppState::deformerKeys() const {
+  std::vector<DeformerKey> keys;
+  for (const ViewSpec& shown : views())
+    if (std::find(keys.begin(), keys.end(), deformerKey(shown)) == keys.end()) keys.push_back(deformerKey(shown));
+  return keys;
+}
+
+std::string viewLabel(const AppState& state, std::size_t v) {
+  const ViewSpec view = state.views()[v];
+  const Method method = view.method;
+  const DeformParams params = view.params(state.document.params);
+  std::string label = method->displayName;
+  char buf[160];
+  for (const ParameterSpec& spec : parameterSchema()) {  // parameter_schema.h: what each row's LabelShow says
+    const double value = parameterValue(spec, params);
+    const bool own = view.own.count(spec.key) > 0;
+    if (!readsParameter(method, spec.parameter) || spec.labelShow == LabelShow::Never ||
+        (spec.labelShow == LabelShow::WhenSet && value == spec.defaultValue && !own))
+      continue;
+    const std::string text = parameterText(spec, value);
+    if (spec.type == ParameterType::Number) {
+      std::snprintf(buf, sizeof buf, "%.2f", value);
+      label += "  " + std::string(spec.key) + "=" + (std::isinf(value) ? text : buf);
+    } else if (spec.type == ParameterType::Switch) {
+      label += "  " + std::string(value != 0 ? "" : "no ") + spec.label;
+    } else if (spec.labelShow == LabelShow::Always) {  // the variant: "local", or "blend 0.50" between the two
+      std::snprintf(buf, sizeof buf, " %.2f", params.blend);
+      label += "  " + text + (text == "blend" ? buf : "");
+    } else {
+      label += "  " + std::string(spec.key) + " " + text;
+    }
+    if (own) label += " (own)";
+  }
+  for (const auto& [key, value] : view.options) label += "  " + key + " " + value + " (own)";
+  // Which tetrahedra a volume method gets without options of its own (deformer.h: volumeMeshFor): the cage's star.
+  if (method->needsVolumeMesh && view.options.count("tets") + view.options.count("tet-level") == 0 &&
+      state.model.scene && starVolumeMesh(state.model.scene->restCage))
+    label += "  star tetrahedra";
+  if (!hasDeformer(state, deformerKey(view)))  // the scene is shown while its deformers are computed
+    label += state.jobs.precompute.busy() ? "  (precomputing...)" : "  (not precomputed)";
+  return label;
+}
+
+std::string viewShortName(const AppState& state, std::size_t v) {
+  const ViewSpec view = state.views()[v];
+  std::string name = view.method->displayName;
+  if (const std::optional<double> nu = view.value("nu")) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, " nu=%.2f", *nu);
+    name += buf;
+  }
+  for (const auto& [key, value] : view.options) name += " " + key + " " + value;
+  return name;
+}
+
+void setMethodOptions(AppState& state, MethodOptions options) {
+  if (state.view.methodOptions == options) return;
+  state.view.methodOptions = std::move(options);
+  state.model.deformDirty = true;
+  ensureDeformers(state);
+}
+
+void setCompare(AppState& state, bool on) {
+  if (on && !state.view.compare) state.view.frameRequested = true;  // narrower views: frame everything again
+  if (on != state.view.compare) state.view.quantities.clearSweep();
+  state.view.compare = on;
+  state.model.deformDirty = true;
+  ensureDeformers(state);
+}
+
+void setCompareViews(AppState& state, std::vector<ViewSpec> views) {
+  if (views.size() < 2 || views.size() > kMaxCompareViews) return;
+  state.view.compareViews = std::move(views);
+  setCompare(state, true);
+}
+
+void removeCompareView(AppState& state, std::size_t v) {
+  if (state.view.compareViews.size() <= 2 || v >= state.view.compareViews.size()) return;
+  std::vector<ViewShow>& shows = state.view.quantities.show.views;
+  if (shows.size() > 1 && v < shows.size()) shows.erase(shows.begin() + static_cast<std::ptrdiff_t>(v));
+  std::vector<ViewSpec> views = state.view.compareViews;
+  views.erase(views.begin() + static_cast<std::ptrdiff_t>(v));
+  setCompareViews(state, std::move(views));
+}
+
+void frameAll(AppState& state) {
+  if (!state.model.scene) return;
+  ensureCpuPoints(state, 0);
+  Eigen::Vector3d lo, hi, clo, chi;
+  bounds3(displayedPoints(state, 0), lo, hi);
+  bounds3(state.document.pose.rows() > 0 ? state.document.pose : state.model.scene->restCage.vertices, clo, chi);
+  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.view.viewAspect);
+}
+
+void frameRest(AppState& state) {
+  if (!state.model.scene) return;
+  Eigen::Vector3d lo, hi, clo, chi;
+  bounds3(state.model.scene->meshVertices, lo, hi);
+  bounds3(state.model.scene->restCage.vertices, clo, chi);
+  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.view.viewAspect);
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,216 @@
+// Files: sessions, posed cages, dropped and recent files, the crash-recovery offer.
+#include <filesystem>
+#include <system_error>
+
+#include "engine/engine.h"
+#include "interaction/drop.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
+#include "model/app_state.h"
+
+namespace somicage::editor {
+
+Session makeSession(const AppState& state) {
+  Session s;
+  if (state.model.scene) {
+    s.meshPath = state.model.scene->meshPath;
+    s.cagePath = state.model.scene->cagePath;
+    s.demoDim = state.model.scene->dim();
+    if (s.cagePath.empty()) s.restCage = state.model.scene->restCage;  // no file holds it: the session does
+  }
+  s.pose = state.document.pose;
+  s.method = state.document.method;
+  s.methodOptions = state.singleView().options;
+  s.params = state.document.params;
+  s.compare = state.view.compare;
+  s.compareViews = state.view.compareViews;
+  s.camera = state.view.camera.state();
+  s.poses = state.animation.poses;
+  s.timeline = state.animation.timeline;
+  return s;
+}
+
+void applySession(AppState& state, const Session& s, PendingLoad load) {
+  state.animation.poses = s.poses;
+  state.animation.timeline = s.timeline;
+  if (!s.poses.poses().empty() || !s.timeline.keys.empty()) state.animation.showPanels = true;
+  state.document.method = s.method;
+  state.view.methodOptions = s.methodOptions;
+  state.document.params = s.params;
+  state.view.compare = s.compare;
+  if (!s.compareViews.empty()) state.view.compareViews = s.compareViews;
+  const bool inlineCage = s.restCage.numVertices() > 0;
+  const bool sameScene = state.model.scene && !state.loadingScene() && state.model.scene->meshPath == s.meshPath &&
+                         state.model.scene->cagePath == s.cagePath &&
+                         (!s.meshPath.empty() || state.model.scene->dim() == s.demoDim) &&
+                         (!inlineCage || sameCage(state.model.scene->restCage, s.restCage));
+  if (sameScene) {
+    if (s.pose.rows() == state.document.pose.rows() && s.pose.cols() == state.document.pose.cols())
+      setPose(state, s.pose);
+    commitEdit(state, "Load session");
+    state.view.camera.setState(s.camera);
+    state.model.deformDirty = true;
+    ensureDeformers(state);
+    return;
+  }
+  if (s.pose.rows() > 0) load.pose = s.pose;
+  load.camera = s.camera;
+  if (inlineCage) {
+    requestLoad(
+        state,
+        [mesh = s.meshPath, cage = s.restCage, notices = s.cageNotices]() {
+          Scene scene = loadSceneWithCage(mesh, cage, "the session's cage");
+          for (const Notice& n : notices) scene.notices.push_back(sceneNotice(n));
+          return scene;
+        },
+        std::move(load));
+  } else if (s.meshPath.empty()) {
+    requestDemo(state, s.demoDim, std::move(load));
+  } else {  // the session is the recent entry, not its files
+    requestLoad(
+        state, [mesh = s.meshPath, cage = s.cagePath]() { return loadScene(mesh, cage); }, std::move(load));
+  }
+}
+
+void acceptRestoreOffer(AppState& state) {
+  if (!state.files.restoreOffer) return;
+  PendingLoad load;
+  load.restored = true;
+  applySession(state, *state.files.restoreOffer, std::move(load));
+  state.status.message = "restored the session from " + state.files.restoreOfferTime;
+  state.files.restoreOffer.reset();
+}
+
+void discardRestoreOffer(AppState& state) { state.files.restoreOffer.reset(); }
+
+bool savePosedCage(AppState& state, const std::string& path) {
+  if (!state.model.scene) return false;
+  try {
+    Cage posed = state.model.scene->restCage;
+    posed.vertices = state.document.pose;
+    saveObj(path, state.document.pose, cageTopology(posed));
+    state.status.message = "saved posed cage " + path;
+    return true;
+  } catch (const std::exception& e) {
+    state.status.errors.push_back(e.what());
+    return false;
+  }
+}
+
+bool loadPosedCage(AppState& state, const std::string& path) {
+  if (!state.model.scene) return false;
+  try {
+    const Eigen::MatrixXd pose = posedVerticesFromMesh(loadAnyMesh(path), state.model.scene->restCage, path);
+    setPose(state, pose);
+    commitEdit(state, "Load posed cage");
+    state.status.message = "loaded pose " + path;
+    if (!state.model.scene->isDemo()) {
+      noteRecent(state, RecentEntry::files(state.model.scene->meshPath, state.model.scene->cagePath, path));
+    }
+    return true;
+  } catch (const std::exception& e) {
+    state.status.errors.push_back(e.what());
+    return false;
+  }
+}
+
+bool saveSessionFile(AppState& state, const std::string& path) {
+  try {
+    saveSession(path, makeSession(state));
+    state.document.path = path;
+    state.document.history.markSaved();
+    state.status.message = "saved session " + path;
+    noteRecent(state, RecentEntry::sessionFile(path));  // File > Open Recent lists it at once
+    return true;
+  } catch (const std::exception& e) {
+    state.status.errors.push_back(e.what());
+    return false;
+  }
+}
+
+bool loadSessionFile(AppState& state, const std::string& path) {
+  try {
+    const Session session = loadSession(path);
+    PendingLoad load;
+    load.documentPath = path;
+    applySession(state, session, std::move(load));
+    if (!state.loadingScene()) {  // the same scene: applied at once, as an edit
+      state.document.path = path;
+      state.document.history.markSaved();
+    }
+    state.status.message = "opened session " + path;
+    noteRecent(state, RecentEntry::sessionFile(path));
+    return true;
+  } catch (const std::exception& e) {
+    state.status.errors.push_back(e.what());
+    return false;
+  }
+}
+
+// ---- dropped and recent files ----
+
+void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
+  const bool sceneReady = state.model.scene && !state.loadingScene();
+  const int cageVertices = sceneReady ? state.model.scene->restCage.numVertices() : -1;
+  int singleVertices = -1;
+  if (paths.size() == 1 && lowerExtension(paths.front()) == ".obj" && cageVertices > 0) {
+    singleVertices = countObjVertices(paths.front(), cageVertices);
+  }
+  const DropPlan plan = planDrop(paths, cageVertices, singleVertices);
+  switch (plan.kind) {
+    case DropPlan::Kind::Error:
+      if (paths.size() == 1 && state.loadingScene()) {
+        state.status.errors.push_back("a scene is still loading: drop a posed cage again once it has arrived, or " +
+                                      plan.message);
+      } else {
+        state.status.errors.push_back(plan.message);
+      }
+      break;
+    case DropPlan::Kind::Scene:
+      state.files.dialog.mesh = plan.mesh;  // the Open panel shows what was dropped
+      state.files.dialog.cage = plan.cage;
+      state.files.dialog.posed = plan.posed;
+      guardUnsaved(state, "open " + plan.mesh, [plan](AppState& s) {
+        requestSceneFiles(s, plan.mesh, plan.cage, plan.posed);
+        s.status.message = "opening mesh " + plan.mesh + ", cage " + plan.cage +
+                           (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
+      });
+      break;
+    case DropPlan::Kind::Pose:
+      loadPosedCage(state, plan.posed);
+      break;
+    case DropPlan::Kind::Session:
+      guardUnsaved(state, "open " + plan.session, [plan](AppState& s) { loadSessionFile(s, plan.session); });
+      break;
+  }
+}
+
+void noteRecent(AppState& state, RecentEntry entry) {
+  for (std::string* p : {&entry.mesh, &entry.cage, &entry.posed, &entry.session}) {
+    if (p->empty()) continue;
+    std::error_code ec;
+    const std::filesystem::path absolute = std::filesystem::absolute(*p, ec);
+    if (!ec) *p = absolute.lexically_normal().string();
+  }
+  if (!state.files.recent.add(entry) || state.files.recentPath.empty()) return;
+  try {
+    saveRecentFiles(state.files.recentPath, state.files.recent);
+  } catch (const std::exception& e) {
+    state.status.message += "  (recent files not saved: " + std::string(e.what()) + ")";
+  }
+}
+
+void openRecent(AppState& state, const RecentEntry& entry) {
+  guardUnsaved(state, "open " + entry.label(), [entry](AppState& s) {
+    if (entry.kind == RecentEntry::Kind::Session) {
+      loadSessionFile(s, entry.session);
+      return;
+    }
+    s.files.dialog.mesh = entry.mesh;
+    s.files.dialog.cage = entry.cage;
+    s.files.dialog.posed = entry.posed;
+    requestSceneFiles(s, entry.mesh, entry.cage, entry.posed);
+  });
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,214 @@
+// The scene's loading and precompute: requests to the precompute worker and the installation of its outcomes.
+#include <cstdio>
+
+#include "engine/engine.h"
+#include "io/mesh_formats.h"
+#include "io/obj_io.h"
+#include "model/app_state.h"
+#include "tetrahedralization/cage_tetrahedralization.h"
+
+namespace somicage::editor {
+
+namespace {
+
+// A precompute of `methods`' deformers: the J-based quantities' gradients count in its memory check when shown, and
+// the active device integrates the coordinates when it can (its row integrator: --device cuda runs the whole
+// pipeline on CUDA; the CPU's and the in-place OpenGL device's integrate on the CPU).
+PrecomputeRequest deformerRequest(const AppState& state, std::vector<DeformerKey> methods) {
+  PrecomputeRequest request;
+  request.methods = std::move(methods);
+  request.withGradients = state.view.quantities.show.usesSource(QuantitySource::Jacobian, state.views().size());
+  if (const FrameDevice* device = findFrameDevice(state.model.devices.offered, state.model.devices.active()))
+    request.options.rowIntegrator = device->rowIntegrator;
+  request.options.volumeMesher = tetrahedralizeCageWithOptions;  // Phong's tetrahedra (CGAL, default level)
+  return request;
+}
+
+}  // namespace
+
+// A scene's load takes every core (thread_budget.h): until its mesh arrives the UI has nothing to deform, and then
+// only draws it at rest.
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load) {
+  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
+  request.threads = ThreadBudget::machine().cores();
+  request.scene = std::move(scene);
+  state.jobs.load = std::move(load);
+  state.jobs.precompute.start(std::move(request));
+}
+
+void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad load) {
+  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
+  request.threads = ThreadBudget::machine().cores();
+  request.loadScene = std::move(loader);
+  state.jobs.load = std::move(load);
+  state.jobs.precompute.start(std::move(request));
+}
+
+void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
+                       const std::string& posedPath) {
+  PendingLoad load;
+  load.posedPath = posedPath;
+  load.recent = RecentEntry::files(meshPath, cagePath, posedPath);
+  requestLoad(
+      state, [meshPath, cagePath]() { return loadScene(meshPath, cagePath); }, std::move(load));
+}
+
+void requestDemo(AppState& state, int dim, PendingLoad load) {
+  requestScene(state, std::make_shared<const Scene>(makeDemoScene(dim)), std::move(load));
+}
+
+bool hasDeformer(const AppState& state, const DeformerKey& key) { return state.model.deformers.count(key) > 0; }
+
+void ensureDeformers(AppState& state) {
+  if (!state.model.scene || state.loadingScene()) return;
+  std::vector<DeformerKey> missing;
+  for (const DeformerKey& key : state.deformerKeys()) {
+    if (!hasDeformer(state, key)) missing.push_back(key);
+  }
+  if (missing.empty()) return;
+  PrecomputeRequest request = deformerRequest(state, std::move(missing));
+  request.threads = ThreadBudget::machine().cores() - 1;  // the UI keeps a core: it deforms the views it has
+  request.scene = state.model.scene;
+  state.jobs.precompute.start(std::move(request));
+}
+
+namespace {
+
+// "mesh warning: 640 of 642 points lie outside the cage ..." when some do (the deformers that tell: Somigliana's and
+// Green's regions), as the command line warns.
+std::optional<std::string> exteriorNotice(const Scene& scene, const DeformerSet& deformers) {
+  const CageDeformer* most = nullptr;
+  for (const auto& [method, deformer] : deformers)
+    if (!most || deformer->diagnostics().exteriorCount() > most->diagnostics().exteriorCount()) most = deformer.get();
+  if (!most) return std::nullopt;
+  const std::optional<Notice> notice = exteriorPointsNotice(*most, scene.isDemo() ? scene.name : scene.meshPath);
+  if (!notice) return std::nullopt;
+  return "mesh warning: " + notice->text;
+}
+
+}  // namespace
+
+void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
+  std::vector<std::string> notices;                            // for the status bar and the log
+  PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
+  if (state.jobs.load) state.jobs.load->sceneShown = true;
+  const std::shared_ptr<const Scene> previous = state.model.scene;
+  state.model.scene = std::move(scene);
+  ++state.model.sceneGeneration;
+  state.model.deformers.clear();
+  state.model.deformed.clear();
+  state.model.cpuStale.clear();
+  state.view.quantities.clearSweep();
+  state.document.pose = state.model.scene->restCage.vertices;
+  state.input.selection.resize(state.model.scene->restCage.numVertices());
+  state.input.mouse = Interaction{};
+  state.view.camera.setMode2D(state.model.scene->dim() == 2);
+  frameRest(state);
+  state.view.frameRequested = !load.camera.has_value();
+  if (load.camera) state.view.camera.setState(*load.camera);
+  if (load.pose) {
+    if (load.pose->rows() == state.document.pose.rows() && load.pose->cols() == state.document.pose.cols()) {
+      state.document.pose = *load.pose;
+    } else {
+      state.status.errors.push_back("the saved pose has " + std::to_string(load.pose->rows()) +
+                                    " vertices but the cage has " + std::to_string(state.document.pose.rows()) +
+                                    "; the rest pose is shown instead");
+    }
+  }
+  // The pose library and the keys belong to the cage they were made on: a session brings its own (they must fit its
+  // cage), anything else keeps them only on a cage of the same topology. Part of the opened state, not a step.
+  const bool sessionPoses = load.documentPath.has_value() || load.restored;
+  const std::string dropped = keepPosesThatFit(state.animation, state.model.scene->restCage,
+                                               sessionPoses || !previous ? nullptr : &previous->restCage);
+  if (!dropped.empty()) notices.push_back(dropped);
+  bool posedLoaded = false;
+  if (!load.posedPath.empty()) {
+    try {
+      state.document.pose =
+          posedVerticesFromMesh(loadAnyMesh(load.posedPath), state.model.scene->restCage, load.posedPath);
+      posedLoaded = true;
+    } catch (const std::exception& e) {
+      state.status.errors.push_back(e.what());
+    }
+  }
+  // The new document's history: the state as opened, then the posed cage loaded with it (undoable, like any
+  // "Load posed cage"). Opening loses nothing, so it starts clean, except a crashed run's restored autosave,
+  // which exists nowhere else.
+  const Document opened = currentDocument(state);
+  if (posedLoaded) state.document.pose = state.model.scene->restCage.vertices;
+  state.document.history.reset(currentDocument(state), "Open " + state.model.scene->name, !load.restored);
+  if (posedLoaded) {
+    state.document.pose = opened.pose;
+    commitEdit(state, "Load posed cage");
+    if (!load.restored) state.document.history.markSaved();
+  }
+  state.document.path = load.documentPath.value_or("");
+  ++state.document.poseGeneration;
+  notices.insert(notices.begin(), state.model.scene->notices.begin(), state.model.scene->notices.end());
+  state.status.message = "loaded " + state.model.scene->name;
+  for (const std::string& notice : notices) {
+    state.status.message += "; " + notice;
+    std::fprintf(stderr, "somicage: %s: %s\n", state.model.scene->name.c_str(), notice.c_str());
+  }
+  if (load.recent && load.recent->mesh == state.model.scene->meshPath &&
+      load.recent->cage == state.model.scene->cagePath) {
+    if (!posedLoaded) load.recent->posed.clear();
+    noteRecent(state, *load.recent);
+  }
+}
+
+void installOutcome(AppState& state, PrecomputeOutcome outcome) {
+  if (outcome.cancelled) {
+    state.jobs.load.reset();
+    state.status.message = "precomputation cancelled";
+    return;
+  }
+  if (!outcome.error.empty()) {
+    state.jobs.load.reset();
+    state.status.errors.push_back(outcome.error);
+    return;
+  }
+  if (!outcome.scene) return;
+  state.status.stats.precomputeSeconds = outcome.seconds;
+  const bool newScene = outcome.scene != state.model.scene;  // not shown while its deformers were computed
+  if (newScene) showLoadedScene(state, outcome.scene);
+  const bool completesLoad = state.jobs.load && state.jobs.load->sceneShown;
+  for (auto& [m, d] : outcome.deformers) state.model.deformers[m] = d;
+  for (const std::string& notice : outcome.notices) {  // e.g. Phong's tetrahedral mesh is TetGen's, not Mesh_3's
+    state.status.message += (state.status.message.empty() ? "" : "; ") + notice;
+    std::fprintf(stderr, "somicage: %s\n", notice.c_str());
+  }
+  state.model.deformDirty = true;
+  if (newScene || completesLoad) {  // what only the deformers tell: points outside the cage
+    if (const std::optional<std::string> outside = exteriorNotice(*state.model.scene, outcome.deformers)) {
+      state.status.message += "; " + *outside;
+      std::fprintf(stderr, "somicage: %s: %s\n", state.model.scene->name.c_str(), outside->c_str());
+    }
+  }
+  if (completesLoad) state.jobs.load.reset();
+}
+
+void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
+  state.jobs.precompute.setOnFinished(wake);
+  state.view.quantities.worker.setOnFinished(wake);
+  state.jobs.cageMaker.setOnFinished(wake);
+  state.jobs.exporter.setOnFinished(wake);
+}
+
+bool pollWorker(AppState& state) {
+  if (state.jobs.load && !state.jobs.load->sceneShown) {  // the mesh has loaded: show it while the precompute runs
+    if (std::shared_ptr<const Scene> scene = state.jobs.precompute.takeLoadedScene()) {
+      showLoadedScene(state, std::move(scene));
+      logLine(state, "scene shown");  // --log-actions: the GUI tests look for the mesh drawn from here on
+    }
+  }
+  std::optional<PrecomputeOutcome> outcome = state.jobs.precompute.poll();
+  if (!outcome) return false;
+  const bool cancelled = outcome->cancelled;
+  installOutcome(state, std::move(*outcome));
+  // e.g. the views changed while loading; not after a cancel (a scene shown early would start again at once)
+  if (!cancelled && !state.jobs.precompute.busy()) ensureDeformers(state);
+  return true;
+}
+
+}  // namespace somicage::editor

@@ -1,0 +1,40 @@
+// The exact gradients, with respect to the query point x, of the coordinates each method integrates: forward-mode
+// dual numbers (dual_number.h) carried through the same closed forms, so that the deformation gradient (jacobian.h)
+// is exact to rounding rather than a finite difference of positions.
+#pragma once
+
+#include <Eigen/Core>
+#include <functional>
+
+#include "base/progress.h"
+#include "geometry/cage.h"
+
+namespace somicage {
+
+// Receives a point's gradient rows: rows[a] (a < d) holds d(row)/dx_a, `columns` numbers in the layout of the
+// method's coordinates. Called from OpenMP worker threads, once per point; the buffers are reused after it returns.
+using GradientRowSink = std::function<void(int point, const double* const* rows)>;
+
+// Somigliana: rows in the layout of SomiglianaCoordinates::values (somiglianaLayout's main columns), always from the
+// closed form (also for a deformer whose coordinates came from the Gauss baseline). A 3D cage runs the coordinates'
+// pack kernel on dual numbers of packs (simd::kLanes points at once, as the precompute); scalarKernel = true (and 2D
+// cages, and builds without packs) runs the dual-number kernel one point at a time, the reference. The two agree to
+// a few units of rounding (simd_math.h's logarithms and angles; coordinate_gradients_test.cpp).
+void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                  const ProgressCallback& progress, const GradientRowSink& sink,
+                                  bool scalarKernel = false);
+
+// Green: rows [phi (#V) | psi (#F)] (green_coordinates.h). phi_i and psi_j are the double layer of the hats and
+// the single layer of the faces, the integrals D_k and S that the Somigliana kernels compute as well.
+// Green and BEM (3D) integrate kLanes points at once as well, the per-face kernel on duals of packs with the
+// accumulation outside it; scalarKernel as above.
+void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                             const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel = false);
+
+// BEM: rows in the layout of BemLayerIntegrals::values (bemLayerLayout, bem_layer_integrals.h) for points off the
+// cage.
+void integrateBemLayerGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                const ProgressCallback& progress, const GradientRowSink& sink,
+                                bool scalarKernel = false);
+
+}  // namespace somicage
