@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -61,6 +62,16 @@ void writeFileAtomic(const std::string& path, const std::string& bytes) {
     std::remove(tmp.c_str());
     throw InputError(path, -1, "rename failed: " + reason, "check the permissions of the folder");
   }
+}
+
+bool samePath(const std::string& a, const std::string& b) {
+  if (a.empty() || b.empty()) return a.empty() && b.empty();
+  std::error_code error;  // a path that cannot be resolved compares as written, made absolute
+  const auto canonical = [&](const std::string& path) {
+    const std::filesystem::path resolved = std::filesystem::weakly_canonical(path, error);
+    return error ? std::filesystem::absolute(path, error).lexically_normal() : resolved;
+  };
+  return canonical(a) == canonical(b);
 }
 
 }  // namespace somicage

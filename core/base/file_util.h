@@ -13,4 +13,9 @@ std::string readTextFile(const std::string& path);
 // file at `path` is left as it was.
 void writeFileAtomic(const std::string& path, const std::string& bytes);
 
+// Whether two paths name the same file, however each is spelled ("m.obj" from its folder, "/abs/m.obj", "./a/../m.obj",
+// a symbolic link): compares the canonical absolute paths; paths of files that do not exist compare by that too.
+// Two empty paths (no file) are the same; an empty and a non-empty one are not.
+bool samePath(const std::string& a, const std::string& b);
+
 }  // namespace somicage

@@ -2,6 +2,7 @@
 #include <filesystem>
 #include <system_error>
 
+#include "base/file_util.h"
 #include "engine/engine.h"
 #include "interaction/drop.h"
 #include "io/mesh_formats.h"
@@ -40,8 +41,8 @@ void applySession(AppState& state, const Session& s, PendingLoad load) {
   state.view.compare = s.compare;
   if (!s.compareViews.empty()) state.view.compareViews = s.compareViews;
   const bool inlineCage = s.restCage.numVertices() > 0;
-  const bool sameScene = state.model.scene && !state.loadingScene() && state.model.scene->meshPath == s.meshPath &&
-                         state.model.scene->cagePath == s.cagePath &&
+  const bool sameScene = state.model.scene && !state.loadingScene() && samePath(state.model.scene->meshPath, s.meshPath) &&
+                         samePath(state.model.scene->cagePath, s.cagePath) &&
                          (!s.meshPath.empty() || state.model.scene->dim() == s.demoDim) &&
                          (!inlineCage || sameCage(state.model.scene->restCage, s.restCage));
   if (sameScene) {
