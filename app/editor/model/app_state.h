@@ -215,6 +215,9 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome);
 // Makes a loaded scene the one shown, at rest and undeformed, with what state.jobs.load says (pose, camera, posed
 // cage, session, recent entry) as the new document's first step; its deformers come with installOutcome.
 void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene);
+// Makes `scene` the one shown with nothing derived from the previous one: no deformers, deformed points or nu sweep,
+// a selection of its cage's size, no interaction in progress (showLoadedScene, replaceRestCage).
+void installScene(AppState& state, std::shared_ptr<const Scene> scene);
 
 // Deforms every view whose result is stale on the active device (deformOnDevice). Returns true when positions
 // changed. In place on OpenGL it only marks the views for the Renderer (bumps deformGeneration) and leaves

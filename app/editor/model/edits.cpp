@@ -21,14 +21,7 @@ void replaceRestCage(AppState& state, const Cage& cage, const std::string& cageP
   auto scene = std::make_shared<Scene>(*state.model.scene);
   scene->restCage = cage;
   scene->cagePath = cagePath;
-  state.model.scene = std::move(scene);
-  ++state.model.sceneGeneration;
-  state.model.deformers.clear();
-  state.model.deformed.clear();
-  state.model.cpuStale.clear();
-  state.view.quantities.clearSweep();
-  state.input.selection.resize(cage.numVertices());
-  state.input.mouse = Interaction{};
+  installScene(state, std::move(scene));
   setPose(state, cage.vertices);
   ensureDeformers(state);
 }

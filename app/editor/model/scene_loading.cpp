@@ -88,20 +88,24 @@ std::optional<std::string> exteriorNotice(const Scene& scene, const DeformerSet&
 
 }  // namespace
 
-void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
-  std::vector<std::string> notices;                            // for the status bar and the log
-  PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
-  if (state.jobs.load) state.jobs.load->sceneShown = true;
-  const std::shared_ptr<const Scene> previous = state.model.scene;
+void installScene(AppState& state, std::shared_ptr<const Scene> scene) {
   state.model.scene = std::move(scene);
   ++state.model.sceneGeneration;
   state.model.deformers.clear();
   state.model.deformed.clear();
   state.model.cpuStale.clear();
   state.view.quantities.clearSweep();
-  state.document.pose = state.model.scene->restCage.vertices;
   state.input.selection.resize(state.model.scene->restCage.numVertices());
   state.input.mouse = Interaction{};
+}
+
+void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
+  std::vector<std::string> notices;                            // for the status bar and the log
+  PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
+  if (state.jobs.load) state.jobs.load->sceneShown = true;
+  const std::shared_ptr<const Scene> previous = state.model.scene;
+  installScene(state, std::move(scene));
+  state.document.pose = state.model.scene->restCage.vertices;
   state.view.camera.setMode2D(state.model.scene->dim() == 2);
   frameRest(state);
   state.view.frameRequested = !load.camera.has_value();
