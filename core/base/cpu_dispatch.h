@@ -19,9 +19,12 @@
 
 // GCC only: clang 14 (Debian 12's; the fuzz builds) refuses target_clones with flatten, needs it on every
 // declaration, and in a two-file test called the clones with garbage arguments. Clang builds run the baseline.
-// A build whose own target has AVX2 and FMA (SOMICAGE_NATIVE on such a CPU) has nothing to dispatch.
+// A build whose own target has AVX2 and FMA (SOMICAGE_NATIVE on such a CPU) has nothing to dispatch. Nor does an
+// unoptimised (Debug) build: without inlining, `flatten` leaves the SIMD packs' helpers out of line, compiled for the
+// baseline, and the AVX2 copy calls them with its own convention for 32-byte vectors (returned in a register, not in
+// memory), so they ran on shifted arguments and crashed.
 #if defined(__x86_64__) && !(defined(__AVX2__) && defined(__FMA__)) && defined(__linux__) && defined(__GLIBC__) && \
-    !defined(__clang__) && __GNUC__ >= 11
+    !defined(__clang__) && __GNUC__ >= 11 && defined(__OPTIMIZE__)
 #define SOMICAGE_DISPATCH_CLONES 1
 #define SOMICAGE_DISPATCH __attribute__((target_clones("default", "arch=x86-64-v3"), flatten))
 #else
