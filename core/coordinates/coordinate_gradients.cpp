@@ -10,6 +10,7 @@
 #include "base/simd_math.h"
 #include "coordinates/bem_layer_integrals.h"
 #include "coordinates/somigliana_coordinates.h"
+#include "coordinates/somigliana_gradient_row.h"
 #include "geometry/affine_terms.h"
 #include "geometry/edge_integrals.h"
 #include "geometry/triangle_integrals.h"
@@ -199,11 +200,11 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
 }
 
 #if SOMICAGE_SIMD_PACKS
-// The gradient rows of simd::kLanes points at once: the coordinates' row kernel (integrateSomiglianaRowPack) on the
-// points as dual numbers of packs, the whole pack in one dispatched call (cpu_dispatch.h).
+// The three gradient rows of simd::kLanes points at once from the closed-form derivatives
+// (somigliana_gradient_row.h: the three rows interleaved), the whole pack in one dispatched call (cpu_dispatch.h).
 SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces, int numVertices,
-                                                          const DualPack x[3], DualPack* rows) {
-  integrateSomiglianaRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows, 1);
+                                                          const simd::Pack x[3], simd::Pack* rows) {
+  integrateSomiglianaGradientRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows);
 }
 
 void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
@@ -212,20 +213,20 @@ void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, in
   const int numPoints = static_cast<int>(points.rows());
   const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   struct Buffers {
-    std::vector<DualPack> packed;
-    std::vector<double> split;  // the 3 gradient rows of one lane
+    std::vector<simd::Pack> packed;  // the 3 gradient rows of the pack, interleaved
+    std::vector<double> split;       // the 3 gradient rows of one lane
   };
   forEachPointPack(
       points, cage.numFaces(), threads, progress,
-      [columns] { return Buffers{std::vector<DualPack>(columns), std::vector<double>(3 * columns)}; },
+      [columns] { return Buffers{std::vector<simd::Pack>(3 * columns), std::vector<double>(3 * columns)}; },
       [&](Buffers& buffers, int first, const simd::Pack x[3]) {
-        const DualPack xd[3] = {DualPack::variable(x[0], 0), DualPack::variable(x[1], 1), DualPack::variable(x[2], 2)};
-        integrateSomiglianaGradientRowPack(faces, cage.numVertices(), xd, buffers.packed.data());
+        integrateSomiglianaGradientRowPack(faces, cage.numVertices(), x, buffers.packed.data());
         for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
           const double* rows[3];
-          for (int a = 0; a < 3; ++a) {
+          for (std::size_t a = 0; a < 3; ++a) {
             double* out = buffers.split.data() + a * columns;
-            for (std::size_t k = 0; k < columns; ++k) out[k] = buffers.packed[k].g[a].v[l];
+            const simd::Pack* in = buffers.packed.data() + a;
+            for (std::size_t k = 0; k < columns; ++k) out[k] = in[3 * k].v[l];
             rows[a] = out;
           }
           sink(first + l, rows);

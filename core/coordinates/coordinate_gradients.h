@@ -1,6 +1,7 @@
 // The exact gradients, with respect to the query point x, of the coordinates each method integrates: forward-mode
-// dual numbers (dual_number.h) carried through the same closed forms, so that the deformation gradient (jacobian.h)
-// is exact to rounding rather than a finite difference of positions.
+// dual numbers (dual_number.h) carried through the same closed forms, or (3D Somigliana) the closed-form derivatives
+// of those integrals, so that the deformation gradient (jacobian.h) is exact to rounding rather than a finite
+// difference of positions.
 #pragma once
 
 #include <Eigen/Core>
@@ -16,10 +17,11 @@ namespace somicage {
 using GradientRowSink = std::function<void(int point, const double* const* rows)>;
 
 // Somigliana: rows in the layout of SomiglianaCoordinates::values (somiglianaLayout's main columns), always from the
-// closed form (also for a deformer whose coordinates came from the Gauss baseline). A 3D cage runs the coordinates'
-// pack kernel on dual numbers of packs (simd::kLanes points at once, as the precompute); scalarKernel = true (and 2D
-// cages, and builds without packs) runs the dual-number kernel one point at a time, the reference. The two agree to
-// a few units of rounding (simd_math.h's logarithms and angles; coordinate_gradients_test.cpp).
+// closed form (also for a deformer whose coordinates came from the Gauss baseline). A 3D cage runs the closed-form
+// derivatives of the triangle integrals (triangle_gradients_kernel.h, docs/closed-form-gradients.md) in packs of
+// simd::kLanes points, as the precompute; scalarKernel = true (and 2D cages, and builds without packs) runs the
+// dual-number kernel one point at a time, the independent reference. The two agree to 1e-12 of each entry (at
+// least 1; coordinate_gradients_test.cpp).
 void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                                   const ProgressCallback& progress, const GradientRowSink& sink,
                                   bool scalarKernel = false);

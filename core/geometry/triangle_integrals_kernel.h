@@ -60,28 +60,35 @@ SOMICAGE_HD inline void rotateSymmetric(const double q[3][3], const Scalar l[6],
 
 }  // namespace portable_detail
 
-// integrateTrianglePortable for the point with local coordinates (xu, xv, h) in the face's frame [u v n] about p0.
-// h = -0.0 with (xu, xv) strictly inside the face is the limit from the inside of the cage (W = -2pi): every other
-// term is continuous there and every h-weighted one vanishes (bem_layer_integrals.h relies on this).
+// What the outputs of integrateTriangleLocalPortable are made of: the differences to the corners, the edge line
+// integrals and the in-plane moments (closed-form.md section 4). The closed-form gradients
+// (triangle_gradients_kernel.h) are made of the same quantities.
 template <typename Scalar>
-SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFrame& f, const Scalar& xu,
-                                                       const Scalar& xv, const Scalar& h,
-                                                       PortableTriangleIntegralsOf<Scalar>& out) {
-  if (f.degenerate) {
-    out.S = 0, out.solidAngle = 0;
-    for (int i = 0; i < 3; ++i) {
-      out.D[i] = 0;
-      for (int j = 0; j < 3; ++j) {
-        out.M[i][j] = out.V[i][j] = 0;
-        for (int k = 0; k < 3; ++k) out.B[i][j][k] = 0;
-      }
-    }
-    return;
-  }
+struct PortableTriangleMoments {
+  Scalar a[3][2], R[3], invR[3];  // corner i minus the projection of x (local 2D), |y_i - x|, 1 / |y_i - x|
+  // Edge e from corner e to e + 1 along s in [s-, s+] with R^2 = s^2 + rho^2: t = m_e . a_e, s- = tau_e . a_e,
+  // L = int ds/R, E = int ds/R^3, A = int s/R ds, B = int s/R^3 ds, C = int s^2/R^3 ds.
+  Scalar t[3], sm[3], rho2[3], L[3], E[3], A[3], B[3], C[3];
+  Scalar W;                 // signed solid angle int h/R^3
+  Scalar J1;                // int 1/R
+  Scalar J31[2];            // int d/R^3
+  Scalar J32[3];            // int d d^T/R^3 as (xx, xy, yy)
+  Scalar hJ52[3];           // h int d d^T/R^5
+  Scalar h2J51[2];          // h^2 int d/R^5
+  Scalar h3J50;             // h^3 int 1/R^5
+  Scalar Q[3][3];           // int_e d d^T/R^3 ds per edge
+};
 
+// The moments for the point with local coordinates (xu, xv, h) in the face's frame [u v n] about p0 (a
+// non-degenerate face).
+template <typename Scalar>
+SOMICAGE_HD inline void triangleMomentsPortable(const PortableTriangleFrame& f, const Scalar& xu, const Scalar& xv,
+                                                const Scalar& h, PortableTriangleMoments<Scalar>& mo) {
   // ---- Differences to the corners in the local frame, taken once (5.4) -------------------------------------------
   const Scalar hh = h * h;
-  Scalar a[3][2], R[3], invR[3];
+  Scalar(&a)[3][2] = mo.a;
+  Scalar(&R)[3] = mo.R;
+  Scalar(&invR)[3] = mo.invR;
   for (int i = 0; i < 3; ++i) {
     a[i][0] = f.q[i][0] - xu;
     a[i][1] = f.q[i][1] - xv;
@@ -90,8 +97,12 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
   }
 
   // ---- Edge line integrals along s in [s-, s+] with R^2 = s^2 + rho^2 ------------------------------------------
-  // L = int ds/R, E = int ds/R^3, A = int s/R ds, B = int s/R^3 ds, C = int s^2/R^3 ds.
-  Scalar t[3], L[3], E[3], A[3], B[3], C[3];
+  Scalar(&t)[3] = mo.t;
+  Scalar(&L)[3] = mo.L;
+  Scalar(&E)[3] = mo.E;
+  Scalar(&A)[3] = mo.A;
+  Scalar(&B)[3] = mo.B;
+  Scalar(&C)[3] = mo.C;
   for (int e = 0; e < 3; ++e) {
     const int g = (e + 1) % 3;
     const double ell = f.ell[e];
@@ -117,6 +128,7 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
         });
     const Scalar Le = log1p(logArgAndE.first), Ee = logArgAndE.second;
     t[e] = te, L[e] = Le, E[e] = Ee, A[e] = Ae;
+    mo.sm[e] = sm, mo.rho2[e] = rho2;
     B[e] = Ae * invR[e] * invR[g];
     C[e] = Le - rho2 * Ee;
   }
@@ -126,6 +138,7 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
   const Scalar d02 = a[0][0] * a[2][0] + a[0][1] * a[2][1] + hh;
   const Scalar d12 = a[1][0] * a[2][0] + a[1][1] * a[2][1] + hh;
   const Scalar W = 2 * atan2(f.twiceArea * h, R[0] * R[1] * R[2] + d01 * R[2] + d02 * R[1] + d12 * R[0]);
+  mo.W = W;
 
   // ---- In-plane moments; h is multiplied into every R^-3 and R^-5 moment, nothing divides by h (5.2) -------------
   Scalar J1 = -h * W;          // int 1/R
@@ -134,7 +147,7 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
   Scalar hJ52[3] = {0, 0, 0};  // h int d d^T/R^5
   Scalar h2J51[2] = {0, 0};    // h^2 int d/R^5
   Scalar sumTE = 0;
-  Scalar Q[3][3];  // int_e d d^T/R^3 ds
+  Scalar(&Q)[3][3] = mo.Q;  // int_e d d^T/R^3 ds
   for (int e = 0; e < 3; ++e) {
     const Scalar tL = t[e] * L[e], htE = h * t[e] * E[e], hB = h * B[e];
     const Scalar t2E = t[e] * t[e] * E[e], twoTB = 2 * t[e] * B[e];
@@ -151,7 +164,39 @@ SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFra
   J32[0] += J1, J32[2] += J1;
   hJ52[0] = (hJ52[0] + W) / 3, hJ52[1] /= 3, hJ52[2] = (hJ52[2] + W) / 3;
   h2J51[0] *= hh / 3, h2J51[1] *= hh / 3;
-  const Scalar h3J50 = (W + h * sumTE) / 3;  // h^3 int 1/R^5
+  mo.h3J50 = (W + h * sumTE) / 3;  // h^3 int 1/R^5
+  mo.J1 = J1;
+  for (int c = 0; c < 3; ++c) mo.J32[c] = J32[c], mo.hJ52[c] = hJ52[c];
+  for (int c = 0; c < 2; ++c) mo.J31[c] = J31[c], mo.h2J51[c] = h2J51[c];
+}
+
+// integrateTrianglePortable for the point with local coordinates (xu, xv, h) in the face's frame [u v n] about p0.
+// h = -0.0 with (xu, xv) strictly inside the face is the limit from the inside of the cage (W = -2pi): every other
+// term is continuous there and every h-weighted one vanishes (bem_layer_integrals.h relies on this).
+template <typename Scalar>
+SOMICAGE_HD inline void integrateTriangleLocalPortable(const PortableTriangleFrame& f, const Scalar& xu,
+                                                       const Scalar& xv, const Scalar& h,
+                                                       PortableTriangleIntegralsOf<Scalar>& out) {
+  if (f.degenerate) {
+    out.S = 0, out.solidAngle = 0;
+    for (int i = 0; i < 3; ++i) {
+      out.D[i] = 0;
+      for (int j = 0; j < 3; ++j) {
+        out.M[i][j] = out.V[i][j] = 0;
+        for (int k = 0; k < 3; ++k) out.B[i][j][k] = 0;
+      }
+    }
+    return;
+  }
+  PortableTriangleMoments<Scalar> mo;
+  triangleMomentsPortable(f, xu, xv, h, mo);
+  const Scalar(&t)[3] = mo.t;
+  const Scalar W = mo.W, J1 = mo.J1, h3J50 = mo.h3J50;
+  const Scalar(&J31)[2] = mo.J31;
+  const Scalar(&J32)[3] = mo.J32;
+  const Scalar(&hJ52)[3] = mo.hJ52;
+  const Scalar(&h2J51)[2] = mo.h2J51;
+  const Scalar(&Q)[3][3] = mo.Q;
 
   // ---- Outputs: local frame, then rotated to world --------------------------------------------------------------
   const double q[3][3] = {{f.u[0], f.v[0], f.n[0]}, {f.u[1], f.v[1], f.n[1]}, {f.u[2], f.v[2], f.n[2]}};
