@@ -87,3 +87,14 @@ TEST_F(HeadlessFrame, HoveringTheStatusBarShowsTheWholeMessage) {
   ASSERT_NE(tooltip, nullptr) << "no tooltip over the status bar";
   EXPECT_GE(textHeight(tooltip), 2 * ImGui::GetFontSize()) << "the message, wrapped onto two lines or more";
 }
+
+// Issue 24, row 15: the pose library's hint ran out of its window, cut at "Store c". It wraps inside the window.
+TEST_F(HeadlessFrame, ThePoseLibrarysHintWrapsInsideItsWindow) {
+  AppState state;  // no poses: the hint is shown
+  ImGui::NewFrame();
+  drawPoseLibraryPanel(state, menuBarHeight());
+  const ImGuiWindow* window = ImGui::FindWindowByName("Pose library");
+  ASSERT_NE(window, nullptr);
+  EXPECT_LE(window->DC.CursorMaxPos.x, window->Pos.x + window->Size.x) << "a line runs past the window's right edge";
+  ImGui::EndFrame();
+}
