@@ -269,7 +269,8 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
       const int w = state.view.quantities.show.otherView(v, viewCount);
       if (w < 0) return "difference: needs the compare view";
       if (!m) return "measuring...";
-      std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
+      // Two lines: in one line a narrow pane (a third of 1000 pixels) cut it short, e.g. "to BEM nu=0.00: max ..."
+      std::snprintf(buf, sizeof buf, "to %s:\nmax %.4f, median %.4f diameters",
                     viewShortName(state, static_cast<std::size_t>(w)).c_str(), m->values.maxCoeff(),
                     quantile(m->values, 0.5));
       return buf;
