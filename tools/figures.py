@@ -669,10 +669,17 @@ def guide_timeline(out):
                   ["--session", keyed_session(out), "--size", "1000x560"], [SESSION_NOTE])
 
 
+def guide_export(out):  # the file name is absolute so that the dialog does not show this run's working folder
+    editor_figure(out, "guide_export", "Guide: File > Export animation... (the keyed CACTUS session)",
+                  ["--session", keyed_session(out), "--export-dialog", "/tmp/cactus.glb", "--size", "1000x560"],
+                  [SESSION_NOTE])
+
+
 FIGURES = {"hero": hero, "fig02": fig02, "fig03": fig03, "fig04": fig04, "fig05": fig05, "fig06": fig06,
            "fig07": fig07, "fig08": fig08, "fig09": fig09, "fig10": fig10, "fig11": fig11,
            "guide_editor": guide_editor, "guide_pose": guide_pose, "guide_analysis": guide_analysis,
-           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline}
+           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline,
+           "guide_export": guide_export}
 
 
 class Output:

@@ -479,6 +479,11 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
               state.status.errors.push_back("make cage: " + state.jobs.cageMaker.error());
             }
           }
+          if (options.exportDialog) {  // as File > Export animation... does, with the given file
+            state.animation.exportPath = *options.exportDialog;
+            state.animation.exportDialogRequested = true;
+            state.animation.showPanels = true;
+          }
           // A few frames let ImGui settle its layout before the capture; the measurements are waited for.
           for (int i = 0; i < 4; ++i) {
             if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
