@@ -334,15 +334,8 @@ bool waitForScene(AppState& state) {
   return false;
 }
 
-int runWindow(const EditorOptions& options, const FrameDevices& devices) {
-  glfwSetErrorCallback(glfwErrorCallback);
-  if (!glfwInit()) {
-    std::fprintf(stderr,
-                 "somicage: cannot open a window (no display?). Run it on a desktop, or headless with\n"
-                 "  xvfb-run -a -s \"-screen 0 1600x900x24\" somicage ...\n"
-                 "For batch work without a window see 'somicage help'.\n");
-    return 1;
-  }
+// Opens the window with its OpenGL context, or says why it cannot and returns null. `glRenderer` names the driver.
+GLFWwindow* openWindow(const EditorOptions& options, std::string& glRenderer) {
   // OpenGL 4.3 core when the driver has it (compute shaders: the GPU deformation backend), else 3.3 core.
   int major = 4;
   auto createWindow = [&](int samples) {
@@ -364,14 +357,10 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     std::fprintf(stderr,
                  "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
                  "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
-    glfwTerminate();
-    return 1;
+    return nullptr;
   }
   glfwMakeContextCurrent(window);
   const bool headless = !options.screenshotPath.empty();
-
-  int rc = 0;
-  std::string glRenderer;
   try {
     render::GlInfo info = render::initOpenGl(glfwGetProcAddress);
     // A software renderer (llvmpipe) shades every sample: 4x multisampling made FIREHYDRANT's pane 6x slower to draw
@@ -386,13 +375,54 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     glRenderer = info.renderer + " (OpenGL " + info.version + ")";
   } catch (const std::exception& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return 1;
+    if (window) glfwDestroyWindow(window);
+    return nullptr;
   }
-
   glfwSwapInterval(headless ? 0 : 1);
+  return window;
+}
 
+// The scene the editor opens with when no session or crashed run's session gives one: the files on the command line,
+// or a demo.
+void requestStartScene(AppState& state, const EditorOptions& options) {
+  if (!options.meshPath.empty()) {
+    requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
+  } else {
+    options.demoFig8 ? requestFig8Demo(state, !options.views.empty()) : requestDemo(state, options.demoDim);
+  }
+}
+
+// Whether the start scene can be requested before the window exists: its files then load and its coordinates are
+// computed while the window and its OpenGL context open (0.26 s on llvmpipe; docs/editor.md, "Time to the first
+// frame"). Not for a session or a restore (their scene comes with the document), nor when the chosen device
+// integrates the coordinates itself (CUDA), which is known only once the devices are chosen.
+bool sceneBeforeWindow(const EditorOptions& options, const FrameDevices& devices) {
+  if (options.restoreAutosave || !options.sessionPath.empty()) return false;
+  const FrameDevice* device = options.device ? findFrameDevice(devices, *options.device) : nullptr;
+  return !device || !device->rowIntegrator;
+}
+
+// The editor from its state on: the state (which holds no OpenGL object: the Renderer does) comes before the window,
+// so the start scene can load meanwhile, and goes after it.
+int runWithState(const EditorOptions& options, const FrameDevices& devices) {
+  AppState state;
+  // A worker that finishes wakes the loop (glfwPostEmptyEvent may be called from any thread) and counts as input:
+  // the next frames install its outcome and let ImGui settle the windows it resizes (docs/editor.md, "Idle").
+  auto jobFinished = std::make_shared<std::atomic<bool>>(false);
+  wakeOnFinish(state, [jobFinished] {
+    jobFinished->store(true);
+    glfwPostEmptyEvent();
+  });
+  applyOptions(state, options);
+  const bool sceneRequested = sceneBeforeWindow(options, devices);
+  if (sceneRequested) requestStartScene(state, options);
+
+  std::string glRenderer;
+  GLFWwindow* window = openWindow(options, glRenderer);
+  if (!window) return 1;
+  const bool headless = !options.screenshotPath.empty();
+
+  int rc = 0;
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
@@ -402,18 +432,8 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   try {
-    // AppState first, Renderer second: the Renderer (GL objects) is destroyed first, while the context lives.
-    AppState state;
-    Renderer renderer;
-    // A worker that finishes wakes the loop (glfwPostEmptyEvent may be called from any thread) and counts as input:
-    // the next frames install its outcome and let ImGui settle the windows it resizes (docs/editor.md, "Idle").
-    auto jobFinished = std::make_shared<std::atomic<bool>>(false);
-    wakeOnFinish(state, [jobFinished] {
-      jobFinished->store(true);
-      glfwPostEmptyEvent();
-    });
+    Renderer renderer;  // its GL objects go before the context
     state.status.glRenderer = glRenderer;
-    applyOptions(state, options);
     chooseDevices(state, options, devices);
     // Recent files persist only in interactive use: a --screenshot run must not touch the user's list.
     if (!headless) {
@@ -449,10 +469,8 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
       acceptRestoreOffer(state);
     } else if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
-    } else if (!options.meshPath.empty()) {
-      requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
-    } else {
-      options.demoFig8 ? requestFig8Demo(state, !options.views.empty()) : requestDemo(state, options.demoDim);
+    } else if (!sceneRequested) {
+      requestStartScene(state, options);
     }
     std::string title;
 
@@ -548,7 +566,20 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
-  glfwTerminate();
+  return rc;
+}
+
+int runWindow(const EditorOptions& options, const FrameDevices& devices) {
+  glfwSetErrorCallback(glfwErrorCallback);
+  if (!glfwInit()) {
+    std::fprintf(stderr,
+                 "somicage: cannot open a window (no display?). Run it on a desktop, or headless with\n"
+                 "  xvfb-run -a -s \"-screen 0 1600x900x24\" somicage ...\n"
+                 "For batch work without a window see 'somicage help'.\n");
+    return 1;
+  }
+  const int rc = runWithState(options, devices);
+  glfwTerminate();  // after the state: its jobs may wake the loop (glfwPostEmptyEvent) until they are gone
   return rc;
 }
 
