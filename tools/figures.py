@@ -233,6 +233,21 @@ def shot(scene, views, out, extra=(), size=None, ui=False, labels=None):
     return shown(args)
 
 
+def editor_boxes(pane, background):
+    """The editor's numbers box (top left) and legend (bottom right) in a pane, as (y, x, height, width), found by
+    their fill: (20, 20, 24) at alpha 170 and 190 over the background (app/editor/ui/quantity_overlay.cpp). A row or
+    column of a box has >= 10 pixels of it; a few mesh pixels of that colour do not make one."""
+    H, W = pane.shape[:2]
+    found = []
+    for alpha, rows, cols in ((170, slice(0, H // 4), slice(0, W // 2)), (190, slice(H // 2, H), slice(W // 3, W))):
+        fill = alpha / 255 * np.array([20, 20, 24]) + (1 - alpha / 255) * background
+        match = np.abs(pane[rows, cols].astype(float) - fill).max(axis=2) <= 3
+        ys, xs = np.nonzero(match.sum(axis=1) >= 10)[0], np.nonzero(match.sum(axis=0) >= 10)[0]
+        if len(ys) and len(xs):
+            found.append((rows.start + ys.min(), cols.start + xs.min(), ys.ptp() + 1, xs.ptp() + 1))
+    return found
+
+
 def zoom_panes(path, count, zoom):
     """The editor frames the mesh and the whole posed cage, so a 3D mesh fills little of its pane. Each pane of the
     zoom-times larger shot is cropped to a square around its mesh (at most zoom times closer: pixels stay sharp),
@@ -243,13 +258,13 @@ def zoom_panes(path, count, zoom):
     H, W = big.shape[0], big.shape[1] // count
     h, w = H // zoom, W // zoom
     result = Image.new("RGB", (w * count, h))
-    top, legend = 75, (95, 420)  # the bands where the editor draws the numbers (top) and the legend (bottom right)
     for k in range(count):
         pane = big[:, k * W:(k + 1) * W]
         drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
+        boxes = editor_boxes(pane, background)
         overlay = np.zeros_like(drawn)
-        overlay[:top] = drawn[:top]
-        overlay[H - legend[0]:, W - legend[1]:] = drawn[H - legend[0]:, W - legend[1]:]
+        for y, x, bh, bw in boxes:
+            overlay[y:y + bh, x:x + bw] = True
         ys, xs = np.nonzero(drawn & ~overlay)
         if len(ys) == 0:
             ys, xs = np.array([0, H - 1]), np.array([0, W - 1])
@@ -261,13 +276,9 @@ def zoom_panes(path, count, zoom):
         clean = pane.copy()
         clean[overlay] = background  # the boxes must not come along, scaled down, in the crop
         crop = Image.fromarray(clean[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
-        # The editor's boxes go back at their own size, in the same corners.
-        for y, x, bh, bw in ((0, 0, top, w), (H - legend[0], W - legend[1], legend[0], legend[1])):
-            mask = overlay[y:y + bh, x:x + bw]
-            if mask.any():
-                where = (0 if x == 0 else w - bw, 0 if y == 0 else h - bh)
-                box, alpha = pane[y:y + bh, x:x + bw], (mask * 255).astype(np.uint8)
-                crop.paste(Image.fromarray(box), where, Image.fromarray(alpha))
+        for y, x, bh, bw in boxes:  # back at their own size, as far from the same corner
+            crop.paste(Image.fromarray(pane[y:y + bh, x:x + bw]), (x if x < W // 2 else w - (W - x),
+                                                                    y if y < H // 2 else h - (H - y)))
         result.paste(crop, (k * w, 0))
     result.save(path)
 
