@@ -428,7 +428,7 @@ def fig03(out):  # paper Fig. 3: the 2D kernels at two nu (the built-in 2D demo)
     editor_figure(out, "fig03", "Fig. 3: |T_0 n_0| of cage vertex 0 at nu = 0 and 0.45",
                   ["--demo", "2d", "--view", "somigliana:nu=0", "--view", "somigliana:nu=0.45", "--show", "field:0",
                    "--hide-ui", "--size", "%dx%d" % (2 * PANE_SIZE[0], PANE_SIZE[1])],
-                  ["The field's maximum at each nu is printed on the legend (`legend field`)."])
+                  ["The legend's range (printed as `legend field`) leaves out the most extreme 2 % of the vertices."])
 
 
 def fig04(out):  # paper Fig. 4: global vs local, STAR 2D (nu = 0.38) and FIREHYDRANT (nu = 0.3), gamma = 0

@@ -214,7 +214,8 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const long beyond = verticesBeyond(
       viewsShowing(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size())), range);
   char beyondText[64] = "";
-  if (beyond > 0) std::snprintf(beyondText, sizeof beyondText, "%ld vertices beyond the ends", beyond);
+  if (beyond > 0)
+    std::snprintf(beyondText, sizeof beyondText, "%ld %s beyond the ends", beyond, beyond == 1 ? "vertex" : "vertices");
   const float extra = beyond > 0 ? 18.0f : 0.0f;
   const float boxW = std::max(
       {w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x, ImGui::CalcTextSize(beyondText).x});
