@@ -19,6 +19,7 @@
 
 #include "engine/session.h"
 #include "gui_screenshot_support.h"
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "ui/layout.h"
 #include "ui/panels.h"
@@ -117,7 +118,7 @@ struct DemoView {
 DemoView demoView() {
   AppState state;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   installOutcome(state, std::move(*out));
   const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
   state.view.viewAspect = view.width / view.height;
