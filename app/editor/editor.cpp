@@ -11,33 +11,45 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
+#include <exception>
 #include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "base/errors.h"
+#include "deform/parameter_schema.h"
 #include "editor_options.h"
 #include "editor_renderer.h"
 #include "frame_pacing.h"
+#include "generation/cage_generation.h"
 #include "gl_context.h"
 #include "gpu_deformer.h"
 #include "interaction/event_queue.h"
 #include "interaction/input.h"
+#include "jobs/animation_export_job.h"
+#include "jobs/cage_maker.h"
 #include "jobs/export_jobs.h"
 #include "model/app_state.h"
 #include "model/autosave.h"
 #include "model/fig8_demo.h"
+#include "model/frame_device_evaluators.h"
+#include "model/pose_keys.h"
+#include "model/recent_files.h"
+#include "model/view_quantity.h"
 #include "ui/cage_maker_panel.h"
 #include "ui/export_panel.h"
+#include "ui/file_dialog.h"
+#include "ui/frame_timings.h"
 #include "ui/layout.h"
 #include "ui/panels.h"
 #include "ui/quantity_overlay.h"
 #include "ui/screenshot.h"
 #include "ui/timeline_panel.h"
+#include "ui/unsaved_changes.h"
 
 namespace somicage {
 
@@ -321,28 +333,65 @@ void autosaveTick(Autosave& autosave, AppState& state) {
   }
 }
 
-// Waits until the worker has delivered every deformer the views need (or failed).
-bool waitForScene(AppState& state) {
-  for (int round = 0; round < 8; ++round) {
-    std::optional<PrecomputeOutcome> outcome = state.jobs.precompute.wait();
-    if (outcome) installOutcome(state, std::move(*outcome));
-    if (!state.status.errors.empty()) return false;
-    if (!state.model.scene) return false;
-    ensureDeformers(state);
-    if (!state.jobs.precompute.busy()) return true;
+// A --screenshot run: the scene and its deformers, Make cage's candidate (--make-cage), the measurements and the nu
+// sweep (--nu-plot), then the picture, each step taken once the jobs it needs have finished. Nothing here waits for
+// a job: the loop sleeps until a job's wake-up (glfwPostEmptyEvent, wakeOnFinish) and polls them, as the interactive
+// loop does. Returns the exit code.
+int runScripted(GLFWwindow* window, AppState& state, Renderer& renderer, InputEventQueue& queue,
+                const EditorOptions& options) {
+  const auto sleepUntilWoken = [] { glfwWaitEventsTimeout(0.25); };  // a wake-up posted before it ends it at once
+  const auto fail = [&state](int rc) {
+    for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
+    return rc;
+  };
+  for (;;) {  // the scene, then every deformer the views need (or an error)
+    pollWorker(state);
+    if (!state.status.errors.empty()) return fail(2);
+    if (!state.loadingScene() && !state.jobs.precompute.busy()) {
+      if (!state.model.scene) return fail(2);
+      ensureDeformers(state);
+      if (!state.jobs.precompute.busy()) break;
+    }
+    sleepUntilWoken();
   }
-  return false;
+  const int cageVertices = state.model.scene->restCage.numVertices();
+  if (options.showFieldVertex >= cageVertices) {
+    std::fprintf(stderr, "somicage: --show field:%d: the cage has %d vertices (0 .. %d)\n", options.showFieldVertex,
+                 cageVertices, cageVertices - 1);
+    return 2;
+  }
+  if (options.showFieldVertex >= 0) state.input.selection.setIndices({options.showFieldVertex});
+  if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
+    openCageMaker(state, options.makeCageFaces);
+    for (state.jobs.cageMaker.poll(); state.jobs.cageMaker.status() == CageMaker::Status::Generating;
+         state.jobs.cageMaker.poll())
+      sleepUntilWoken();
+    if (const auto& candidate = state.jobs.cageMaker.candidate()) {
+      const GeneratedCage& g = candidate->generated;
+      std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
+                  g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
+    } else if (state.status.errors.empty()) {
+      state.status.errors.push_back("make cage: " + state.jobs.cageMaker.error());
+    }
+  }
+  // A few frames let ImGui settle its layout before the capture; the measurements are polled for.
+  std::string title;
+  for (int i = 0; i < 4; ++i) {
+    if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
+    if (i >= 1)
+      while (!measurementsSettled(state)) sleepUntilWoken();
+    if (i == 3) state.view.screenshotRequest = options.screenshotPath;
+    frame(window, state, renderer, title, queue);
+  }
+  if (!state.status.errors.empty()) return fail(1);
+  std::printf("wrote %s (deformation device: %s)\n", options.screenshotPath.c_str(),
+              state.model.devices.active().c_str());
+  printLegends(state);
+  return 0;
 }
 
-int runWindow(const EditorOptions& options, const FrameDevices& devices) {
-  glfwSetErrorCallback(glfwErrorCallback);
-  if (!glfwInit()) {
-    std::fprintf(stderr,
-                 "somicage: cannot open a window (no display?). Run it on a desktop, or headless with\n"
-                 "  xvfb-run -a -s \"-screen 0 1600x900x24\" somicage ...\n"
-                 "For batch work without a window see 'somicage help'.\n");
-    return 1;
-  }
+// Opens the window with its OpenGL context, or says why it cannot and returns null. `glRenderer` names the driver.
+GLFWwindow* openWindow(const EditorOptions& options, std::string& glRenderer) {
   // OpenGL 4.3 core when the driver has it (compute shaders: the GPU deformation backend), else 3.3 core.
   int major = 4;
   auto createWindow = [&](int samples) {
@@ -364,14 +413,10 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     std::fprintf(stderr,
                  "somicage: could not create an OpenGL 3.3 core window (update the graphics driver, or use\n"
                  "Mesa: LIBGL_ALWAYS_SOFTWARE=1)\n");
-    glfwTerminate();
-    return 1;
+    return nullptr;
   }
   glfwMakeContextCurrent(window);
   const bool headless = !options.screenshotPath.empty();
-
-  int rc = 0;
-  std::string glRenderer;
   try {
     render::GlInfo info = render::initOpenGl(glfwGetProcAddress);
     // A software renderer (llvmpipe) shades every sample: 4x multisampling made FIREHYDRANT's pane 6x slower to draw
@@ -386,13 +431,54 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
     glRenderer = info.renderer + " (OpenGL " + info.version + ")";
   } catch (const std::exception& e) {
     std::fprintf(stderr, "somicage: %s\n", e.what());
-    glfwDestroyWindow(window);
-    glfwTerminate();
-    return 1;
+    if (window) glfwDestroyWindow(window);
+    return nullptr;
   }
-
   glfwSwapInterval(headless ? 0 : 1);
+  return window;
+}
 
+// The scene the editor opens with when no session or crashed run's session gives one: the files on the command line,
+// or a demo.
+void requestStartScene(AppState& state, const EditorOptions& options) {
+  if (!options.meshPath.empty()) {
+    requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
+  } else {
+    options.demoFig8 ? requestFig8Demo(state, !options.views.empty()) : requestDemo(state, options.demoDim);
+  }
+}
+
+// Whether the start scene can be requested before the window exists: its files then load and its coordinates are
+// computed while the window and its OpenGL context open (0.26 s on llvmpipe; docs/editor.md, "Time to the first
+// frame"). Not for a session or a restore (their scene comes with the document), nor when the chosen device
+// integrates the coordinates itself (CUDA), which is known only once the devices are chosen.
+bool sceneBeforeWindow(const EditorOptions& options, const FrameDevices& devices) {
+  if (options.restoreAutosave || !options.sessionPath.empty()) return false;
+  const FrameDevice* device = options.device ? findFrameDevice(devices, *options.device) : nullptr;
+  return !device || !device->rowIntegrator;
+}
+
+// The editor from its state on: the state (which holds no OpenGL object: the Renderer does) comes before the window,
+// so the start scene can load meanwhile, and goes after it.
+int runWithState(const EditorOptions& options, const FrameDevices& devices) {
+  AppState state;
+  // A worker that finishes wakes the loop (glfwPostEmptyEvent may be called from any thread) and counts as input:
+  // the next frames install its outcome and let ImGui settle the windows it resizes (docs/editor.md, "Idle").
+  auto jobFinished = std::make_shared<std::atomic<bool>>(false);
+  wakeOnFinish(state, [jobFinished] {
+    jobFinished->store(true);
+    glfwPostEmptyEvent();
+  });
+  applyOptions(state, options);
+  const bool sceneRequested = sceneBeforeWindow(options, devices);
+  if (sceneRequested) requestStartScene(state, options);
+
+  std::string glRenderer;
+  GLFWwindow* window = openWindow(options, glRenderer);
+  if (!window) return 1;
+  const bool headless = !options.screenshotPath.empty();
+
+  int rc = 0;
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
@@ -402,18 +488,8 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   ImGui_ImplOpenGL3_Init("#version 330 core");
 
   try {
-    // AppState first, Renderer second: the Renderer (GL objects) is destroyed first, while the context lives.
-    AppState state;
-    Renderer renderer;
-    // A worker that finishes wakes the loop (glfwPostEmptyEvent may be called from any thread) and counts as input:
-    // the next frames install its outcome and let ImGui settle the windows it resizes (docs/editor.md, "Idle").
-    auto jobFinished = std::make_shared<std::atomic<bool>>(false);
-    wakeOnFinish(state, [jobFinished] {
-      jobFinished->store(true);
-      glfwPostEmptyEvent();
-    });
+    Renderer renderer;  // its GL objects go before the context
     state.status.glRenderer = glRenderer;
-    applyOptions(state, options);
     chooseDevices(state, options, devices);
     // Recent files persist only in interactive use: a --screenshot run must not touch the user's list.
     if (!headless) {
@@ -449,63 +525,21 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
       acceptRestoreOffer(state);
     } else if (!options.sessionPath.empty()) {
       loadSessionFile(state, options.sessionPath);
-    } else if (!options.meshPath.empty()) {
-      requestSceneFiles(state, options.meshPath, options.cagePath, options.posedPath);
-    } else {
-      options.demoFig8 ? requestFig8Demo(state, !options.views.empty()) : requestDemo(state, options.demoDim);
+    } else if (!sceneRequested) {
+      requestStartScene(state, options);
     }
-    std::string title;
-
     if (headless) {
-      if (!waitForScene(state)) {
-        for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
-        rc = 2;
-      } else {
-        if (options.showFieldVertex >= state.model.scene->restCage.numVertices()) {
-          std::fprintf(stderr, "somicage: --show field:%d: the cage has %d vertices (0 .. %d)\n",
-                       options.showFieldVertex, state.model.scene->restCage.numVertices(),
-                       state.model.scene->restCage.numVertices() - 1);
-          rc = 2;
-        } else {
-          if (options.showFieldVertex >= 0) state.input.selection.setIndices({options.showFieldVertex});
-          if (options.makeCageFaces > 0) {  // the dialog and its preview, once generated
-            openCageMaker(state, options.makeCageFaces);
-            state.jobs.cageMaker.wait();
-            if (const auto& candidate = state.jobs.cageMaker.candidate()) {
-              const GeneratedCage& g = candidate->generated;
-              std::printf("make-cage: %d faces, min angle %.2f deg, volume ratio %.4g, Hausdorff %.4g diagonals\n",
-                          g.cage.numFaces(), g.minAngleDegrees, g.tightness.volumeRatio, g.tightness.hausdorff);
-            } else {
-              state.status.errors.push_back("make cage: " + state.jobs.cageMaker.error());
-            }
-          }
-          // A few frames let ImGui settle its layout before the capture; the measurements are waited for.
-          for (int i = 0; i < 4; ++i) {
-            if (i == 1 && options.nuPlot) sweepNuNow(state);  // after the first deformation
-            if (i >= 1) waitForMeasurements(state);
-            if (i == 3) state.view.screenshotRequest = options.screenshotPath;
-            frame(window, state, renderer, title, windowLink.queue);
-          }
-          if (!state.status.errors.empty()) {
-            for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
-            rc = 1;
-          } else {
-            std::printf("wrote %s (deformation device: %s)\n", options.screenshotPath.c_str(),
-                        state.model.devices.active().c_str());
-            printLegends(state);
-          }
-        }
-      }
+      rc = runScripted(window, state, renderer, windowLink.queue, options);
     } else {
+      std::string title;
       FramePacer pacer;
       auto last = std::chrono::steady_clock::now();
       while (!state.document.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() ||
-                      state.view.quantities.worker.busy() || state.view.quantities.worker.ready() ||
-                      state.view.quantities.sweepRequested || state.loadingScene() || state.animation.playing ||
-                      state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
+        demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() || state.jobs.measure.busy() ||
+                      state.jobs.measure.ready() || state.view.quantities.sweepRequested || state.loadingScene() ||
+                      state.animation.playing || state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);
@@ -543,7 +577,20 @@ int runWindow(const EditorOptions& options, const FrameDevices& devices) {
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
-  glfwTerminate();
+  return rc;
+}
+
+int runWindow(const EditorOptions& options, const FrameDevices& devices) {
+  glfwSetErrorCallback(glfwErrorCallback);
+  if (!glfwInit()) {
+    std::fprintf(stderr,
+                 "somicage: cannot open a window (no display?). Run it on a desktop, or headless with\n"
+                 "  xvfb-run -a -s \"-screen 0 1600x900x24\" somicage ...\n"
+                 "For batch work without a window see 'somicage help'.\n");
+    return 1;
+  }
+  const int rc = runWithState(options, devices);
+  glfwTerminate();  // after the state: its jobs may wake the loop (glfwPostEmptyEvent) until they are gone
   return rc;
 }
 

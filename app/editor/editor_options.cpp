@@ -6,6 +6,8 @@
 
 #include "base/errors.h"
 #include "base/parse_number.h"
+#include "deform/deform_params.h"
+#include "deform/parameter_schema.h"
 #include "engine/session.h"  // kMaxCompareViews
 #include "generation/cage_generation.h"
 #include "model/view_quantity.h"

@@ -4,12 +4,12 @@
 #include <map>
 #include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "deform/deformer.h"
 #include "deform/frame_evaluator.h"
+#include "deform/method.h"
 #include "engine/view_spec.h"
+#include "geometry/volume_mesh.h"
 #include "model/view_quantity.h"
 
 namespace somicage::editor {

@@ -1,5 +1,7 @@
 #include "editor_renderer.h"
 
+#include <Eigen/Core>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -7,9 +9,16 @@
 #include <string>
 
 #include "base/errors.h"
+#include "engine/view_spec.h"
+#include "geometry/volume_mesh.h"
 #include "gl_context.h"
+#include "jobs/cage_maker.h"
 #include "mesh_normals.h"
+#include "model/frame_device_evaluators.h"
+#include "model/view_quantity.h"
+#include "ui/frame_timings.h"
 #include "ui/quantity_overlay.h"
+#include "view_matrices.h"
 
 namespace somicage::editor {
 

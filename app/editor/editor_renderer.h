@@ -10,9 +10,12 @@
 #include <vector>
 
 #include "cage_renderer.h"
+#include "engine/view_spec.h"
 #include "gpu_deformer.h"
 #include "mesh_renderer.h"
 #include "model/app_state.h"
+#include "model/view_quantity.h"
+#include "ui/frame_timings.h"
 #include "ui/layout.h"
 
 namespace somicage::editor {

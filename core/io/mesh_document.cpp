@@ -94,29 +94,33 @@ MeshDocument parseObjDocument(const std::string& text, const std::string& source
   std::vector<Eigen::RowVector3d> normals, uvs;
   std::string material;
   int vertexCount = 0;
+  std::vector<std::string_view> tokens;  // the current line's, reused
   // The records, in parseObj's one pass (it reads the positions, faces and lines itself).
   document.geometry = parseObj(
       text, source, [&](long lineNumber, std::string_view rawLine, std::string_view line, std::string_view keyword) {
         ObjRecord record;
-        record.text = std::string(rawLine);
-        if (keyword == "v") {
-          const std::vector<std::string_view> tokens = splitTokens(line);
+        if (keyword == "v") {  // the position is the geometry's; the record keeps what follows it
+          splitTokens(line, tokens);
           record.kind = ObjRecord::Kind::Position;
           record.index = vertexCount++;
-          record.text.clear();
           for (size_t k = 4; k < tokens.size(); ++k) record.text += ' ' + std::string(tokens[k]);
-        } else if (keyword == "vn") {
+        } else {
+          record.text = std::string(rawLine);
+        }
+        if (keyword == "vn") {
           record.kind = ObjRecord::Kind::Normal;
           record.index = static_cast<int>(normals.size());
           normals.push_back(numbersOf(splitTokens(line), 3, source, lineNumber));
         } else if (keyword == "vt") {
           uvs.push_back(numbersOf(splitTokens(line), 2, source, lineNumber));
         } else if (keyword == "usemtl") {
-          const std::vector<std::string_view> tokens = splitTokens(line);
+          splitTokens(line, tokens);
           material = tokens.size() > 1 ? std::string(tokens[1]) : std::string();
         } else if (keyword == "f") {
           std::vector<int> faceNormals, faceUVs;
-          const std::vector<std::string_view> tokens = splitTokens(line);
+          splitTokens(line, tokens);
+          faceNormals.reserve(tokens.size());
+          faceUVs.reserve(tokens.size());
           for (size_t k = 1; k < tokens.size(); ++k) {
             faceUVs.push_back(cornerIndex(tokens[k], 1, static_cast<int>(uvs.size()), source, lineNumber));
             faceNormals.push_back(cornerIndex(tokens[k], 2, static_cast<int>(normals.size()), source, lineNumber));

@@ -24,8 +24,8 @@ namespace somicage {
 
 bool isBlank(char c) { return c == ' ' || c == '\t'; }
 
-std::vector<std::string_view> splitTokens(std::string_view s) {
-  std::vector<std::string_view> tokens;
+void splitTokens(std::string_view s, std::vector<std::string_view>& tokens) {
+  tokens.clear();
   size_t i = 0;
   while (i < s.size()) {
     while (i < s.size() && isBlank(s[i])) ++i;
@@ -33,6 +33,11 @@ std::vector<std::string_view> splitTokens(std::string_view s) {
     while (i < s.size() && !isBlank(s[i])) ++i;
     if (i > start) tokens.push_back(s.substr(start, i - start));
   }
+}
+
+std::vector<std::string_view> splitTokens(std::string_view s) {
+  std::vector<std::string_view> tokens;
+  splitTokens(s, tokens);
   return tokens;
 }
 
@@ -103,6 +108,7 @@ struct ObjScan {
   std::vector<long> faceLines;
   std::vector<std::vector<long long>> lines;  // the same for `l` elements
   std::vector<long> lineLines;
+  std::vector<std::string_view> tokens;  // the current line's, kept to reuse its memory
 };
 
 // A 1-based index, or a negative one relative to the vertices read so far, as a 0-based index.
@@ -112,12 +118,14 @@ long long resolveIndex(long long index, const ObjScan& scan) {
 
 void scanVertex(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
   const long index = static_cast<long>(scan.coordinates.size() / 3);
-  const std::vector<std::string_view> tokens = splitTokens(rest);
-  const std::string element = "vertex " + std::to_string(index);
+  std::vector<std::string_view>& tokens = scan.tokens;
+  splitTokens(rest, tokens);
+  // Messages are composed only when one is thrown: a file has a hundred thousand lines that need none.
+  const auto element = [&] { return "vertex " + std::to_string(index); };
   if (tokens.size() < 2) {
     throw InputError(
         source, lineNumber,
-        element + " has " + std::to_string(tokens.size()) + (tokens.size() == 1 ? " coordinate" : " coordinates"),
+        element() + " has " + std::to_string(tokens.size()) + (tokens.size() == 1 ? " coordinate" : " coordinates"),
         "write vertices as `v x y z`, or `v x y` in a 2D file");
   }
   const size_t count = std::min<size_t>(tokens.size(), 3);
@@ -125,17 +133,17 @@ void scanVertex(const std::string& source, long lineNumber, std::string_view res
     double value = 0.0;
     if (k < count) {
       static const char* const kAxis[3] = {"x", "y", "z"};
-      const std::string what = element + ": " + kAxis[k] + " = " + quoted(tokens[k]);
+      const auto what = [&] { return element() + ": " + kAxis[k] + " = " + quoted(tokens[k]); };
       switch (parseObjNumber(tokens[k], value)) {
         case ObjNumberStatus::Ok:
           break;
         case ObjNumberStatus::NotANumber:
-          throw InputError(source, lineNumber, what + " is not a number", "write coordinates as decimal numbers");
+          throw InputError(source, lineNumber, what() + " is not a number", "write coordinates as decimal numbers");
         case ObjNumberStatus::OutOfRange:
-          throw InputError(source, lineNumber, what + " is outside the range of a double",
+          throw InputError(source, lineNumber, what() + " is outside the range of a double",
                            "scale the model to a reasonable size");
         case ObjNumberStatus::NotFinite:
-          throw InputError(source, lineNumber, what + " is not finite",
+          throw InputError(source, lineNumber, what() + " is not finite",
                            "every coordinate must be a finite number: fix or remove this vertex");
       }
     }
@@ -144,32 +152,34 @@ void scanVertex(const std::string& source, long lineNumber, std::string_view res
 }
 
 void scanFace(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
-  const std::string element = "face " + std::to_string(scan.faceLines.size());
-  const std::vector<std::string_view> tokens = splitTokens(rest);
+  const auto element = [&] { return "face " + std::to_string(scan.faceLines.size()); };
+  std::vector<std::string_view>& tokens = scan.tokens;
+  splitTokens(rest, tokens);
   std::vector<long long> indices;
+  indices.reserve(tokens.size());
   for (const std::string_view token : tokens) {
     long long index = 0;
     if (!parseVertexIndex(token, index)) {
-      throw InputError(source, lineNumber, element + ": " + quoted(token) + " is not a vertex index",
+      throw InputError(source, lineNumber, element() + ": " + quoted(token) + " is not a vertex index",
                        "write faces as `f i j k ...` with 1-based vertex indices; i/t/n forms are fine");
     }
     if (index == 0) {
-      throw InputError(source, lineNumber, element + " uses vertex index 0, which does not exist",
+      throw InputError(source, lineNumber, element() + " uses vertex index 0, which does not exist",
                        "OBJ vertex indices start at 1; negative ones count back from the last vertex");
     }
     if (index > INT_MAX || index < -static_cast<long long>(INT_MAX)) {
-      throw InputError(source, lineNumber, element + ": vertex index " + quoted(token) + " is out of range",
+      throw InputError(source, lineNumber, element() + ": vertex index " + quoted(token) + " is out of range",
                        "the file does not have that many vertices");
     }
     indices.push_back(resolveIndex(index, scan));
   }
   if (tokens.size() < 3) {
-    throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",
+    throw InputError(source, lineNumber, element() + " has " + std::to_string(tokens.size()) + " vertices",
                      "a face needs at least 3 vertices: if the file was cut short here, export it again (an edge of a polyline "
                      "is an `l i j` line)");
   }
   if (tokens.size() > 255) {
-    throw InputError(source, lineNumber, element + " has " + std::to_string(tokens.size()) + " vertices",
+    throw InputError(source, lineNumber, element() + " has " + std::to_string(tokens.size()) + " vertices",
                      "faces of up to 255 vertices are supported: split this polygon");
   }
   scan.faces.push_back(std::move(indices));
@@ -177,18 +187,19 @@ void scanFace(const std::string& source, long lineNumber, std::string_view rest,
 }
 
 void scanLine(const std::string& source, long lineNumber, std::string_view rest, ObjScan& scan) {
-  const std::string element = "line element " + std::to_string(scan.lines.size());
+  const auto element = [&] { return "line element " + std::to_string(scan.lines.size()); };
   std::vector<long long> indices;
-  for (const std::string_view token : splitTokens(rest)) {
+  splitTokens(rest, scan.tokens);
+  for (const std::string_view token : scan.tokens) {
     long long index = 0;
     if (!parseVertexIndex(token, index) || index == 0) {
-      throw InputError(source, lineNumber, element + ": " + quoted(token) + " is not a vertex index",
+      throw InputError(source, lineNumber, element() + ": " + quoted(token) + " is not a vertex index",
                        "write polylines as `l i j ...` with 1-based vertex indices");
     }
     indices.push_back(resolveIndex(index, scan));
   }
   if (indices.size() < 2) {
-    throw InputError(source, lineNumber, element + " has " + std::to_string(indices.size()) + " vertices",
+    throw InputError(source, lineNumber, element() + " has " + std::to_string(indices.size()) + " vertices",
                      "an `l` element needs at least 2 vertices");
   }
   scan.lines.push_back(std::move(indices));

@@ -68,6 +68,8 @@ class LineCursor {
 
 // The blank-separated tokens of a line.
 std::vector<std::string_view> splitTokens(std::string_view line);
+// The same into `tokens` (cleared first), whose capacity a loop over many lines reuses.
+void splitTokens(std::string_view line, std::vector<std::string_view>& tokens);
 // The record keyword of a line without leading blanks, as the parser reads it: its first token when a blank follows
 // ("v", "vn", "usemtl"), else empty.
 std::string_view objKeyword(std::string_view line);

@@ -12,6 +12,7 @@
 #include "base/errors.h"
 #include "editor_options.h"
 #include "engine/session.h"
+#include "job_waiting.h"
 #include "methods/method_descriptors.h"
 #include "model/app_state.h"
 #include "model/autosave.h"
@@ -226,7 +227,7 @@ TEST(EditorAutosave, AcceptingTheOfferAppliesTheSessionAndDiscardingDropsIt) {
   EXPECT_EQ(state.document.params.gamma, 2.5);
   EXPECT_EQ(state.document.method, methods::green());
   EXPECT_EQ(state.status.message, "restored the session from 2026-11-23 19:40");
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();  // the 2D demo of the session loads
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);  // the 2D demo of the session loads
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "job_waiting.h"
 #include "jobs/background_job.h"
 #include "jobs/thread_budget.h"
 
@@ -21,11 +22,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-void waitUntil(const std::function<bool()>& done) {
-  for (int i = 0; i < 20000 && !done(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  ASSERT_TRUE(done()) << "not within 20 s";
-}
 
 // A job that notices cancellation only every `checkEvery` (a slow core stage between two progress reports).
 BackgroundJob<int>::Work slowToCancel(int value, double checkEvery, std::atomic<int>& started) {
@@ -50,7 +46,7 @@ TEST(EditorBackgroundJob, SupersedingAJobSlowToCancelDoesNotBlockTheCaller) {
   const double startSeconds = secondsSince(t0);
   EXPECT_LT(startSeconds, 0.2) << "start() waited for the superseded job";
   EXPECT_TRUE(job.busy());
-  const std::optional<int> out = job.wait();
+  const std::optional<int> out = waitForOutcome(job);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(*out, 2) << "the superseded job's outcome arrived";
   EXPECT_FALSE(job.poll().has_value());  // once
@@ -65,7 +61,7 @@ TEST(EditorBackgroundJob, CancelDoesNotBlockTheCallerAndTheOutcomeSaysCancelled)
   const Clock::time_point t0 = Clock::now();
   job.cancel();
   EXPECT_LT(secondsSince(t0), 0.2);
-  const std::optional<int> out = job.wait();
+  const std::optional<int> out = waitForOutcome(job);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(*out, -7);
 }
@@ -110,9 +106,9 @@ TEST(EditorBackgroundJob, TheCoresHeldNeverExceedTheBudgetAndTheUiKeepsWhatIsLef
   EXPECT_EQ(budget.held(), 4);
   EXPECT_EQ(budget.uiThreads(), 1);  // the UI thread itself
   release = true;
-  EXPECT_EQ(a.wait(), std::optional<int>(3));
-  EXPECT_EQ(b.wait(), std::optional<int>(1));
-  const std::optional<int> cThreads = c.wait();
+  EXPECT_EQ(waitForOutcome(a), std::optional<int>(3));
+  EXPECT_EQ(waitForOutcome(b), std::optional<int>(1));
+  const std::optional<int> cThreads = waitForOutcome(c);
   ASSERT_TRUE(cThreads.has_value());
   EXPECT_GE(*cThreads, 1);
   EXPECT_LE(peak.load(), 4);
@@ -130,8 +126,8 @@ TEST(EditorBackgroundJob, ANewJobWaitsForTheCoresOfACancelledOne) {
   waitUntil([&] { return measure.threads() == 3; });
   measure.cancel();
   precompute.start([](JobContext& context) { return context.threads(); }, 4);
-  EXPECT_EQ(precompute.wait(), std::optional<int>(4));
-  EXPECT_EQ(measure.wait(), std::optional<int>(-1));
+  EXPECT_EQ(waitForOutcome(precompute), std::optional<int>(4));
+  EXPECT_EQ(waitForOutcome(measure), std::optional<int>(-1));
 }
 
 // The job's OpenMP regions run with the cores granted (the thread's own team size), whatever the process default.
@@ -149,7 +145,7 @@ TEST(EditorBackgroundJob, AJobsOpenMpRegionsUseItsCores) {
         return team;
       },
       2);
-  EXPECT_EQ(job.wait(), std::optional<int>(2));
+  EXPECT_EQ(waitForOutcome(job), std::optional<int>(2));
 }
 
 TEST(EditorBackgroundJob, TheMachinesBudgetIsItsCores) {

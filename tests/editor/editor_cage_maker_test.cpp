@@ -97,7 +97,7 @@ TEST_F(CageMakerTest, ANewRequestSupersedesTheRunningOne) {
   waitUntil(steered.refused, 1);  // the first run was asked to stop
   waitUntil(steered.started, 2);
   steered.release = true;
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready);
   ASSERT_TRUE(state.jobs.cageMaker.candidate());
   EXPECT_EQ(state.jobs.cageMaker.candidate()->options.maxFaces, 40);
@@ -124,7 +124,7 @@ TEST_F(CageMakerTest, StopShowsNothingAndCancelLeavesTheSceneUntouched) {
 
   steered.release = true;
   state.jobs.cageMaker.request(state.jobs.cageMaker.options());  // generate again, then Cancel the dialog
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   ASSERT_TRUE(state.jobs.cageMaker.candidate());
   state.jobs.cageMaker.close();
   EXPECT_FALSE(state.jobs.cageMaker.isOpen());
@@ -141,7 +141,7 @@ TEST_F(CageMakerTest, AGenerationErrorIsShown) {
     throw InputError(source, -1, "no valid cage", "ask for more faces");
   });
   openCageMaker(state, 12);
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Failed);
   EXPECT_NE(state.jobs.cageMaker.error().find("no valid cage"), std::string::npos) << state.jobs.cageMaker.error();
   EXPECT_FALSE(state.jobs.cageMaker.candidate());
@@ -170,7 +170,7 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
   const Cage oldCage = state.model.scene->restCage;
 
   openCageMaker(state, 40);
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready) << state.jobs.cageMaker.error();
   const Cage generated = state.jobs.cageMaker.candidate()->generated.cage;
   EXPECT_LE(generated.numFaces(), 40);
@@ -212,7 +212,7 @@ TEST_F(CageMakerTest, AcceptIsOneUndoStepThatUndoRevertsExactly) {
 // to make a new default cage for the mesh.
 TEST_F(CageMakerTest, TheSessionAndTheAutosaveKeepTheMadeCageAndItsPose) {
   openCageMaker(state, 60);  // not the default 200: a regenerated default cage could not pass for it
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   ASSERT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready) << state.jobs.cageMaker.error();
   ASSERT_TRUE(acceptGeneratedCage(state));
   installNextOutcome(state);  // its deformers
@@ -284,7 +284,7 @@ TEST_F(CageMakerTest, UndoingMakeCageGivesTheCageItsFileBack) {
   steered.release = true;
   state.jobs.cageMaker.setGenerator(steered.generator());
   openCageMaker(state, 20);
-  state.jobs.cageMaker.wait();
+  waitThenPoll(state.jobs.cageMaker);
   ASSERT_TRUE(acceptGeneratedCage(state));
   const Session afterMake = makeSession(state);
   EXPECT_TRUE(afterMake.cagePath.empty());

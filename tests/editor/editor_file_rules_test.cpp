@@ -123,7 +123,7 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   // The export's own name works; a second export to it asks first, and only "Replace" writes.
   state.files.dialog.name = "deformed.obj";
   ASSERT_TRUE(submitFileDialog(state)) << state.files.dialog.message;
-  state.jobs.exporter.wait();  // the export runs on its worker
+  waitForOutcome(state.jobs.exporter);  // the export runs on its worker
   ASSERT_TRUE(fs::exists(path("deformed.obj")));
   openFileDialog(state, FileDialogPurpose::ExportMesh);
   EXPECT_EQ(state.files.dialog.name, "deformed.obj");
@@ -133,7 +133,7 @@ TEST_F(Folder, ExportAfterSavingASessionLeavesTheSessionIntact) {
   EXPECT_EQ(state.files.dialog.confirmPath, path("deformed.obj"));
   EXPECT_EQ(readTextFile(path("deformed.obj")), "# placeholder\n");
   EXPECT_TRUE(submitFileDialog(state, true));
-  state.jobs.exporter.wait();
+  waitForOutcome(state.jobs.exporter);
   EXPECT_NE(readTextFile(path("deformed.obj")), "# placeholder\n");
   // The session dialog kept its own name.
   openFileDialog(state, FileDialogPurpose::SaveSession);
@@ -168,7 +168,7 @@ TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   answerUnsaved(state, UnsavedChoice::DontSave);
   EXPECT_TRUE(state.loadingScene());
   state.jobs.precompute.cancel();
-  state.jobs.precompute.wait();
+  waitForOutcome(state.jobs.precompute);
   state.jobs.load.reset();
 
   // Save with no session file yet: the Save session dialog first, then the action once it saved.

@@ -11,7 +11,9 @@
 #include <cstdio>
 #include <thread>
 
+#include "headless_imgui.h"
 #include "interaction/input.h"
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "model/pose_keys.h"
 #include "ui/layout.h"
@@ -24,18 +26,11 @@ namespace {
 class InputHarness : public ::testing::Test {
  protected:
   void SetUp() override {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = ImVec2(1000, 700);
-    io.DeltaTime = 1.0f / 60.0f;
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int w = 0, h = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+    createHeadlessImGui(1000, 700);
     views = layoutViews(1000, 700, 0, 0, 0, 1);
     state.view.viewAspect = views[0].width / views[0].height;
     requestDemo(state, 3);
-    std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+    std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
     ASSERT_TRUE(out.has_value());
     installOutcome(state, std::move(*out));
     ASSERT_TRUE(state.model.scene);
@@ -198,7 +193,7 @@ TEST_F(InputHarness, EscapeCancelsARunningPrecompute) {
   moveTo(Eigen::Vector2d(500, 350));
   key(GLFW_KEY_ESCAPE);
   release = true;
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled) << "Esc did not cancel the precompute";
   installOutcome(state, std::move(*out));

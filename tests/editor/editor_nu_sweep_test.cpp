@@ -81,8 +81,8 @@ TEST(EditorNuSweep, EachVariantsFoldOverLineIsWhatAnalyzeCountsForThatVariant) {
   ASSERT_TRUE(updateDeformation(state));
   sweepNuNow(state);
   measureViews(state);
-  ASSERT_TRUE(state.view.quantities.worker.busy()) << "the sweep runs on the worker";
-  state.view.quantities.worker.join();
+  ASSERT_TRUE(state.jobs.measure.busy()) << "the sweep runs on the worker";
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   const ViewQuantities& q = state.view.quantities;
   ASSERT_EQ(q.nuSweep.size(), 25u);

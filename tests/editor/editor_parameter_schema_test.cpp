@@ -14,6 +14,7 @@
 #include "deform/deform_choices.h"
 #include "editor_options.h"
 #include "engine/session.h"
+#include "headless_imgui.h"
 #include "jobs/measure_worker.h"
 #include "methods/method_descriptors.h"
 #include "model/app_state.h"
@@ -135,13 +136,7 @@ TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
   state.document.params = {};
 
   // A real frame: the panel draws the new row's label.
-  ImGuiContext* context = ImGui::CreateContext();
-  ImGuiIO& io = ImGui::GetIO();
-  io.DisplaySize = ImVec2(800, 600);
-  io.IniFilename = nullptr;
-  unsigned char* pixels = nullptr;
-  int w = 0, h = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
+  ImGuiContext* context = createHeadlessImGui(800, 600);
   ImGui::NewFrame();
   ImGui::SetNextWindowSize(ImVec2(340, 560));
   ImGui::Begin("Controls");

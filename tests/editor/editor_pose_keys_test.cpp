@@ -17,6 +17,7 @@
 #include "base/errors.h"
 #include "engine/session.h"
 #include "io/obj_io.h"
+#include "job_waiting.h"
 #include "jobs/export_jobs.h"
 #include "model/app_state.h"
 #include "model/pose_keys.h"
@@ -254,7 +255,7 @@ class EditorAnimationExport : public ::testing::Test {
     std::ofstream(folder / "mesh.obj")
         << "v -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0 0.5 0.3\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 -0.5 1\nf 1/1/1 2/2/1 3/3/1\n";
     requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "cage.obj").string());
-    std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+    std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
     ASSERT_TRUE(out.has_value());
     installOutcome(state, std::move(*out));
     ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
@@ -291,7 +292,7 @@ TEST_F(EditorAnimationExport, ObjSequenceRunsOnTheWorkerAndHoldsTheTimelineFrame
   startAnimationExport(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string());
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   EXPECT_FALSE(state.animation.exportJob.has_value()) << "no frame-loop job: the worker does it";
-  state.jobs.exporter.wait();
+  waitForOutcome(state.jobs.exporter);
   EXPECT_EQ(state.jobs.exporter.progress(), 1.0);
   EXPECT_EQ(state.document.pose, posed) << "the pose is never touched";
   const std::vector<Eigen::MatrixXd> expected = deformTimelineFrames(
@@ -378,7 +379,7 @@ TEST_F(EditorAnimationExport, MeshExportRunsOnTheWorkerAndCancelLeavesNothing) {
   state.status.errors.clear();
   state.jobs.exporter.cancel();
   release = true;
-  const std::optional<ExportOutcome> outcome = state.jobs.exporter.wait();
+  const std::optional<ExportOutcome> outcome = waitForOutcome(state.jobs.exporter);
   ASSERT_TRUE(outcome.has_value());
   EXPECT_TRUE(outcome->cancelled);
   EXPECT_TRUE(leftOver(folder).empty());

@@ -38,7 +38,7 @@ ViewMeasurement withValues(std::initializer_list<double> values) {
 void loadDemo(AppState& state, int dim, bool compare) {
   state.view.compare = compare;
   requestDemo(state, dim);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
@@ -240,8 +240,8 @@ TEST(EditorQuantities, FieldViewIsTheNormOfTheSelectedElementsCoordinateColumns)
   state.input.selection.setIndices({vertex});
   state.view.quantities.show.setAll(quantity("field"));
   measureViews(state);
-  EXPECT_TRUE(state.view.quantities.worker.busy() || state.view.quantities.worker.ready());
-  state.view.quantities.worker.join();
+  EXPECT_TRUE(state.jobs.measure.busy() || state.jobs.measure.ready());
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   const ViewMeasurement* m = state.view.quantities.measurement(0);
   ASSERT_NE(m, nullptr);
@@ -263,7 +263,7 @@ TEST(EditorQuantities, FieldViewIsTheNormOfTheSelectedElementsCoordinateColumns)
   state.input.elementMode = ElementMode::Face;
   state.input.selection.setIndices({scene.restCage.faces(face, 0), scene.restCage.faces(face, 1)});
   measureViews(state);
-  state.view.quantities.worker.join();
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   const Eigen::MatrixXd faceField = faceCoordinateField(all, face, 0.25);
   m = state.view.quantities.measurement(0);
@@ -282,15 +282,14 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
   bend(state, 0.4);
   state.view.quantities.show.setAll(quantity("detj"));
   measureViews(state);  // starts on the 0.4 bend
-  ASSERT_TRUE(state.view.quantities.worker.busy() || state.view.quantities.worker.ready());
+  ASSERT_TRUE(state.jobs.measure.busy() || state.jobs.measure.ready());
   bend(state, 0.4);  // the pose moves on while it runs
-  state.view.quantities.worker.join();
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   EXPECT_EQ(state.view.quantities.droppedStale, 1);
   EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
-  ASSERT_TRUE(state.view.quantities.worker.busy() ||
-              state.view.quantities.worker.ready());  // measuring the current pose
-  state.view.quantities.worker.join();
+  ASSERT_TRUE(state.jobs.measure.busy() || state.jobs.measure.ready());  // measuring the current pose
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   EXPECT_EQ(state.view.quantities.droppedStale, 1);
   const ViewMeasurement* m = state.view.quantities.measurement(0);
@@ -310,10 +309,10 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
     largest = std::max(largest, std::abs(std::log(jt.determinant())));
   }
   EXPECT_GT(largest, 0.05);  // the bend changes volumes: the test sees something
-  EXPECT_GT(state.view.quantities.worker.heldBytes(), 0u);
+  EXPECT_GT(state.jobs.measure.heldBytes(), 0u);
   state.view.quantities.show.setAll(0);
   measureViews(state);
-  EXPECT_EQ(state.view.quantities.worker.heldBytes(), 0u);
+  EXPECT_EQ(state.jobs.measure.heldBytes(), 0u);
   EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
 }
 
@@ -324,7 +323,7 @@ TEST(EditorQuantities, GradientsThatWouldNotFitAreRefusedWithTheirSize) {
   setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "100000", 1);
   state.view.quantities.show.setAll(quantity("detj"));
   measureViews(state);
-  state.view.quantities.worker.join();
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
   ASSERT_EQ(state.status.errors.size(), 1u);
@@ -353,7 +352,7 @@ TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
   EXPECT_EQ(job.stage(), "spinning");
   EXPECT_FALSE(job.poll().has_value());  // nothing while it runs
   job.cancel();
-  const std::optional<std::string> out = job.wait();
+  const std::optional<std::string> out = waitForOutcome(job);
   ASSERT_TRUE(out.has_value());
   EXPECT_EQ(*out, "stopped");
   EXPECT_EQ(job.progress(), 0.25);
@@ -369,7 +368,7 @@ TEST(EditorBackgroundJob, CancelReachesTheJobAndANewStartDropsTheOldOutcome) {
       1);
   while (!running) std::this_thread::yield();
   job.start([](JobContext&) { return std::string("second"); }, 1);
-  EXPECT_EQ(job.wait().value_or(""), "second");  // the first one's outcome never shows
+  EXPECT_EQ(waitForOutcome(job).value_or(""), "second");  // the first one's outcome never shows
   EXPECT_FALSE(job.poll().has_value());
 }
 
@@ -379,7 +378,7 @@ namespace {
 void sweep(AppState& state) {
   sweepNuNow(state);
   measureViews(state);
-  state.view.quantities.worker.join();
+  waitUntilDone(state.jobs.measure);
   measureViews(state);
   ASSERT_EQ(state.view.quantities.nuSweep.size(), 25u);
 }

@@ -10,6 +10,7 @@
 #include "cage/cage_validation.h"
 #include "generation/cage_generation.h"
 #include "io/obj_io.h"
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "model/scene.h"
 
@@ -130,7 +131,7 @@ TEST(EditorSceneRepair, PointsOutsideTheCageAndAMeshWithoutFacesAreReported) {
 
   AppState state;
   requestSceneFiles(state, pointSet, cage);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   ::testing::internal::CaptureStderr();
   installOutcome(state, std::move(*out));

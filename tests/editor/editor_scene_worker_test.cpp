@@ -10,7 +10,11 @@
 #include "cage/cage_repair.h"
 #include "cage/cage_validation.h"
 #include "core/constant_method.h"
+#include "core/scratch_folder.h"
 #include "deform/memory_estimate.h"
+#include "interaction/shortcuts.h"
+#include "io/obj_io.h"
+#include "job_waiting.h"
 #include "jobs/precompute_worker.h"
 #include "methods/method_descriptors.h"
 #include "model/app_state.h"
@@ -85,7 +89,7 @@ TEST(EditorWorker, PrecomputesEveryRequestedMethod) {
   r.scene = std::make_shared<const Scene>(makeDemoScene(2));
   r.methods = {methods::green(), methods::mvc()};
   worker.start(r);
-  const std::optional<PrecomputeOutcome> out = worker.wait();
+  const std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->error.empty()) << out->error;
   EXPECT_FALSE(out->cancelled);
@@ -119,7 +123,7 @@ TEST(EditorWorker, LoaderErrorsAreReportedNotThrown) {
   r.loadScene = []() { return loadScene("/nonexistent/mesh.obj", "/nonexistent/cage.obj"); };
   r.methods = {methods::green()};
   worker.start(r);
-  const std::optional<PrecomputeOutcome> out = worker.wait();
+  const std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value());
   EXPECT_FALSE(out->error.empty());
   EXPECT_TRUE(out->deformers.empty());
@@ -141,7 +145,7 @@ TEST(EditorWorker, CancelStopsWithoutResults) {
   while (!loading) std::this_thread::yield();
   worker.cancel();
   cancelled = true;
-  const std::optional<PrecomputeOutcome> out = worker.wait();
+  const std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled);
   EXPECT_TRUE(out->deformers.empty());
@@ -150,7 +154,7 @@ TEST(EditorWorker, CancelStopsWithoutResults) {
   r.loadScene = []() { return makeDemoScene(2); };
   r.methods = {methods::green()};
   worker.start(r);
-  const std::optional<PrecomputeOutcome> done = worker.wait();
+  const std::optional<PrecomputeOutcome> done = waitForOutcome(worker);
   worker.cancel();
   ASSERT_TRUE(done.has_value());
   EXPECT_FALSE(done->cancelled);
@@ -161,14 +165,16 @@ namespace {
 
 // A method whose precompute reports progress until it is told to stop, then stops as every precompute does
 // (throws Cancelled): a cancel that arrives while a method is precomputing, deterministically, whatever the speed.
-std::atomic<bool> blockingEntered{false};
+// While blockingHolds is false it precomputes the constant method's deformer (y = x + the mean displacement).
+std::atomic<bool> blockingEntered{false}, blockingHolds{true};
 const MethodDescriptor& blockingMethod() {
   static const MethodDescriptor descriptor = [] {
     MethodDescriptor d = test::constantMethod();
     d.name = "blocking";
     d.displayName = "Blocking";
-    d.precompute = [](const Cage&, const Eigen::MatrixXd&, const PrecomputeOptions&,
+    d.precompute = [](const Cage& cage, const Eigen::MatrixXd& points, const PrecomputeOptions& options,
                       const ProgressCallback& progress) -> std::unique_ptr<CageDeformer> {
+      if (!blockingHolds) return test::constantMethod().precompute(cage, points, options, progress);
       blockingEntered = true;
       while (progress(0.5)) std::this_thread::yield();
       throw Cancelled();
@@ -192,24 +198,91 @@ TEST(EditorWorker, ACancelDuringAPrecomputeDeliversNoDeformer) {
   worker.start(r);
   while (!blockingEntered) std::this_thread::yield();  // green is done, the blocking precompute runs
   worker.cancel();
-  const std::optional<PrecomputeOutcome> out = worker.wait();
+  const std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled);
   EXPECT_TRUE(out->deformers.empty());
   EXPECT_TRUE(out->error.empty()) << out->error;
   r.methods = {methods::green()};
   worker.start(r);
-  const std::optional<PrecomputeOutcome> again = worker.wait();
+  const std::optional<PrecomputeOutcome> again = waitForOutcome(worker);
   ASSERT_TRUE(again.has_value());
   EXPECT_FALSE(again->cancelled);
   EXPECT_EQ(again->deformers.size(), 1u);
+}
+
+// Issue 24: Esc after the scene was shown (its deformers still precomputing) left it without deformers until the
+// views changed: a handle moved the cage and not the mesh, silently. Esc stops the precompute (the cores come back
+// at once) and the scene stays at rest, its label saying so; the next edit of the pose starts the precompute again,
+// and its deformer then deforms the mesh: y = x + the cage's mean displacement (the constant method), to 1e-5 (the
+// editor stores C in float).
+TEST(EditorWorker, AnEditAfterEscCancelledTheShownScenesPrecomputeStartsItAgain) {
+  const ParameterRegistration shift{test::shiftParameter()};  // the constant method's parameter (0 here)
+  AppState state;
+  state.document.method = Method(blockingMethod());
+  blockingEntered = false;
+  blockingHolds = true;
+  requestDemo(state, 3);
+  waitUntil([] { return blockingEntered.load(); });
+  pollWorker(state);  // the frame loop: the scene is shown, undeformed, while its deformer is computed
+  ASSERT_TRUE(state.model.scene);
+  ASSERT_TRUE(state.jobs.load && state.jobs.load->sceneShown);
+  cancelPrecompute(state);  // Esc
+  waitUntilDone(state.jobs.precompute);
+  pollWorker(state);
+  EXPECT_FALSE(state.loadingScene());
+  EXPECT_FALSE(state.jobs.precompute.busy()) << "Esc did not stop the precompute";
+  EXPECT_NE(viewLabel(state, 0).find("(cancelled: an edit precomputes it)"), std::string::npos) << viewLabel(state, 0);
+  EXPECT_TRUE(state.status.errors.empty());
+
+  blockingHolds = false;  // the precompute asked for next runs to its end
+  Eigen::MatrixXd pose = state.model.scene->restCage.vertices;
+  pose.row(0) += Eigen::RowVector3d(0.3, 0.0, 0.0);
+  setPose(state, pose);  // a handle moved
+  commitEdit(state, "Grab");
+  ASSERT_TRUE(state.jobs.precompute.busy()) << "the edit did not ask for the deformers again";
+  waitUntilDone(state.jobs.precompute);
+  pollWorker(state);
+  ASSERT_TRUE(hasDeformer(state, state.deformerKeys().front()));
+  ASSERT_TRUE(updateDeformation(state));
+  const Eigen::RowVectorXd u = (pose - state.model.scene->restCage.vertices).colwise().mean();
+  const Eigen::MatrixXd expected = state.model.scene->meshVertices.rowwise() + u;
+  EXPECT_LT((displayedPoints(state, 0) - expected).cwiseAbs().maxCoeff(), 1e-5);
+  EXPECT_EQ(viewLabel(state, 0).find("cancelled"), std::string::npos);
+}
+
+// A posed cage given with the scene (somicage MESH CAGE POSED) is read on the load job with the scene, not on the UI
+// thread when the scene is shown: here the file is replaced by another pose after the job has finished and before
+// the frame loop takes the outcome, and the scene opens in the pose the job read (exactly), as one undo step.
+TEST(EditorWorker, APosedCageGivenWithTheSceneIsReadOnTheLoadJob) {
+  const test::ScratchFolder dir;
+  const Scene demo = makeDemoScene(3);
+  const std::string mesh = dir / "mesh.obj", cage = dir / "cage.obj", posed = dir / "posed.obj";
+  PolygonMesh triangles;
+  for (Eigen::Index t = 0; t < demo.meshTriangles.rows(); ++t)
+    triangles.faces.push_back({demo.meshTriangles(t, 0), demo.meshTriangles(t, 1), demo.meshTriangles(t, 2)});
+  saveObj(mesh, demo.meshVertices, triangles);
+  saveObj(cage, demo.restCage.vertices, cageTopology(demo.restCage));
+  Eigen::MatrixXd read = demo.restCage.vertices, later = demo.restCage.vertices;
+  read.row(2) += Eigen::RowVector3d(0.25, -0.5, 0.125);  // exact in binary and in the OBJ's text
+  later.row(2) += Eigen::RowVector3d(-1.0, 0.0, 0.0);
+  saveObj(posed, read, cageTopology(demo.restCage));
+  AppState state;
+  requestSceneFiles(state, mesh, cage, posed);
+  waitUntilDone(state.jobs.precompute);
+  saveObj(posed, later, cageTopology(demo.restCage));  // what a read on the UI thread would see
+  pollWorker(state);
+  ASSERT_TRUE(state.model.scene) << (state.status.errors.empty() ? "" : state.status.errors.front());
+  EXPECT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_EQ(state.document.pose, read);
+  EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Load posed cage");
 }
 
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   AppState state;
   state.view.compare = true;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
@@ -238,7 +311,7 @@ TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
 TEST(EditorAppState, SessionOfTheDemoRoundTripsThroughTheState) {
   AppState state;
   requestDemo(state, 2);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   state.document.pose(0, 0) -= 0.25;
@@ -258,7 +331,7 @@ void loadDemo(AppState& state) {
   state.view.compare = true;
   state.view.compareViews = viewsOf({methods::somigliana(), methods::green()});
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
@@ -305,7 +378,7 @@ TEST(EditorWorker, AFailedLoadKeepsTheCurrentScene) {
   const KeptScene kept = loadBentDemo(state);
   requestSceneFiles(state, "/nonexistent/mesh.obj", "/nonexistent/cage.obj");
   EXPECT_TRUE(state.loadingScene());
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value());
   installOutcome(state, std::move(*out));
   ASSERT_EQ(state.status.errors.size(), 1u);
@@ -319,7 +392,7 @@ TEST(EditorWorker, AScenePastTheFreeMemoryIsRefusedAndTheCurrentOneKept) {
   const KeptScene kept = loadBentDemo(state);
   ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "10000", 1);  // 10 kB: far less than the 2D demo needs
   requestDemo(state, 2);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->deformers.empty());
@@ -354,13 +427,13 @@ TEST(EditorWorker, APhongPrecomputeCountsItsTetrahedralMeshInTheMemoryCheck) {
   PrecomputeWorker worker;
   ::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", std::to_string(static_cast<long long>(limit)).c_str(), 1);
   worker.start(request);
-  std::optional<PrecomputeOutcome> out = worker.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->deformers.empty());
   EXPECT_NE(out->error.find("points need"), std::string::npos) << out->error;
   worker.start(request);  // without the limit it is built, over the mesh the check made
-  out = worker.wait();
+  out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value() && out->error.empty()) << (out ? out->error : "");
   EXPECT_EQ(out->deformers.at(methods::phong())->volumeMesh()->numVertices(), meshVertices);
 }
@@ -383,7 +456,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
   while (!loading) std::this_thread::yield();
   worker.cancel();
   cancelled = true;
-  std::optional<PrecomputeOutcome> out = worker.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value());
   EXPECT_TRUE(out->cancelled);
   installOutcome(state, std::move(*out));
@@ -397,7 +470,7 @@ TEST(EditorWorker, ACancelledLoadKeepsTheCurrentScene) {
 TEST(EditorWorker, AMesh3FallbackToTetGenIsShownInTheStatusBar) {
   AppState state;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> loaded = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> loaded = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(loaded.has_value());
   installOutcome(state, std::move(*loaded));
   ASSERT_TRUE(state.model.scene);
@@ -409,7 +482,7 @@ TEST(EditorWorker, AMesh3FallbackToTetGenIsShownInTheStatusBar) {
   };
   PrecomputeWorker worker;
   worker.start(request);
-  std::optional<PrecomputeOutcome> out = worker.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(worker);
   ASSERT_TRUE(out.has_value() && out->error.empty()) << (out ? out->error : "");
   ASSERT_EQ(out->notices.size(), 1u);
   EXPECT_NE(out->notices[0].find("Phong: warning: CGAL's Mesh_3 did not finish"), std::string::npos)

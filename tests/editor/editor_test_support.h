@@ -7,16 +7,23 @@
 #include <memory>
 #include <optional>
 
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "model/frame_device_evaluators.h"
+#include "ui/quantity_overlay.h"
 
 namespace somicage::editor {
 
 // Waits for the worker's running request and installs its outcome (fails the test when there is none).
 inline void installNextOutcome(AppState& state) {
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   ASSERT_TRUE(out.has_value()) << "the worker had no request";
   installOutcome(state, std::move(*out));
+}
+
+// Until the views' measurements (and a requested sweep) are installed, as a scripted screenshot waits for them.
+inline void waitForMeasurements(AppState& state) {
+  waitUntil([&state] { return measurementsSettled(state); });
 }
 
 // The built-in demo of dimension dim, installed as a freshly opened scene (history: the original only).

@@ -6,8 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
-#include <chrono>
-#include <thread>
 
 #include "core/test_shapes.h"
 #include "editor_test_support.h"
@@ -29,7 +27,7 @@ TEST(EditorWakeup, AJobsOutcomeIsReadyWhenItsWakeUpRuns) {
     ++wakes;
   });
   job.start([](JobContext&) { return 42; }, 1);
-  job.join();
+  waitUntil([&] { return wakes.load() >= 1; });  // the callback runs on the job's thread once the outcome is stored
   EXPECT_EQ(wakes.load(), 1);
   EXPECT_TRUE(readyAtWake.load());
   EXPECT_EQ(job.poll(), std::optional<int>(42));
@@ -41,12 +39,13 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
   wakeOnFinish(state, [&] { ++wakes; });
 
   openDemoScene(state);  // the precompute worker: load (the scene is shown at once), then precompute
+  waitUntil([&] { return wakes.load() >= 2; });
   EXPECT_EQ(wakes.load(), 2) << "precompute: its scene loaded, then its deformers";
 
   sweepNuNow(state);  // the measure worker: the nu sweep (the panel's button)
   measureViews(state);
-  ASSERT_TRUE(state.view.quantities.worker.busy());
-  state.view.quantities.worker.join();
+  ASSERT_TRUE(state.jobs.measure.busy());
+  waitUntil([&] { return wakes.load() >= 3; });
   EXPECT_EQ(wakes.load(), 3) << "nu sweep";
   measureViews(state);
   EXPECT_EQ(state.view.quantities.nuSweep.size(), 25u);
@@ -60,15 +59,15 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
     return generated;
   });
   openCageMaker(state, 80);
-  state.jobs.cageMaker.wait();
-  // The worker thread calls the wake-up right after storing the result, which wait() may see first.
-  for (int i = 0; i < 5000 && wakes.load() < 4; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  waitThenPoll(state.jobs.cageMaker);
+  waitUntil([&] { return wakes.load() >= 4; });
   EXPECT_EQ(wakes.load(), 4) << "cage generation";
   EXPECT_EQ(state.jobs.cageMaker.status(), CageMaker::Status::Ready);
 
   ASSERT_TRUE(
       state.jobs.exporter.start("nowhere", "done", [](const ProgressCallback&) { return std::vector<std::string>{}; }));
-  ASSERT_TRUE(state.jobs.exporter.wait().has_value());
+  ASSERT_TRUE(waitForOutcome(state.jobs.exporter).has_value());
+  waitUntil([&] { return wakes.load() >= 5; });
   EXPECT_EQ(wakes.load(), 5) << "export";
 }
 

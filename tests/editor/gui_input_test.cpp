@@ -19,6 +19,7 @@
 
 #include "engine/session.h"
 #include "gui_screenshot_support.h"
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "ui/layout.h"
 #include "ui/panels.h"
@@ -117,7 +118,7 @@ struct DemoView {
 DemoView demoView() {
   AppState state;
   requestDemo(state, 3);
-  std::optional<PrecomputeOutcome> out = state.jobs.precompute.wait();
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   installOutcome(state, std::move(*out));
   const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
   state.view.viewAspect = view.width / view.height;
@@ -454,13 +455,19 @@ TEST(GuiInput, TheMeshIsDrawnWhileThePrecomputeRuns) {
                "xdotool key ctrl+q; finish\n");
   // The log: "scene shown", then frames that draw the mesh, then the precompute's outcome.
   std::istringstream log(readText(dir / "app.log"));
-  int state = 0, meshFrames = 0;  // 0: before "scene shown", 1: after it, 2: after "job precompute"
+  int state = 0, framesWhilePrecomputing = 0, meshFrames = 0;  // state 0: before "scene shown", 1: after it, 2: after
+                                                                // "job precompute"
   for (std::string line; std::getline(log, line);) {
     if (line == "scene shown" && state == 0) state = 1;
     if (line.rfind("job precompute", 0) == 0) state = std::max(state, 2);
-    if (state == 1 && line.rfind("frame ", 0) == 0 && line.find(" mesh_draws=0") == std::string::npos) ++meshFrames;
+    if (state != 1 || line.rfind("frame ", 0) != 0) continue;
+    ++framesWhilePrecomputing;
+    if (line.find(" mesh_draws=0") == std::string::npos) ++meshFrames;
   }
   ASSERT_EQ(state, 2) << out;
+  // The scene's files load and its coordinates are computed while the window opens (editor.cpp,
+  // sceneBeforeWindow): on a fast machine the precompute can end before the first frame, and there is nothing to see.
+  if (framesWhilePrecomputing == 0) GTEST_SKIP() << "the precompute ended before the first frame\n" << out;
   EXPECT_GE(meshFrames, 1) << "no frame drew the mesh while the precompute ran\n" << out;
   std::printf("%d frames drew the mesh before the precompute had finished\n", meshFrames);
   if (out.find("precomputes done at the shot: 0") == std::string::npos) {

@@ -1,6 +1,5 @@
 #include "interaction/drop.h"
 
-#include <algorithm>
 #include <array>
 #include <cctype>
 #include <fstream>

@@ -4,12 +4,18 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cstdio>
+#include <optional>
+#include <utility>
 
+#include "interaction/element_pick.h"
 #include "interaction/gizmo.h"
 #include "interaction/shortcuts.h"
+#include "interaction/transform.h"
 #include "model/pose_clear.h"
+#include "model/selection.h"
 
 namespace somicage::editor {
 

@@ -7,7 +7,9 @@
 
 #include "model/app_state.h"
 #include "model/pose_keys.h"
+#include "ui/file_dialog.h"
 #include "ui/screenshot.h"
+#include "ui/unsaved_changes.h"
 
 namespace somicage::editor {
 

@@ -4,7 +4,6 @@
 // action, so that the sheet names every key. Pure logic apart from the GLFW key codes.
 #pragma once
 
-#include <string>
 #include <vector>
 
 namespace somicage::editor {

@@ -2,13 +2,18 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
+#include "animation/pose_timeline.h"
 #include "base/errors.h"
 #include "gl_context.h"
 #include "jobs/export_jobs.h"
+#include "jobs/export_worker.h"
 #include "model/app_state.h"
+#include "model/pose_keys.h"
 #include "ui/screenshot.h"
 
 namespace somicage::editor {

@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 #include <string>
 
-#include "deform/deformer.h"
+#include "deform/deform_params.h"
 
 namespace somicage::editor {
 

@@ -5,15 +5,15 @@
 //
 // The UI thread never waits for a job: start() supersedes the running job (cancelled; its outcome never arrives)
 // and returns at once; the new job's thread first joins the superseded one's (which stops at its next progress
-// check and gives its cores back), then takes its cores from the budget and runs. Only the destructor (at exit)
-// and wait() (scripted screenshots, tests) block. When a job ends, its outcome is stored first and then the finish
-// callback runs on the job's thread: the editor's wakes the frame loop, which would otherwise sleep until the next
-// input with the outcome untaken (docs/editor.md, "Jobs and the redraw rule"). No GL.
+// check and gives its cores back), then takes its cores from the budget and runs. There is no call that waits for
+// a job's end: the frame loop polls (busy, poll), scripted screenshots too (editor.cpp); only the destructor (at
+// exit) joins, and tests wait by polling (tests/editor/job_waiting.h). When a job ends, its outcome is stored first
+// and then the finish callback runs on the job's thread: the editor's wakes the frame loop, which would otherwise
+// sleep until the next input with the outcome untaken (docs/editor.md, "Idle and the redraw rule"). No GL.
 #pragma once
 
 #include <algorithm>
 #include <atomic>
-#include <condition_variable>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -102,11 +102,6 @@ class BackgroundJob {
             run->finished = true;
           }
           if (current && onFinished && *onFinished) (*onFinished)();
-          {
-            std::lock_guard<std::mutex> lock(run->mutex);
-            run->settled = true;
-          }
-          run->done.notify_all();
         });
   }
   // Asks the running job to stop at its next progress report; its outcome (the work's own "cancelled" one) arrives.
@@ -140,18 +135,6 @@ class BackgroundJob {
     if (!run_->finished) return std::nullopt;
     return std::exchange(run_->outcome, std::nullopt);
   }
-  // Blocks until the current job has finished and its finish callback has run; its outcome stays for poll(). For
-  // scripted screenshots and tests.
-  void join() {
-    if (!run_) return;
-    std::unique_lock<std::mutex> lock(run_->mutex);
-    run_->done.wait(lock, [&] { return run_->settled; });
-  }
-  // Blocks until the current job finishes and returns its outcome (empty when nothing ran or it was taken).
-  std::optional<Outcome> wait() {
-    join();
-    return poll();
-  }
 
  private:
   // One started job, shared by its thread and (until superseded) the BackgroundJob.
@@ -159,9 +142,7 @@ class BackgroundJob {
     JobContext context;
     ThreadBudget::Lease lease;
     std::mutex mutex;
-    std::condition_variable done;
     bool finished = false;  // the outcome is stored
-    bool settled = false;   // and the finish callback has run
     bool superseded = false;
     std::optional<Outcome> outcome;
   };

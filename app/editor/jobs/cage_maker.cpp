@@ -2,7 +2,9 @@
 
 #include <chrono>
 #include <exception>
+#include <utility>
 
+#include "animation/pose_timeline.h"
 #include "base/errors.h"
 #include "model/app_state.h"
 
@@ -82,11 +84,6 @@ void CageMaker::poll() {
     error_ = result->error;
     status_ = Status::Failed;
   }
-}
-
-void CageMaker::wait() {
-  if (status_ == Status::Generating) job_.join();
-  poll();
 }
 
 void openCageMaker(AppState& state, int faces) {

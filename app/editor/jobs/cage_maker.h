@@ -14,7 +14,7 @@
 #include <optional>
 #include <string>
 
-#include "generation/cage_enclosure.h"
+#include "base/progress.h"
 #include "generation/cage_generation.h"
 #include "jobs/background_job.h"
 
@@ -54,8 +54,7 @@ class CageMaker {
 
   // Takes the worker's finished result, if it is the latest request's. Call once per frame.
   void poll();
-  // Blocks until the latest request has finished (or was cancelled), then polls. For --screenshot runs and tests.
-  void wait();
+  bool busy() const { return job_.busy(); }  // the latest request runs (poll() takes its result once it has ended)
 
   Status status() const { return status_; }
   bool isOpen() const { return status_ != Status::Closed; }

@@ -1,12 +1,23 @@
 #include "jobs/export_jobs.h"
 
+#include <Eigen/Core>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "animation/animation_export.h"
 #include "animation/normal_transform.h"
 #include "base/errors.h"
+#include "base/progress.h"
 #include "deform/jacobian.h"
 #include "deform/memory_estimate.h"
+#include "deform/method.h"
+#include "io/mesh_document.h"
 #include "io/mesh_formats.h"
+#include "io/obj_io.h"
 #include "model/app_state.h"
+#include "model/pose_keys.h"
 
 namespace somicage::editor {
 

@@ -4,14 +4,9 @@
 // write through core's writers (mesh_formats.h, animation_export.h), the same calls as `somicage deform` / `animate`.
 #pragma once
 
-#include <Eigen/Core>
-#include <memory>
 #include <string>
-#include <vector>
 
-#include "base/progress.h"
 #include "deform/deformer.h"
-#include "io/mesh_document.h"
 #include "jobs/animation_export_job.h"
 #include "jobs/export_worker.h"
 

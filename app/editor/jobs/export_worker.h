@@ -9,6 +9,7 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "base/progress.h"
@@ -41,8 +42,6 @@ class ExportWorker {
 
   // The outcome of the finished job, once; empty while running or when already taken.
   std::optional<ExportOutcome> poll() { return job_.poll(); }
-  // Blocks until the running job ends and returns its outcome (empty when nothing ran).
-  std::optional<ExportOutcome> wait() { return job_.wait(); }
 
  private:
   std::string target_;  // written and read by the UI thread only

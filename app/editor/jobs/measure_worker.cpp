@@ -1,19 +1,21 @@
 #include "jobs/measure_worker.h"
 
 #include <chrono>
-#include <cmath>
+#include <exception>
 #include <iterator>
 #include <limits>
 #include <new>
-#include <tuple>
+#include <utility>
 
 #include "analysis/deformation_quantities.h"
 #include "base/errors.h"
 #include "deform/deform_choices.h"
+#include "deform/deform_params.h"
 #include "deform/memory_estimate.h"
 #include "deform/parameter_schema.h"
 #include "engine/engine.h"
 #include "geometry/cage.h"
+#include "geometry/integration_options.h"
 #include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage::editor {

@@ -16,10 +16,12 @@
 #include <optional>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "analysis/coordinate_fields.h"
 #include "analysis/deformation_analysis.h"
+#include "analysis/seam_jumps.h"
 #include "deform/jacobian.h"
 #include "jobs/background_job.h"
 #include "model/scene.h"
@@ -90,9 +92,8 @@ class MeasureWorker {
   double progress() const { return job_.progress(); }
   std::string stage() const { return job_.stage(); }
   std::optional<MeasureOutcome> poll() { return job_.poll(); }
-  std::optional<MeasureOutcome> wait() { return job_.wait(); }
-  void join() { job_.join(); }  // the outcome stays for poll()
-  // Cancels, joins and frees the gradients and field terms (no J-based quantity in use any more).
+  // Cancels and frees the gradients and field terms (no J-based quantity in use any more); a running job keeps the
+  // old ones until it ends, nothing waits for it.
   void release();
   // Bytes held between requests (gradients and field terms); 0 while busy (the worker owns them then).
   std::size_t heldBytes() const;

@@ -7,7 +7,9 @@
 
 #include "base/errors.h"
 #include "deform/memory_estimate.h"
+#include "deform/method.h"
 #include "engine/engine.h"
+#include "io/mesh_formats.h"
 
 namespace somicage::editor {
 
@@ -49,9 +51,21 @@ void requireMemoryFor(const PrecomputeRequest& request, const std::vector<Precom
                 memoryHint(!request.options.floatStorage));
 }
 
-// Loads the scene if asked, checks the memory, then builds each method's deformer; never throws.
+// The posed cage's vertices against the rest cage, or why they cannot be had.
+PosedCageRead readPosedCage(const std::string& path, const Cage& restCage) {
+  PosedCageRead read;
+  read.path = path;
+  try {
+    read.pose = loadPosedVertices(path, restCage);
+  } catch (const std::exception& e) {
+    read.error = e.what();
+  }
+  return read;
+}
+
+// Loads the scene (and its posed cage) if asked, checks the memory, then builds each method's deformer; never throws.
 PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobContext& context,
-                             const std::function<void(std::shared_ptr<const Scene>)>& loaded) {
+                             const std::function<void(std::shared_ptr<const Scene>, const PosedCageRead&)>& loaded) {
   const auto t0 = std::chrono::steady_clock::now();
   PrecomputeOutcome out;
   out.id = id;
@@ -62,7 +76,8 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
       request.scene = std::make_shared<const Scene>(request.loadScene());
     }
     out.scene = request.scene;
-    loaded(request.scene);
+    if (!request.posedPath.empty()) out.posed = readPosedCage(request.posedPath, request.scene->restCage);
+    loaded(request.scene, out.posed);
     request.options.threads = context.threads();
     const std::vector<PrecomputeOptions> prepared = preparedOptions(request, context, out.notices);
     requireMemoryFor(request, prepared);
@@ -98,14 +113,15 @@ std::uint64_t PrecomputeWorker::start(PrecomputeRequest request) {
   const int threads = request.threads;
   job_.start(
       [request = std::move(request), id, slot = loaded_, wake = wake_](JobContext& context) mutable {
-        return runRequest(std::move(request), id, context, [&](std::shared_ptr<const Scene> scene) {
-          {
-            std::lock_guard<std::mutex> lock(slot->mutex);
-            slot->id = id;
-            slot->scene = std::move(scene);
-          }
-          if (wake && *wake) (*wake)();  // the frame loop shows the mesh now
-        });
+        return runRequest(std::move(request), id, context,
+                          [&](std::shared_ptr<const Scene> scene, const PosedCageRead& posed) {
+                            {
+                              std::lock_guard<std::mutex> lock(slot->mutex);
+                              slot->id = id;
+                              slot->loaded = LoadedScene{std::move(scene), posed};
+                            }
+                            if (wake && *wake) (*wake)();  // the frame loop shows the mesh now
+                          });
       },
       threads);
   return id;
@@ -116,10 +132,10 @@ void PrecomputeWorker::setOnFinished(std::function<void()> onFinished) {
   job_.setOnFinished(std::move(onFinished));
 }
 
-std::shared_ptr<const Scene> PrecomputeWorker::takeLoadedScene() {
+std::optional<PrecomputeWorker::LoadedScene> PrecomputeWorker::takeLoadedScene() {
   std::lock_guard<std::mutex> lock(loaded_->mutex);
-  if (loaded_->id + 1 != nextId_) return nullptr;  // an older request's
-  return std::exchange(loaded_->scene, nullptr);
+  if (loaded_->id + 1 != nextId_) return std::nullopt;  // an older request's
+  return std::exchange(loaded_->loaded, std::nullopt);
 }
 
 }  // namespace somicage::editor

@@ -3,6 +3,7 @@
 // the free memory fails before any precompute, with the estimate in its error (core/deform/memory_estimate.h). No GL.
 #pragma once
 
+#include <Eigen/Core>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -15,6 +16,7 @@
 #include "deform/deformer.h"
 #include "engine/view_spec.h"
 #include "jobs/background_job.h"
+#include "jobs/thread_budget.h"
 #include "model/scene.h"
 
 namespace somicage::editor {
@@ -33,6 +35,7 @@ struct PrecomputeRequest {
   // Either a ready scene, or a loader run on the worker (file loading can take a while too).
   std::shared_ptr<const Scene> scene;
   std::function<Scene()> loadScene;
+  std::string posedPath;             // a posed cage to read against the scene's rest cage, on the job too ("": none)
   std::vector<DeformerKey> methods;  // deformers to build, in this order (each with its options)
   PrecomputeOptions options = interactiveOptions();
   bool withGradients = false;  // a J-based quantity is shown: its gradients count in the memory check too
@@ -41,9 +44,17 @@ struct PrecomputeRequest {
   int threads = ThreadBudget::machine().cores();
 };
 
+// A posed cage read on the job with the scene it poses (PrecomputeRequest::posedPath).
+struct PosedCageRead {
+  std::string path;                     // "": none asked for
+  std::optional<Eigen::MatrixXd> pose;  // #V by d: read, and it fits the rest cage
+  std::string error;                    // else why not (the file, what is wrong)
+};
+
 struct PrecomputeOutcome {
   std::uint64_t id = 0;                // as returned by start()
   std::shared_ptr<const Scene> scene;  // the scene the deformers belong to (null if loading failed)
+  PosedCageRead posed;                 // the request's posed cage, read once the scene was there
   DeformerSet deformers;
   double seconds = 0.0;  // wall time of the whole request
   bool cancelled = false;
@@ -61,24 +72,26 @@ class PrecomputeWorker {
   bool busy() const { return job_.busy(); }
   // Called on the job's thread when a request has finished (background_job.h), and when its scene has loaded.
   void setOnFinished(std::function<void()> onFinished);
-  // The latest request's scene once it has loaded (before its deformers), once; null before or when taken. The
-  // editor shows it, undeformed, while the deformers are computed.
-  std::shared_ptr<const Scene> takeLoadedScene();
+  // The latest request's scene once it has loaded (before its deformers), with its posed cage, once; empty before
+  // or when taken. The editor shows it, undeformed, while the deformers are computed.
+  struct LoadedScene {
+    std::shared_ptr<const Scene> scene;
+    PosedCageRead posed;
+  };
+  std::optional<LoadedScene> takeLoadedScene();
   double progress() const { return job_.progress(); }  // 0..1 over all methods of the request
   std::string stage() const { return job_.stage(); }   // e.g. "Loading files", "Somigliana 2/3"
   // The outcome of the last finished request, once; empty while running or when already taken.
   std::optional<PrecomputeOutcome> poll() { return job_.poll(); }
-  // Blocks until the running request finishes and returns its outcome (empty when nothing ran).
-  std::optional<PrecomputeOutcome> wait() { return job_.wait(); }
 
  private:
-  struct LoadedScene {  // written by the job, taken by the UI thread
+  struct Handover {  // written by the job, taken by the UI thread
     std::mutex mutex;
     std::uint64_t id = 0;
-    std::shared_ptr<const Scene> scene;
+    std::optional<LoadedScene> loaded;
   };
   std::uint64_t nextId_ = 1;
-  std::shared_ptr<LoadedScene> loaded_ = std::make_shared<LoadedScene>();
+  std::shared_ptr<Handover> loaded_ = std::make_shared<Handover>();
   std::shared_ptr<const std::function<void()>> wake_;
   BackgroundJob<PrecomputeOutcome> job_;
 };

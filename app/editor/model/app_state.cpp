@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
+#include "deform/parameter_schema.h"
 #include "geometry/volume_mesh.h"
+#include "model/view_quantity.h"
 
 namespace somicage::editor {
 
@@ -57,7 +60,9 @@ std::string viewLabel(const AppState& state, std::size_t v) {
       state.model.scene && starVolumeMesh(state.model.scene->restCage))
     label += "  star tetrahedra";
   if (!hasDeformer(state, deformerKey(view)))  // the scene is shown while its deformers are computed
-    label += state.jobs.precompute.busy() ? "  (precomputing...)" : "  (not precomputed)";
+    label += state.jobs.precompute.busy()      ? "  (precomputing...)"
+             : state.model.precomputeCancelled ? "  (cancelled: an edit precomputes it)"
+                                               : "  (not precomputed)";
   return label;
 }
 

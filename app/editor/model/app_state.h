@@ -2,27 +2,30 @@
 // its deformers, the views, the selection and interaction, the animation, the background jobs, the files, the
 // status), and the controller functions that change it. No globals, no GL, no ImGui: the panels (panels.h) and the
 // input handler (input.h) are functions of AppState&, and the Renderer (editor_renderer.h) reads it. The functions
-// are defined by concern: scene_loading.cpp, deformation.cpp, edits.cpp, state_files.cpp.
+// are defined by concern: app_state.cpp, scene_loading.cpp, deformation.cpp, edits.cpp, document_files.cpp.
 #pragma once
 
 #include <Eigen/Core>
 #include <cstdint>
 #include <functional>
-#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "deform/deformer.h"
-#include "editor_options.h"
+#include "deform/deform_params.h"
+#include "deform/method.h"
+#include "engine/camera_state.h"
 #include "engine/session.h"
 #include "engine/view_spec.h"
+#include "geometry/cage.h"
+#include "geometry/volume_mesh.h"
 #include "interaction/camera.h"
 #include "interaction/element_pick.h"
 #include "interaction/transform.h"
 #include "jobs/cage_maker.h"
 #include "jobs/export_worker.h"
+#include "jobs/measure_worker.h"
 #include "jobs/precompute_worker.h"
 #include "jobs/thread_budget.h"
 #include "model/document.h"
@@ -91,6 +94,9 @@ struct SceneState {
   // In place on OpenGL: views whose `deformed` entry is stale (the Renderer deformed them on the GPU);
   // ensureCpuPoints() computes them on the CPU when something needs the numbers (framing, export).
   std::vector<std::size_t> cpuStale;
+  // The shown scene's precompute was cancelled (Esc, Cancel) with deformers missing: the scene stays at rest, and
+  // the next edit of the pose or the parameters starts the precompute again (setPose / setParams; docs/editor.md).
+  bool precomputeCancelled = false;
 };
 
 // Views and quantities: what is shown and how (view state: no edit, not undone). Panels and input change it freely;
@@ -101,7 +107,7 @@ struct ViewState {
   MethodOptions methodOptions;
   bool compare = false;
   std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
-  ViewQuantities quantities;  // what each view shows, measured on a worker (view_quantity.h)
+  ViewQuantities quantities;  // what each view shows and its installed measurements (view_quantities.h)
   OrbitCamera camera;
   double viewAspect = 1.6;      // width / height of the first viewport, set by the frame loop
   bool frameRequested = false;  // frame the rest scene once the viewports are known
@@ -131,7 +137,7 @@ struct PendingLoad {
   bool restored = false;                    // a crashed run's autosave: unsaved from the start
   std::optional<Eigen::MatrixXd> pose;      // the pose to show on the new cage
   std::optional<CameraState> camera;
-  std::string posedPath;              // a posed cage loaded against the new cage
+  PosedCageRead posed;                // a posed cage read on the load job against the new cage (path "": none)
   std::optional<RecentEntry> recent;  // the files being loaded; recorded when they arrive
   bool sceneShown = false;            // the loaded scene is shown (undeformed) while its deformers are computed
 };
@@ -140,6 +146,7 @@ struct PendingLoad {
 struct JobsState {
   PrecomputeWorker precompute;  // scene loading and the deformers' precompute
   CageMaker cageMaker;          // File > Make cage... (its dialog and the preview)
+  MeasureWorker measure;        // the views' quantities and the nu sweep (measure_worker.h, quantity_overlay.h)
   ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
   std::optional<PendingLoad> load;
 };

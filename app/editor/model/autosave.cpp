@@ -7,8 +7,11 @@
 #include <cerrno>
 #include <cstdio>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <system_error>
+#include <utility>
 
 #include "base/errors.h"
 #include "base/file_util.h"

@@ -1,6 +1,7 @@
 // The deformation of every frame: the views' points on the active device.
 #include <algorithm>
 #include <chrono>
+#include <exception>
 
 #include "model/app_state.h"
 

@@ -11,7 +11,8 @@
 #include <string>
 
 #include "animation/pose_timeline.h"
-#include "deform/deformer.h"
+#include "deform/deform_params.h"
+#include "deform/method.h"
 #include "geometry/cage.h"
 
 namespace somicage::editor {

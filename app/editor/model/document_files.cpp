@@ -1,6 +1,8 @@
 // Files: sessions, posed cages, dropped and recent files, the crash-recovery offer.
+#include <exception>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "base/file_util.h"
 #include "engine/engine.h"

@@ -1,6 +1,7 @@
 // Edits: the document's setters, its undo history and the commands that change the cage.
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "model/app_state.h"
 
@@ -55,6 +56,7 @@ void setPose(AppState& state, const Eigen::MatrixXd& pose) {
   state.document.pose = pose;
   ++state.document.poseGeneration;
   state.model.deformDirty = true;
+  if (state.model.precomputeCancelled) ensureDeformers(state);  // the edit needs the deformers Esc stopped
 }
 
 void resetPose(AppState& state) {
@@ -66,6 +68,7 @@ void resetPose(AppState& state) {
 void setParams(AppState& state, const DeformParams& params) {
   state.document.params = params;
   state.model.deformDirty = true;
+  if (state.model.precomputeCancelled) ensureDeformers(state);
 }
 
 void undo(AppState& state) {

@@ -2,8 +2,11 @@
 
 #include <Eigen/Geometry>
 #include <memory>
+#include <utility>
 
+#include "deform/parameter_schema.h"
 #include "methods/method_descriptors.h"
+#include "model/scene.h"
 
 namespace somicage::editor {
 

@@ -1,11 +1,13 @@
 #include "model/file_rules.h"
 
+#include <unistd.h>  // access
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <system_error>
-
-#include <unistd.h>  // access
+#include <utility>
 
 #include "interaction/drop.h"
 

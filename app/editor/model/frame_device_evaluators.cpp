@@ -1,8 +1,10 @@
 #include "model/frame_device_evaluators.h"
 
 #include <exception>
+#include <iterator>
 #include <utility>
 
+#include "deform/frame_evaluation.h"
 #include "model/app_state.h"
 
 namespace somicage::editor {

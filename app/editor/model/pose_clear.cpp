@@ -1,6 +1,7 @@
 #include "model/pose_clear.h"
 
 #include <Eigen/Dense>
+#include <algorithm>
 
 namespace somicage::editor {
 

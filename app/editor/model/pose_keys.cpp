@@ -1,8 +1,11 @@
 #include "model/pose_keys.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <utility>
+#include <vector>
 
 #include "model/app_state.h"
 

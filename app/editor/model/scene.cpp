@@ -1,12 +1,14 @@
 #include "model/scene.h"
 
-#include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "generation/cage_generation.h"
 #include "io/mesh_formats.h"
+#include "io/obj_io.h"
 
 namespace somicage::editor {
 

@@ -1,10 +1,16 @@
 // The scene's loading and precompute: requests to the precompute worker and the installation of its outcomes.
 #include <cstdio>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "deform/frame_evaluator.h"
 #include "engine/engine.h"
-#include "io/mesh_formats.h"
-#include "io/obj_io.h"
 #include "model/app_state.h"
+#include "model/view_quantity.h"
 #include "tetrahedralization/cage_tetrahedralization.h"
 
 namespace somicage::editor {
@@ -24,6 +30,14 @@ PrecomputeRequest deformerRequest(const AppState& state, std::vector<DeformerKey
   return request;
 }
 
+// The views' deformers the scene does not have yet.
+std::vector<DeformerKey> missingDeformers(const AppState& state) {
+  std::vector<DeformerKey> missing;
+  for (const DeformerKey& key : state.deformerKeys())
+    if (!hasDeformer(state, key)) missing.push_back(key);
+  return missing;
+}
+
 }  // namespace
 
 // A scene's load takes every core (thread_budget.h): until its mesh arrives the UI has nothing to deform, and then
@@ -32,6 +46,7 @@ void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLo
   PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
   request.threads = ThreadBudget::machine().cores();
   request.scene = std::move(scene);
+  request.posedPath = load.posed.path;  // read on the job, with the scene
   state.jobs.load = std::move(load);
   state.jobs.precompute.start(std::move(request));
 }
@@ -40,6 +55,7 @@ void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad loa
   PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
   request.threads = ThreadBudget::machine().cores();
   request.loadScene = std::move(loader);
+  request.posedPath = load.posed.path;  // read on the job, with the scene
   state.jobs.load = std::move(load);
   state.jobs.precompute.start(std::move(request));
 }
@@ -47,7 +63,7 @@ void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad loa
 void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
                        const std::string& posedPath) {
   PendingLoad load;
-  load.posedPath = posedPath;
+  load.posed.path = posedPath;
   load.recent = RecentEntry::files(meshPath, cagePath, posedPath);
   requestLoad(
       state, [meshPath, cagePath]() { return loadScene(meshPath, cagePath); }, std::move(load));
@@ -61,10 +77,8 @@ bool hasDeformer(const AppState& state, const DeformerKey& key) { return state.m
 
 void ensureDeformers(AppState& state) {
   if (!state.model.scene || state.loadingScene()) return;
-  std::vector<DeformerKey> missing;
-  for (const DeformerKey& key : state.deformerKeys()) {
-    if (!hasDeformer(state, key)) missing.push_back(key);
-  }
+  std::vector<DeformerKey> missing = missingDeformers(state);
+  state.model.precomputeCancelled = false;  // asked for again, or nothing is missing any more
   if (missing.empty()) return;
   PrecomputeRequest request = deformerRequest(state, std::move(missing));
   request.threads = ThreadBudget::machine().cores() - 1;  // the UI keeps a core: it deforms the views it has
@@ -94,6 +108,7 @@ void installScene(AppState& state, std::shared_ptr<const Scene> scene) {
   state.model.deformers.clear();
   state.model.deformed.clear();
   state.model.cpuStale.clear();
+  state.model.precomputeCancelled = false;
   state.view.quantities.clearSweep();
   state.input.selection.resize(state.model.scene->restCage.numVertices());
   state.input.mouse = Interaction{};
@@ -125,16 +140,10 @@ void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
   const std::string dropped = keepPosesThatFit(state.animation, state.model.scene->restCage,
                                                sessionPoses || !previous ? nullptr : &previous->restCage);
   if (!dropped.empty()) notices.push_back(dropped);
-  bool posedLoaded = false;
-  if (!load.posedPath.empty()) {
-    try {
-      state.document.pose =
-          posedVerticesFromMesh(loadAnyMesh(load.posedPath), state.model.scene->restCage, load.posedPath);
-      posedLoaded = true;
-    } catch (const std::exception& e) {
-      state.status.errors.push_back(e.what());
-    }
-  }
+  // A posed cage given with the scene was read on the load job (PendingLoad::posed), never here on the UI thread.
+  const bool posedLoaded = load.posed.pose.has_value();
+  if (posedLoaded) state.document.pose = *load.posed.pose;
+  if (!load.posed.error.empty()) state.status.errors.push_back(load.posed.error);
   // The new document's history: the state as opened, then the posed cage loaded with it (undoable, like any
   // "Load posed cage"). Opening loses nothing, so it starts clean, except a crashed run's restored autosave,
   // which exists nowhere else.
@@ -165,6 +174,11 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   if (outcome.cancelled) {
     state.jobs.load.reset();
     state.status.message = "precomputation cancelled";
+    // A scene shown while its deformers were computed stays, at rest; the next edit asks for them again (an artist
+    // who moves a handle expects the mesh to follow), not this frame (Esc gives the cores back now).
+    state.model.precomputeCancelled = state.model.scene && !missingDeformers(state).empty();
+    if (state.model.precomputeCancelled)
+      state.status.message += ": the next edit of the pose or parameters restarts it";
     return;
   }
   if (!outcome.error.empty()) {
@@ -175,6 +189,7 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
   if (!outcome.scene) return;
   state.status.stats.precomputeSeconds = outcome.seconds;
   const bool newScene = outcome.scene != state.model.scene;  // not shown while its deformers were computed
+  if (newScene && state.jobs.load) state.jobs.load->posed = std::move(outcome.posed);
   if (newScene) showLoadedScene(state, outcome.scene);
   const bool completesLoad = state.jobs.load && state.jobs.load->sceneShown;
   for (auto& [m, d] : outcome.deformers) state.model.deformers[m] = d;
@@ -194,15 +209,16 @@ void installOutcome(AppState& state, PrecomputeOutcome outcome) {
 
 void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
   state.jobs.precompute.setOnFinished(wake);
-  state.view.quantities.worker.setOnFinished(wake);
+  state.jobs.measure.setOnFinished(wake);
   state.jobs.cageMaker.setOnFinished(wake);
   state.jobs.exporter.setOnFinished(wake);
 }
 
 bool pollWorker(AppState& state) {
   if (state.jobs.load && !state.jobs.load->sceneShown) {  // the mesh has loaded: show it while the precompute runs
-    if (std::shared_ptr<const Scene> scene = state.jobs.precompute.takeLoadedScene()) {
-      showLoadedScene(state, std::move(scene));
+    if (std::optional<PrecomputeWorker::LoadedScene> loaded = state.jobs.precompute.takeLoadedScene()) {
+      state.jobs.load->posed = std::move(loaded->posed);
+      showLoadedScene(state, std::move(loaded->scene));
       logLine(state, "scene shown");  // --log-actions: the GUI tests look for the mesh drawn from here on
     }
   }

@@ -1,5 +1,5 @@
-// The editor's quantity state: what each view shows (view_quantity.h), the worker that measures it
-// (measure_worker.h) and the measurements installed from it, one per view. No GL, no ImGui.
+// The editor's quantity state: what each view shows (view_quantity.h) and the measurements installed from the
+// measurement job (measure_worker.h, state.jobs.measure), one per view. No GL, no ImGui.
 #pragma once
 
 #include <Eigen/Core>
@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "analysis/deformation_analysis.h"
 #include "jobs/measure_worker.h"
 #include "model/view_quantity.h"
 
@@ -15,9 +16,8 @@ namespace somicage::editor {
 
 struct ViewQuantities {
   ShowSettings show;
-  MeasureWorker worker;
   std::vector<std::optional<ViewMeasurement>> measured;  // per view: the installed measurement, if any
-  MeasureKey installed;                                  // the key of the worker's measurements in `measured`
+  MeasureKey installed;                                  // the key of the measurements in `measured`
   std::uint64_t generation = 0;                          // bumps when `measured` changes (the renderer re-uploads)
   int droppedStale = 0;                                  // outcomes dropped because their key was no longer current
 

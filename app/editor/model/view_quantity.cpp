@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "analysis/deformation_quantities.h"
 #include "base/errors.h"
 
 namespace somicage::editor {

@@ -4,6 +4,8 @@
 
 #include <cmath>
 
+#include "generation/cage_generation.h"
+#include "jobs/cage_maker.h"
 #include "ui/panels.h"
 
 namespace somicage::editor {

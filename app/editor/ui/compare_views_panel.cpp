@@ -4,7 +4,12 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
+#include "deform/method.h"
+#include "deform/parameter_schema.h"
+#include "engine/session.h"
+#include "engine/view_spec.h"
 #include "ui/panels.h"           // tooltip
 #include "ui/parameter_panel.h"  // sliderSpan
 

@@ -3,14 +3,17 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <system_error>
+#include <utility>
 
 #include "model/app_state.h"
 #include "ui/panels.h"
 #include "ui/screenshot.h"
+#include "ui/unsaved_changes.h"
 
 namespace somicage::editor {
 

@@ -7,18 +7,26 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <limits>
+#include <optional>
 #include <string>
-#include <system_error>
 
+#include "deform/method.h"
+#include "engine/view_spec.h"
+#include "generation/cage_generation.h"
+#include "geometry/volume_mesh.h"
+#include "interaction/element_pick.h"
 #include "interaction/shortcuts.h"
+#include "jobs/cage_maker.h"
 #include "jobs/thread_budget.h"
 #include "model/fig8_demo.h"
+#include "model/frame_device_evaluators.h"
+#include "model/history.h"
+#include "model/recent_files.h"
 #include "ui/compare_views_panel.h"
+#include "ui/file_dialog.h"
 #include "ui/parameter_panel.h"
 #include "ui/quantity_overlay.h"
-#include "ui/screenshot.h"
+#include "ui/unsaved_changes.h"
 
 namespace somicage::editor {
 

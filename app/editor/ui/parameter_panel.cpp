@@ -5,7 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
+#include "deform/deform_choices.h"
+#include "deform/deform_params.h"
+#include "deform/method.h"
+#include "engine/view_spec.h"
 #include "model/app_state.h"
 #include "ui/panels.h"  // tooltip
 

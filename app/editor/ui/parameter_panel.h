@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "deform/parameter_schema.h"
+#include "model/app_state.h"
 
 namespace somicage::editor {
 

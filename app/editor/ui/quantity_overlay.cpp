@@ -2,15 +2,27 @@
 
 #include <imgui.h>
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iterator>
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
+#include "analysis/deformation_analysis.h"
+#include "analysis/deformation_quantities.h"
 #include "deform/deform_choices.h"
+#include "deform/method.h"
+#include "engine/view_spec.h"
+#include "interaction/element_pick.h"
+#include "jobs/measure_worker.h"
 #include "mesh_renderer.h"
 #include "model/selection.h"
+#include "model/view_quantities.h"
+#include "model/view_quantity.h"
 #include "ui/panels.h"  // tooltip
 
 namespace somicage::editor {
@@ -90,7 +102,7 @@ void measureViews(AppState& state) {
   q.measured.resize(viewCount);
   MeasureRequest request = measureRequest(state);
   const MeasureKey key = measureKey(request);
-  if (std::optional<MeasureOutcome> outcome = q.worker.poll()) {
+  if (std::optional<MeasureOutcome> outcome = state.jobs.measure.poll()) {
     if (!outcome->error.empty()) {
       turnOff(state, "measuring the pose failed: " + outcome->error);
     } else if (outcome->cancelled) {
@@ -113,7 +125,7 @@ void measureViews(AppState& state) {
       ++q.droppedStale;  // its pose (or scene, or choice) is gone: the current one is measured next
     }
   }
-  if (q.worker.busy()) return;
+  if (state.jobs.measure.busy()) return;
   if (q.sweepRequested) {
     q.sweepRequested = false;
     if (const std::shared_ptr<const CageDeformer>* deformer = nuSweepDeformer(state)) {
@@ -125,28 +137,26 @@ void measureViews(AppState& state) {
       sweep.sweepView = 0;
       sweep.sweepNus = nuSweepValues(-0.95, 0.49, 25);
       sweep.sweepVariants = readsParameter(state.document.method, kParamBlend);  // BEM reads nu, not the variant
-      q.worker.start(std::move(sweep));
+      state.jobs.measure.start(std::move(sweep));
       return;
     }
   }
   if (!needsWorker(request)) {
     if (q.installed != MeasureKey{}) {  // nothing uses the gradients or field terms any more: free them
-      q.worker.release();
+      state.jobs.measure.release();
       q.installed = MeasureKey{};
       for (std::size_t v = 0; v < viewCount; ++v) q.measured[v].reset();
       ++q.generation;
     }
     return;
   }
-  if (key != q.installed) q.worker.start(std::move(request));
+  if (key != q.installed) state.jobs.measure.start(std::move(request));
 }
 
-void waitForMeasurements(AppState& state) {
-  for (int round = 0; round < 4; ++round) {
-    measureViews(state);
-    if (!state.view.quantities.worker.busy() && !state.view.quantities.sweepRequested) return;
-    state.view.quantities.worker.join();
-  }
+bool measurementsSettled(AppState& state) {
+  measureViews(state);
+  // busy() before ready(): a job ending between the two leaves its outcome waiting, which is not settled
+  return !state.jobs.measure.busy() && !state.jobs.measure.ready() && !state.view.quantities.sweepRequested;
 }
 
 ColorRange shownRange(const AppState& state, int quantity) {
@@ -465,7 +475,7 @@ void drawShowChoice(AppState& state) {
     if (quantity > 0 && std::find(shown.begin(), shown.end(), quantity) == shown.end()) shown.push_back(quantity);
   }
   for (int quantity : shown) drawRangeSetting(state, quantity);
-  MeasureWorker& worker = state.view.quantities.worker;
+  MeasureWorker& worker = state.jobs.measure;
   if (worker.busy()) {
     const std::string stage = worker.stage();
     ImGui::TextUnformatted(stage.empty() ? "measuring..." : stage.c_str());

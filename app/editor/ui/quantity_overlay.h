@@ -5,7 +5,9 @@
 
 #include <vector>
 
+#include "jobs/measure_worker.h"
 #include "model/app_state.h"
+#include "model/view_quantity.h"
 #include "ui/layout.h"
 
 namespace somicage::editor {
@@ -17,8 +19,10 @@ MeasureRequest measureRequest(const AppState& state);
 // current pose when the installed measurements are not of it and frees the gradients when no view uses them.
 // Errors go to state.errors and turn the quantities off. Never blocks, never deforms.
 void measureViews(AppState& state);
-// Blocks until the views' measurements (and a requested sweep) are installed, or failed: the screenshot path.
-void waitForMeasurements(AppState& state);
+// Measures (measureViews) and says whether the views' measurements and a requested sweep are all installed (or
+// failed): nothing more is to come from the measurement job. Never blocks: a scripted screenshot asks it each time
+// a job wakes the loop.
+bool measurementsSettled(AppState& state);
 // The colour range of a quantity as drawn: fixed when typed, else shared by the views that show it.
 ColorRange shownRange(const AppState& state, int quantity);
 // The value under the cursor: view -1 and vertex -1 when none is shown.

@@ -6,8 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <string>
 #include <system_error>
+#include <vector>
 
+#include "animation/pose_timeline.h"
+#include "jobs/animation_export_job.h"
 #include "model/pose_keys.h"
 #include "ui/file_dialog.h"  // writePath
 #include "ui/panels.h"       // tooltip

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "model/app_state.h"
+#include "ui/file_dialog.h"
 
 namespace somicage::editor {
 
