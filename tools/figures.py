@@ -233,6 +233,21 @@ def shot(scene, views, out, extra=(), size=None, ui=False, labels=None):
     return shown(args)
 
 
+def editor_boxes(pane, background):
+    """The editor's numbers box (top left) and legend (bottom right) in a pane, as (y, x, height, width), found by
+    their fill: (20, 20, 24) at alpha 170 and 190 over the background (app/editor/ui/quantity_overlay.cpp). A row or
+    column of a box has >= 10 pixels of it; a few mesh pixels of that colour do not make one."""
+    H, W = pane.shape[:2]
+    found = []
+    for alpha, rows, cols in ((170, slice(0, H // 4), slice(0, W // 2)), (190, slice(H // 2, H), slice(W // 3, W))):
+        fill = alpha / 255 * np.array([20, 20, 24]) + (1 - alpha / 255) * background
+        match = np.abs(pane[rows, cols].astype(float) - fill).max(axis=2) <= 3
+        ys, xs = np.nonzero(match.sum(axis=1) >= 10)[0], np.nonzero(match.sum(axis=0) >= 10)[0]
+        if len(ys) and len(xs):
+            found.append((rows.start + ys.min(), cols.start + xs.min(), ys.ptp() + 1, xs.ptp() + 1))
+    return found
+
+
 def zoom_panes(path, count, zoom):
     """The editor frames the mesh and the whole posed cage, so a 3D mesh fills little of its pane. Each pane of the
     zoom-times larger shot is cropped to a square around its mesh (at most zoom times closer: pixels stay sharp),
@@ -243,13 +258,13 @@ def zoom_panes(path, count, zoom):
     H, W = big.shape[0], big.shape[1] // count
     h, w = H // zoom, W // zoom
     result = Image.new("RGB", (w * count, h))
-    top, legend = 75, (95, 420)  # the bands where the editor draws the numbers (top) and the legend (bottom right)
     for k in range(count):
         pane = big[:, k * W:(k + 1) * W]
         drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
+        boxes = editor_boxes(pane, background)
         overlay = np.zeros_like(drawn)
-        overlay[:top] = drawn[:top]
-        overlay[H - legend[0]:, W - legend[1]:] = drawn[H - legend[0]:, W - legend[1]:]
+        for y, x, bh, bw in boxes:
+            overlay[y:y + bh, x:x + bw] = True
         ys, xs = np.nonzero(drawn & ~overlay)
         if len(ys) == 0:
             ys, xs = np.array([0, H - 1]), np.array([0, W - 1])
@@ -261,13 +276,9 @@ def zoom_panes(path, count, zoom):
         clean = pane.copy()
         clean[overlay] = background  # the boxes must not come along, scaled down, in the crop
         crop = Image.fromarray(clean[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
-        # The editor's boxes go back at their own size, in the same corners.
-        for y, x, bh, bw in ((0, 0, top, w), (H - legend[0], W - legend[1], legend[0], legend[1])):
-            mask = overlay[y:y + bh, x:x + bw]
-            if mask.any():
-                where = (0 if x == 0 else w - bw, 0 if y == 0 else h - bh)
-                box, alpha = pane[y:y + bh, x:x + bw], (mask * 255).astype(np.uint8)
-                crop.paste(Image.fromarray(box), where, Image.fromarray(alpha))
+        for y, x, bh, bw in boxes:  # back at their own size, as far from the same corner
+            crop.paste(Image.fromarray(pane[y:y + bh, x:x + bw]), (x if x < W // 2 else w - (W - x),
+                                                                    y if y < H // 2 else h - (H - y)))
         result.paste(crop, (k * w, 0))
     result.save(path)
 
@@ -359,8 +370,9 @@ def write_numbers(path, title, commands, panes, notes=()):
         f.write("\n".join(lines).rstrip() + "\n")
 
 
-def figure(out, name, title, rows, extra=(), ui=False, size=None, analyzed=True, vertical=True, notes=()):
-    """rows: [(scene label, scene files, views)]; one shot per row, stacked."""
+def shots(out, name, rows, extra=(), ui=False, size=None, analyzed=True):
+    """rows: [(scene label, scene files, views)]; one shot per row, written to out.work. Returns the command lines,
+    the panes' numbers (analyzed) and the shots' files."""
     commands, panes, images = [], [], []
     for k, (label, scene, views) in enumerate(rows):
         image = os.path.join(out.work, "%s_%d.png" % (name, k))
@@ -368,8 +380,23 @@ def figure(out, name, title, rows, extra=(), ui=False, size=None, analyzed=True,
         images.append(image)
         if analyzed:
             panes += [(label, analyze(scene, v)) for v in views]
+    return commands, panes, images
+
+
+def figure(out, name, title, rows, extra=(), ui=False, size=None, analyzed=True, vertical=True, notes=()):
+    """rows: [(scene label, scene files, views)]; one shot per row, stacked."""
+    commands, panes, images = shots(out, name, rows, extra, ui, size, analyzed)
     save_png(images, os.path.join(out.dir, name + ".png"), vertical)
     write_numbers(os.path.join(out.dir, name + ".md"), title, commands, panes, notes)
+
+
+def editor_figure(out, name, title, args, notes=()):
+    """One editor screenshot from the command line args (without --screenshot), as DIR/NAME.png and NAME.md."""
+    image = os.path.join(out.work, name + "_0.png")
+    args = [EXE] + list(args) + ["--screenshot", image]
+    run(args)
+    save_png([image], os.path.join(out.dir, name + ".png"))
+    write_numbers(os.path.join(out.dir, name + ".md"), title, [shown(args)], [], notes)
 
 
 # ---------------------------------------------------------------------------------------------------------------
@@ -398,15 +425,10 @@ def fig02(out):  # paper Fig. 2: MANHEAD face lift over nu x gamma, global varia
 
 
 def fig03(out):  # paper Fig. 3: the 2D kernels at two nu (the built-in 2D demo)
-    commands = []
-    image = os.path.join(out.work, "fig03_0.png")
-    args = [EXE, "--demo", "2d", "--view", "somigliana:nu=0", "--view", "somigliana:nu=0.45", "--show", "field:0",
-            "--hide-ui", "--size", "%dx%d" % (2 * PANE_SIZE[0], PANE_SIZE[1]), "--screenshot", image]
-    run(args)
-    commands.append(shown(args))
-    save_png([image], os.path.join(out.dir, "fig03.png"))
-    write_numbers(os.path.join(out.dir, "fig03.md"), "Fig. 3: |T_0 n_0| of cage vertex 0 at nu = 0 and 0.45",
-                  commands, [], ["The field's maximum at each nu is printed on the legend (`legend field`)."])
+    editor_figure(out, "fig03", "Fig. 3: |T_0 n_0| of cage vertex 0 at nu = 0 and 0.45",
+                  ["--demo", "2d", "--view", "somigliana:nu=0", "--view", "somigliana:nu=0.45", "--show", "field:0",
+                   "--hide-ui", "--size", "%dx%d" % (2 * PANE_SIZE[0], PANE_SIZE[1])],
+                  ["The legend's range (printed as `legend field`) leaves out the most extreme 2 % of the vertices."])
 
 
 def fig04(out):  # paper Fig. 4: global vs local, STAR 2D (nu = 0.38) and FIREHYDRANT (nu = 0.3), gamma = 0
@@ -482,12 +504,7 @@ def fig10(out):  # paper Fig. 10: 2D hexagon and L, MVC | GC | Somigliana global
         rows.append((shape, scene, ["mvc", "green"]))
         rows.append((shape, scene, ["somigliana:nu=0.1:gamma=2:variant=global",
                                     "somigliana:nu=0.1:gamma=2:variant=local"]))
-    commands, panes, images = [], [], []
-    for k, (label, scene, views) in enumerate(rows):
-        image = os.path.join(out.work, "fig10_%d.png" % k)
-        commands.append(shot(scene, views, image, DETJ + ["--range", "0.05:20"]))  # one colour scale for all
-        images.append(image)
-        panes += [(label, analyze(scene, v)) for v in views]
+    commands, panes, images = shots(out, "fig10", rows, DETJ + ["--range", "0.05:20"])  # one colour scale for all
     strips = []
     for r in range(0, 4, 2):  # one strip per shape: MVC | GC | global | local
         strip = os.path.join(out.work, "fig10_strip%d.png" % r)
@@ -627,7 +644,12 @@ def guide_makecage(out):
            extra=["--make-cage", "200"], ui=True, size=(1000, 560), analyzed=False)
 
 
-def guide_timeline(out):  # a session with two poses keyed at frames 1 and 48: the pose library and the timeline
+def keyed_session(out):
+    """A session of CACTUS with two poses, rest and bent (the paper's pose), keyed at frames 1 and 48 (the pose
+    library and the timeline show); written once into out.work, its path returned."""
+    path = os.path.join(out.work, "keyed_session.json")
+    if os.path.exists(path):
+        return path
     mesh, cage, posed = model("cactus")
     rest, moved = read_vertices(cage), read_vertices(posed)
     points = np.vstack([read_vertices(mesh), rest, moved])
@@ -645,22 +667,30 @@ def guide_timeline(out):  # a session with two poses keyed at frames 1 and 48: t
         "timeline": {"fps": 24, "first": 1, "last": 48, "loop": True, "interpolation": "catmull-rom",
                      "keys": [{"frame": 1, "pose": "rest"}, {"frame": 48, "pose": "bent"}]},
     }
-    path = os.path.join(out.work, "guide_timeline.json")
     with open(path, "w") as f:
         json.dump(session, f)
-    image = os.path.join(out.work, "guide_timeline_0.png")
-    args = [EXE, "--session", path, "--size", "1000x560", "--screenshot", image]
-    run(args)
-    save_png([image], os.path.join(out.dir, "guide_timeline.png"))
-    title = "Guide: poses and keys (CACTUS, rest at frame 1, the paper's pose at 48)"
-    write_numbers(os.path.join(out.dir, "guide_timeline.md"), title,
-                  [shown(args) + "   (the session: poses rest and bent, keyed at frames 1 and 48)"], [])
+    return path
+
+
+SESSION_NOTE = "keyed_session.json: CACTUS with the poses rest and bent (its shared pose), keyed at frames 1 and 48."
+
+
+def guide_timeline(out):
+    editor_figure(out, "guide_timeline", "Guide: poses and keys (CACTUS, rest at frame 1, the paper's pose at 48)",
+                  ["--session", keyed_session(out), "--size", "1000x560"], [SESSION_NOTE])
+
+
+def guide_export(out):  # the file name is absolute so that the dialog does not show this run's working folder
+    editor_figure(out, "guide_export", "Guide: File > Export animation... (the keyed CACTUS session)",
+                  ["--session", keyed_session(out), "--export-dialog", "/tmp/cactus.glb", "--size", "1000x560"],
+                  [SESSION_NOTE])
 
 
 FIGURES = {"hero": hero, "fig02": fig02, "fig03": fig03, "fig04": fig04, "fig05": fig05, "fig06": fig06,
            "fig07": fig07, "fig08": fig08, "fig09": fig09, "fig10": fig10, "fig11": fig11,
            "guide_editor": guide_editor, "guide_pose": guide_pose, "guide_analysis": guide_analysis,
-           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline}
+           "guide_nuplot": guide_nuplot, "guide_makecage": guide_makecage, "guide_timeline": guide_timeline,
+           "guide_export": guide_export}
 
 
 class Output:

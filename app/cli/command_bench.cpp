@@ -41,6 +41,9 @@ ArgParser benchOptions() {
       {"--repeat", "R", "precomputes timed (default 3)"},
       {"--baseline-quadrature", "N", "the paper's rule: 3 N^2 points per triangle (default 50)"},
       {"--baseline-points", "K", "mesh vertices both integrators are timed on (default 2000)"},
+      {"--scale-points", "N",
+       "also time one precompute of N points: the mesh's vertices repeated, each copy after the first jittered by "
+       "up to 0.2% of their bounding box's diagonal (scale_precompute_s; default 0: not timed)"},
       weldOptionSpec(),
       threadsOptionSpec(),
       {"--json", "", "print one JSON object"},
@@ -104,6 +107,19 @@ double timeEvaluatorFrames(const CageDeformer& deformer, FrameEvaluator& evaluat
   return median(times);
 }
 
+// N points from the mesh's: its vertices, then copies of them each moved by up to 0.2% of their bounding box's
+// diagonal per coordinate (the set tests/scale/make_million_points.py writes to a file, from another generator).
+Eigen::MatrixXd scalePoints(const Eigen::MatrixXd& vertices, int count) {
+  const double jitter = 0.002 * (vertices.colwise().maxCoeff() - vertices.colwise().minCoeff()).norm();
+  std::mt19937 rng(12345);
+  std::uniform_real_distribution<double> offset(-jitter, jitter);
+  Eigen::MatrixXd points(count, vertices.cols());
+  for (int k = 0; k < count; ++k)
+    for (int a = 0; a < vertices.cols(); ++a)
+      points(k, a) = vertices(k % vertices.rows(), a) + (k < vertices.rows() ? 0.0 : offset(rng));
+  return points;
+}
+
 // Bytes per second of a large memcpy: the bandwidth a frame that streams the coordinates can hope for.
 double copyBandwidth(std::size_t bytes) {
   std::vector<char> a(bytes, 1), b(bytes);
@@ -141,6 +157,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   const int repeat = options.integer("--repeat", 3, 1, 1000);
   const int quadrature = options.integer("--baseline-quadrature", 50, 1, 200);
   const int baselinePoints = options.integer("--baseline-points", 2000, 0, 1 << 30);
+  const int scaleCount = options.integer("--scale-points", 0, 0, 1 << 30);
   const int threads = threadsOption(options);
   const bool json = options.has("--json");
   // --method: that method's frame only (checked before any work), besides Somigliana's.
@@ -260,6 +277,18 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
       if (baseline.winding(p) >= 0.5) baselineUnity = std::max(baselineUnity, baselineResidual(p));
   }
 
+  // The precompute at scale (one run, as the editor stores it), before the peak RSS below, which it then includes.
+  double scaleSeconds = 0;
+  if (scaleCount > 0) {
+    const Eigen::MatrixXd many = scalePoints(points, scaleCount);
+    ProgressReporter progress("precompute of " + std::to_string(scaleCount) + " points");
+    const CliClock::time_point start = CliClock::now();
+    const std::unique_ptr<CageDeformer> big = somicage::precompute(
+        somigliana, cage, many, precompute, options.text("--mesh"), progress.callback(), commandMemoryCheck(log));
+    scaleSeconds = secondsSince(start);
+    progress.finish();
+  }
+
   struct rusage usage;
   getrusage(RUSAGE_SELF, &usage);
   const long long peakRss = static_cast<long long>(usage.ru_maxrss) * 1024;
@@ -330,6 +359,10 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
     out.field("baseline_points", K);
     out.field("baseline_speedup", speedup);
     out.field("baseline_pou_max", baselineUnity);
+    if (scaleCount > 0) {
+      out.field("scale_points", scaleCount);
+      out.field("scale_precompute_s", scaleSeconds);
+    }
     out.field("deform_ms", deformMs);
     out.field("nu_update_ms", nuUpdateMs);
     out.field("bem_factor_ms", bemFactorMs);
@@ -354,6 +387,7 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   std::printf("partition of unity max %.3g, median %.3g\n", pouMax, pouMedian);
   std::printf("baseline          N = %d (%d points per triangle) on %d points: %.0fx slower, pou max %.3g\n",
               quadrature, 3 * quadrature * quadrature, K, speedup, baselineUnity);
+  if (scaleCount > 0) std::printf("precompute at scale %.3f s (%d points, one run)\n", scaleSeconds, scaleCount);
   for (const auto& [name, ms] : deformMs) {
     const bool cpu = name == "cpu_global" || name == "cpu_local";  // the Somigliana coordinates' bandwidth
     std::printf("deform %-10s %.2f ms", name.c_str(), ms);

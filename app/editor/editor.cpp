@@ -374,6 +374,11 @@ int runScripted(GLFWwindow* window, AppState& state, Renderer& renderer, InputEv
       state.status.errors.push_back("make cage: " + state.jobs.cageMaker.error());
     }
   }
+  if (options.exportDialog) {  // as File > Export animation... does, with the given file
+    state.animation.exportPath = *options.exportDialog;
+    state.animation.exportDialogRequested = true;
+    state.animation.showPanels = true;
+  }
   // A few frames let ImGui settle its layout before the capture; the measurements are polled for.
   std::string title;
   for (int i = 0; i < 4; ++i) {

@@ -153,6 +153,8 @@ EditorOptions parseEditorArgs(const std::vector<std::string>& args) {
       if (!(faces >= CageGenerationOptions::kMinFaces && faces <= 2000 && faces == std::floor(faces)))
         throw InputError(a, -1, "expected a face count in [12, 2000], got '" + v + "'", "--make-cage 200");
       o.makeCageFaces = static_cast<int>(faces);
+    } else if (a == "--export-dialog") {
+      o.exportDialog = value();
     } else if (a == "--show") {
       o.show = parseShow(value(), a, o.showFieldVertex);
     } else if (a == "--range") {
@@ -238,6 +240,7 @@ std::string editorUsage() {
          "  --hide-cage               do not draw the cage (it can be turned on in the panel)\n"
          "  --show-tets               draw the posed tetrahedra of Phong views as a wireframe (View menu)\n"
          "  --make-cage N             with --screenshot: File > Make cage... with N faces, shown once generated\n"
+         "  --export-dialog FILE      with --screenshot: File > Export animation... open, FILE in its file field\n"
          "  --show detj|distortion|foldover|area|difference|field:VERTEX[,...]\n"
          "                            colour the meshes by a quantity of the pose: det J (diverging, log scale,\n"
          "                            centred at 1), conformal distortion (viridis), fold-overs (det J <= 0,\n"

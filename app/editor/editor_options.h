@@ -41,6 +41,7 @@ struct EditorOptions {
   bool showTets = false;                      // --show-tets: the tetrahedral wireframe of volume-mesh views
   bool nuPlot = false;                        // --nu-plot: sweep nu once the scene is ready (the panel's plot)
   int makeCageFaces = 0;                      // --make-cage N: open File > Make cage with N faces (screenshots)
+  std::optional<std::string> exportDialog;    // --export-dialog FILE: open File > Export animation (screenshots)
   ShowSettings show;                          // --show detj|...|field:VERTEX, per view (view_quantity.h)
   std::optional<ColorRange> range;            // --range MIN:MAX: a fixed range for the shown quantities
   int showFieldVertex = -1;                   // --show field:VERTEX: the cage vertex selected for the field

@@ -83,6 +83,25 @@ TEST(CliBench, MethodPhongReportsItsFrameAndFactorisationOnly) {
   EXPECT_NE(bad.err.find("--method"), std::string::npos) << bad;
 }
 
+// --scale-points N times one more precompute of N points made from the mesh's, and holds their C meanwhile: the peak
+// RSS grows by at least 90 % of N rows of the mesh's C over the same run without the option (whose JSON has no scale
+// keys: the exact key list above).
+TEST(CliBench, ScalePointsPrecomputesThatManyPoints) {
+  const auto run = [](const std::string& count) {
+    const RunResult r = runSomicage({"bench", "--mesh", dataFile("pyramid_mesh.obj"), "--cage",
+                                     dataFile("cube_cage.obj"), "--method", "green", "--frames", "1", "--repeat", "1",
+                                     "--baseline-points", "0", "--scale-points", count, "--threads", "1", "--json"});
+    EXPECT_EQ(r.exitCode, 0) << r;
+    return JsonParser::parse(r.out);
+  };
+  const Json plain = run("0"), scaled = run("100000");
+  EXPECT_FALSE(plain.has("scale_points"));
+  EXPECT_EQ(scaled["scale_points"].number, 100000);
+  EXPECT_GT(scaled["scale_precompute_s"].number, 0);
+  const double rowBytes = scaled["coord_bytes"].number / scaled["mesh_vertices"].number;
+  EXPECT_GE(scaled["peak_rss_bytes"].number - plain["peak_rss_bytes"].number, 0.9 * 100000 * rowBytes);
+}
+
 TEST(CliBench, MissingMeshIsBadInput) {
   const RunResult r = runSomicage({"bench", "--cage", dataFile("cube_cage.obj")});
   EXPECT_EQ(r.exitCode, 2) << r;

@@ -101,6 +101,13 @@ TEST(EditorOptions, BadInputNamesTheOption) {
   EXPECT_EQ(sourceOf({"--demo", "fig9"}), "--demo");
   EXPECT_EQ(sourceOf({"--method", "phong", "--tet-level", "7"}), "--tet-level");  // levels 0 to 4
   EXPECT_EQ(sourceOf({"--tet-level"}), "--tet-level");
+  EXPECT_EQ(sourceOf({"--export-dialog"}), "--export-dialog");
+}
+
+// --export-dialog FILE (the user guide's screenshot of File > Export animation, tools/figures.py guide_export).
+TEST(EditorOptions, ExportDialogTakesItsFile) {
+  EXPECT_EQ(parseEditorArgs({"--export-dialog", "/tmp/a.glb", "m.obj"}).exportDialog, "/tmp/a.glb");
+  EXPECT_EQ(parseEditorArgs({"m.obj"}).exportDialog, std::nullopt);
 }
 
 // The single view takes the methods' own options as `somicage deform` does (--tets FILE, --tet-level N), and the

@@ -224,7 +224,8 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const long beyond = verticesBeyond(
       viewsShowing(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size())), range);
   char beyondText[64] = "";
-  if (beyond > 0) std::snprintf(beyondText, sizeof beyondText, "%ld vertices beyond the ends", beyond);
+  if (beyond > 0)
+    std::snprintf(beyondText, sizeof beyondText, "%ld %s beyond the ends", beyond, beyond == 1 ? "vertex" : "vertices");
   const float extra = beyond > 0 ? 18.0f : 0.0f;
   const float boxW = std::max(
       {w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x, ImGui::CalcTextSize(beyondText).x});
@@ -279,7 +280,8 @@ std::string viewNumbers(const AppState& state, std::size_t v, std::size_t viewCo
       const int w = state.view.quantities.show.otherView(v, viewCount);
       if (w < 0) return "difference: needs the compare view";
       if (!m) return "measuring...";
-      std::snprintf(buf, sizeof buf, "to %s: max %.4f, median %.4f diameters",
+      // Two lines: in one line a narrow pane (a third of 1000 pixels) cut it short, e.g. "to BEM nu=0.00: max ..."
+      std::snprintf(buf, sizeof buf, "to %s:\nmax %.4f, median %.4f diameters",
                     viewShortName(state, static_cast<std::size_t>(w)).c_str(), m->values.maxCoeff(),
                     quantile(m->values, 0.5));
       return buf;
