@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/SVD>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -15,6 +16,9 @@ namespace {
 // Every SVD here is of a square d x d matrix, for which JacobiSVD skips its QR preconditioner: leaving the
 // preconditioner out gives the same factors and compiles this file a third faster (CI time).
 using SquareSvd = Eigen::JacobiSVD<Eigen::MatrixXd, Eigen::NoQRPreconditioner>;
+// The stable variant's bound on a face's damped non-uniform volumetric traction (stabiliseVolumetricTractions):
+// 0.5 is the largest of those measured (docs/engine.md) that leaves CACTUS's paper pose without fold-overs.
+constexpr double kStableLimit = 0.5;
 }  // namespace
 
 Similarity fitSimilarity(const Eigen::MatrixXd& from, const Eigen::MatrixXd& to) {
@@ -201,21 +205,30 @@ Eigen::MatrixXd blendRotation(const Eigen::MatrixXd& global, const Eigen::Matrix
   return global * Eigen::AngleAxisd(t * relative.angle(), relative.axis()).toRotationMatrix();
 }
 
-// The stable variant (docs/engine.md, "The stable variant"): Eq. 14's volumetric share p_j = 2 nu/(1-2nu)
-// (eta_j + (d-1) lambda_j) along R_j n_j is split into its rest-area mean along the global frame, pbar R n_j, a
-// uniform pressure whose displacement stays bounded as nu -> 1/2, and the rest, p_j R_j n_j - pbar R n_j, which
-// per-face rotations make grow with nu/(1-2nu) until the mesh folds; that rest is damped by
-// r = 1 / (1 + (nu/(1-2nu))^2): 1 at nu = 0 (the local variant as it is), 0.64 at 0.3, 0.2 at 0.4, 0.002 at 0.49.
+// The stable variant (docs/engine.md, "The stable variant"): Eq. 14's volumetric share p_j = 2 v q_j along R_j n_j,
+// v = nu/(1-2nu), q_j = eta_j + (d-1) lambda_j, is split into its rest-area mean along the global frame, pbar R n_j,
+// a uniform pressure whose displacement stays bounded as nu -> 1/2, and the rest, p_j R_j n_j - pbar R n_j, which
+// per-face rotations and stretches make grow with v until the mesh folds. Face j keeps a share r_j of its rest, the
+// larger of r = 1 / (1 + v^2), a fixed function of nu, and 1 / (1 + (v delta_j / kStableLimit)^2), delta_j =
+// |q_j R_j n_j - qbar R n_j| / qbar the rest's size next to the uniform pressure: a face whose rest is small (a mild
+// pose) keeps most of it, and v r_j delta_j, what drives the fold-overs, stays at most kStableLimit / 2 wherever
+// the fixed r does not keep more. At nu = 0 (v = 0) r_j = 1: the local variant as it is.
 void stabiliseVolumetricTractions(BoundaryConditions& bc, const Eigen::VectorXd& restAreas, double volumetric,
-                                  int d) {
+                                  const Eigen::MatrixXd& restNormals, int d) {
   const int m = static_cast<int>(bc.tractionScales.size());
-  const double r = 1 / (1 + volumetric * volumetric);
-  Eigen::VectorXd pressure(m);
-  for (int j = 0; j < m; ++j)
-    pressure(j) = 2 * volumetric * (bc.normalStretch(j) + (d - 1) * bc.tangentialStretch(j));
-  const double mean = restAreas.dot(pressure) / restAreas.sum();
-  for (int j = 0; j < m; ++j) bc.tractionScales(j) = 2 * bc.normalStretch(j) + r * pressure(j);
-  bc.globalScales = Eigen::VectorXd::Constant(m, (1 - r) * mean);
+  Eigen::VectorXd q(m);
+  for (int j = 0; j < m; ++j) q(j) = bc.normalStretch(j) + (d - 1) * bc.tangentialStretch(j);
+  const double mean = restAreas.dot(q) / restAreas.sum();  // > 0: every stretch is >= 0
+  const double fixed = 1 / (1 + volumetric * volumetric);
+  bc.globalScales.resize(m);
+  for (int j = 0; j < m; ++j) {
+    const Eigen::VectorXd n = restNormals.row(j).transpose();
+    const double delta =
+        mean > 0 ? (q(j) * bc.faceRotations[j] * n - mean * bc.global.rotation * n).norm() / mean : 0;
+    const double x = volumetric * delta / kStableLimit, r = std::max(fixed, 1 / (1 + x * x));
+    bc.tractionScales(j) = 2 * bc.normalStretch(j) + r * 2 * volumetric * q(j);
+    bc.globalScales(j) = (1 - r) * 2 * volumetric * mean;
+  }
 }
 
 // The normal stretch's exponents (#F), eta_j = lambda_j exp(e_j): bulging (section 4.4) in the chosen convention
@@ -314,11 +327,12 @@ BoundaryConditions computeBoundaryConditions(const Cage& rest, const Eigen::Matr
     bc.tractionScales(j) = affine ? 2 * (1 + volumetric) * (eta - lambda)
                                   : 2 * (eta + volumetric * (eta + (d - 1) * lambda));
   }
-  if (params.kind == VariantKind::Stable) stabiliseVolumetricTractions(bc, restAreas, volumetric, d);
+  const Eigen::MatrixXd restNormals = faceNormals(rest, rest.vertices);
+  if (params.kind == VariantKind::Stable) stabiliseVolumetricTractions(bc, restAreas, volumetric, restNormals, d);
 
-  // Eq. 15: the area-weighted least change of s_j that makes the corotated tractions sum to zero.
+  // Eq. 15: the area-weighted least change of s_j that makes the corotated tractions sum to zero (the stable
+  // variant's global-frame tractions included; they are left as they are).
   if (params.tractionCorrection) {
-    const Eigen::MatrixXd restNormals = faceNormals(rest, rest.vertices);
     Eigen::MatrixXd system = Eigen::MatrixXd::Zero(d, d);
     Eigen::VectorXd imbalance = Eigen::VectorXd::Zero(d);
     std::vector<Eigen::VectorXd> w(m);
@@ -326,6 +340,8 @@ BoundaryConditions computeBoundaryConditions(const Cage& rest, const Eigen::Matr
       w[j] = bc.faceRotations[j] * restNormals.row(j).transpose();
       system += restAreas(j) * w[j] * w[j].transpose();
       imbalance += restAreas(j) * bc.tractionScales(j) * w[j];
+      if (bc.globalScales.size() > 0)
+        imbalance += restAreas(j) * bc.globalScales(j) * bc.global.rotation * restNormals.row(j).transpose();
     }
     const Eigen::VectorXd multiplier = system.ldlt().solve(imbalance);
     for (int j = 0; j < m; ++j) bc.tractionScales(j) -= multiplier.dot(w[j]);

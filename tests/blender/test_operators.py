@@ -12,6 +12,7 @@ consistent state.
 - Baking a range again replaces its keys; a Bake that fails makes none; Live and baked keys never both drive the
   mesh; Unbind removes the baked keys or, when told, keeps them; a Live deformation that fails says why in the panel.
 - A renamed or deleted object leaves no deformer behind in the cache.
+- The variants and choices beyond the paper reach the engine (the affine variant reproduces an affine pose).
 
 Expected positions are closed forms: every method reproduces a translation of the cage, so a cage moved by d moves
 the mesh by d (to 1e-6 cage diameters: Blender stores float32). Each case runs on its own and the failures are
@@ -443,9 +444,52 @@ def phong_tet_level_meshes_any_cage():
     cage.data.update()
 
 
+def variants_and_choices_reach_the_engine():
+    """The panel's Variant, Bulging and Normals (issue 26) reach the engine. The affine variant reproduces an affine
+    pose of the box exactly at every Poisson ratio (a closed form), which the default global variant misses; at nu = 0
+    the stable variant is the local one (its definition), and at nu = 0.45 on a bent pose it differs; bulging and
+    normals each change the bent pose at gamma = 2."""
+    mesh_object, cage = ball(radius=0.6), box()
+    original = local(mesh_object.data)
+    prepare(mesh_object, cage)
+    binding = mesh_object.somicage
+    assert bpy.ops.somicage.bind() == {"FINISHED"}
+    rest = local(cage.data)
+
+    def pose(vertices):
+        cage.data.vertices.foreach_set("co", vertices.astype(np.float32).ravel())
+        cage.data.update()
+        bpy.context.view_layer.update()
+        return shown(mesh_object)
+
+    def setting(**values):
+        for name, value in values.items():
+            setattr(binding, name, value)
+        bpy.context.view_layer.update()
+        return shown(mesh_object)
+
+    A = np.array([[1.2, 0.3, 0.0], [-0.1, 0.8, 0.2], [0.1, 0.0, 1.1]])
+    pose(rest @ A.T)
+    assert np.abs(setting(variant="global", nu=0.3) - original @ A.T).max() / 2 > 1e-3, "global reproduces it too"
+    for nu in (0.0, 0.3, 0.49):
+        check_close(f"affine variant, an affine pose, nu {nu}", setting(variant="affine", nu=nu), original @ A.T)
+    bent = rest.copy()  # not affine on the box's corners (x y and y z are not)
+    bent[:, 2] += 0.3 * rest[:, 0] * rest[:, 1]
+    bent[:, 0] += 0.2 * rest[:, 1] * rest[:, 2]
+    pose(bent)
+    check_close("stable at nu 0 is local", setting(variant="stable", nu=0.0), setting(variant="local", nu=0.0))
+    assert np.abs(setting(variant="stable", nu=0.45) - setting(variant="local", nu=0.45)).max() > 1e-4
+    base = setting(variant="local", nu=0.3, gamma=2.0)
+    for name, value in (("bulging", "reference"), ("bulging", "swept-volume"), ("normals", "angle")):
+        assert np.abs(setting(**{name: value}) - base).max() > 1e-4, f"{name} {value} changes nothing"
+        setting(bulging="solid-angle", normals="area")
+    pose(rest)
+
+
 CASES = (module_not_found, failed_binds_change_nothing, modifier_cages_bind, warnings_name_the_objects,
          rebake_replaces_keys, live_and_keys_do_not_fight, unbind_keeps_or_removes_keys, failed_bake_changes_nothing,
-         cache_follows_the_object, phong_binds_a_star_shaped_cage, phong_tet_level_meshes_any_cage)
+         cache_follows_the_object, phong_binds_a_star_shaped_cage, phong_tet_level_meshes_any_cage,
+         variants_and_choices_reach_the_engine)
 failed = []
 for case in CASES:
     clear()

@@ -119,6 +119,23 @@ TEST(ParameterSchema, SessionParametersOldAndNew) {
   DeformParams back;
   readParameters(parseJson(object.dump(), "s"), back, "s");
   EXPECT_TRUE(back == p);
+  // Every variant, bulging convention and normal weighting (issue 26) is kept by a session, each with the others
+  // at a non-default value.
+  for (const VariantChoice& variant : variantChoices())
+    for (const ChoiceParameter& choice : choiceParameters())
+      for (int value = 0; value < static_cast<int>(choice.values.size()); ++value) {
+        DeformParams q;
+        setVariant(q, variant.name, "t");
+        for (const ChoiceParameter& other : choiceParameters()) other.set(q, 1);
+        choice.set(q, value);
+        JsonValue written = JsonValue::object();
+        writeParameters(q, written);
+        DeformParams read;
+        readParameters(parseJson(written.dump(), "s"), read, "s");
+        EXPECT_TRUE(read == q) << variant.name << " " << choice.name << " "
+                               << choice.values[static_cast<std::size_t>(value)].name;
+        EXPECT_EQ(variantName(read), variant.name);
+      }
   try {
     readParameters(parseJson(R"({"nu": "x"})", "s.json"), back, "s.json");
     FAIL() << "nu \"x\" read";

@@ -36,14 +36,20 @@ std::vector<DeformParams> parameterGrid() {
     for (Bulging bulging : {Bulging::SolidAngle, Bulging::Reference, Bulging::SweptVolume, Bulging::Polygon})
       for (NormalWeights normals : {NormalWeights::Area, NormalWeights::Angle})
         grid.push_back({blend, 0.3, 1.5, true, false, bulging, normals});
-  // The variants beyond the paper (deformer.h: VariantKind).
-  for (VariantKind kind : {VariantKind::Affine, VariantKind::Stable})
+  // The variants beyond the paper (deformer.h: VariantKind), and with the other choices.
+  for (VariantKind kind : {VariantKind::Affine, VariantKind::Stable}) {
     for (double nu : {0.0, 0.45})
       for (double gamma : {0.0, 1.5}) {
         DeformParams p{kind == VariantKind::Stable ? 1.0 : 0.0, nu, gamma, true};
         p.kind = kind;
         grid.push_back(p);
       }
+    for (Bulging bulging : {Bulging::Reference, Bulging::SweptVolume, Bulging::Polygon}) {
+      DeformParams p{0, 0.3, 1.5, true, false, bulging, NormalWeights::Angle};
+      p.kind = kind;
+      grid.push_back(p);
+    }
+  }
   return grid;
 }
 

@@ -11,6 +11,7 @@
 #include "base/errors.h"
 #include "base/json.h"
 #include "core/constant_method.h"
+#include "deform/deform_choices.h"
 #include "editor_options.h"
 #include "engine/session.h"
 #include "headless_imgui.h"
@@ -118,6 +119,21 @@ TEST(EditorParameterSchema, ARegisteredParameterGetsItsWidgetInThePanel) {
   widgets = parameterWidgets(state, 320, width);
   EXPECT_FALSE(find("blend")->enabled) << "blend applies to the paper's variant only";
   EXPECT_FALSE(find("corotational")->enabled) << "BEM's alone";
+
+  // gamma's tooltip names the bulging convention in force (issue 26): the first "(bulging: " in it is the active one.
+  state.document.method = methods::somigliana();
+  for (const ChoiceParameter& choice : choiceParameters()) {
+    if (std::string(choice.name) != "bulging") continue;
+    for (int value = 0; value < static_cast<int>(choice.values.size()); ++value) {
+      choice.set(state.document.params, value);
+      widgets = parameterWidgets(state, 320, width);
+      const std::string tip = find("gamma")->tooltip;
+      const std::string named = std::string("(bulging: ") + choice.values[static_cast<std::size_t>(value)].name + ")";
+      EXPECT_NE(tip.find(named), std::string::npos) << named << " in " << tip;
+      EXPECT_EQ(tip.find("(bulging: "), tip.find(named)) << named << " first in " << tip;
+    }
+  }
+  state.document.params = {};
 
   // A real frame: the panel draws the new row's label.
   ImGuiContext* context = createHeadlessImGui(800, 600);

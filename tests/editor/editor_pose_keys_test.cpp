@@ -115,6 +115,22 @@ TEST(EditorPoseKeys, SessionsKeepPosesAndKeysAndVersion1Loads) {
   EXPECT_TRUE(old.timeline.keys.empty());
 }
 
+// A session whose range is 1..48 opens with the frame cursor at 1 (before, it stayed at whatever frame the editor
+// was on, 0 after a start: the timeline read "frame 0" outside the session's range).
+TEST(EditorPoseKeys, ASessionOpensWithTheFrameCursorAtTheStartOfItsRange) {
+  AppState state;
+  loadDemo(state);
+  keyCurrentPose(state);
+  Session session = makeSession(state);
+  session.timeline.firstFrame = 1;
+  session.timeline.lastFrame = 48;
+  state.animation.frame = 30;
+  state.animation.playing = true;
+  applySession(state, session);
+  EXPECT_EQ(state.animation.frame, 1.0);
+  EXPECT_FALSE(state.animation.playing);
+}
+
 // Issue 24, row 11: Reset pose, then another frame. The timeline's cage replaces the unkeyed reset pose, as in
 // Blender, but as an undo step that says so: Ctrl+Z gives the reset pose back (before, the frame change recorded
 // nothing and undo removed the Reset pose itself). Scrubbing over the timeline's own cages records nothing.

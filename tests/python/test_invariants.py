@@ -8,12 +8,19 @@ from conftest import random_rotation
 
 DEFORM_SETTINGS = [dict(), dict(variant="local"), dict(nu=0.3, gamma=1.0, variant="local"), dict(nu=-0.5, blend=0.4),
                    dict(nu=float("inf"), traction_fix=False)]
+# The options beyond the paper (issue 26), for the methods that read them: each variant, bulging convention and
+# normal weighting at least once, at a high nu where the stable variant acts.
+CHOICE_SETTINGS = [dict(variant="affine", nu=0.3, gamma=1.0, bulging="reference"),
+                   dict(variant="stable", nu=0.45, gamma=1.0, normals="angle", bulging="swept-volume"),
+                   dict(variant="local", gamma=1.0, bulging="polygon", normals="angle")]
 
 
 def settings_for(method):
     """The settings a method accepts: Phong refuses nu = +-inf (its Steiner vertices' elastic energy is indefinite
-    there; tests/core/phong_method_test.cpp checks the refusal)."""
-    return [s for s in DEFORM_SETTINGS if method != "phong" or abs(s.get("nu", 0.0)) != float("inf")]
+    there; tests/core/phong_method_test.cpp checks the refusal). CHOICE_SETTINGS go to the methods that read them."""
+    reads = next(m["parameters"] for m in somicage.method_info() if m["name"] == method)
+    return ([s for s in DEFORM_SETTINGS if method != "phong" or abs(s.get("nu", 0.0)) != float("inf")] +
+            [s for s in CHOICE_SETTINGS if all(keyword in reads for keyword in s)])
 
 
 def diameter(vertices):
@@ -89,3 +96,21 @@ def test_bem_reproduces_affine_cage_motions(shape, corotational, request):
         moved = deformer.deform(cage.vertices @ linear.T + shift, nu=nu, corotational=corotational)
         error = np.abs(moved - (points @ linear.T + shift)).max() / diameter(cage.vertices)
         assert error <= 1e-9, f"nu {nu}: affine map reproduced to {error:.2e} diameters"
+
+
+@pytest.mark.parametrize("shape", ["cube", "star"])
+def test_affine_variant_reproduces_affine_poses(shape, request):
+    """variant="affine" (issue 26): the tractions of the best-fit affine map make the Somigliana identity reproduce
+    any affine pose x -> A x + b, for every nu (the global variant, fitting a similarity, does not)."""
+    cage = request.getfixturevalue(f"{shape}_cage")
+    points = request.getfixturevalue(f"{shape}_points")
+    d = cage.dim
+    linear = np.eye(d) + np.random.RandomState(4).uniform(-0.3, 0.3, (d, d))
+    shift = np.array([0.2, -0.4, 0.1][:d])
+    posed, expected = cage.vertices @ linear.T + shift, points @ linear.T + shift
+    deformer = somicage.Deformer(cage, points)
+    for nu in [-0.5, 0.0, 0.3, 0.49, float("inf")]:
+        error = np.abs(deformer.deform(posed, nu=nu, variant="affine") - expected).max() / diameter(posed)
+        assert error <= 1e-9, f"nu {nu}: affine pose reproduced to {error:.2e} diameters"
+    error = np.abs(deformer.deform(posed, nu=0.3) - expected).max() / diameter(posed)
+    assert error > 1e-4, f"the global variant reproduces the pose too ({error:.2e}): the case tests nothing"

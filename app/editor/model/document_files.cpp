@@ -36,6 +36,9 @@ Session makeSession(const AppState& state) {
 void applySession(AppState& state, const Session& s, PendingLoad load) {
   state.animation.poses = s.poses;
   state.animation.timeline = s.timeline;
+  // The frame cursor starts at the session's range, as Blender's at its scene's start (the session keeps no cursor).
+  state.animation.playing = false;
+  state.animation.frame = s.timeline.firstFrame;
   if (!s.poses.poses().empty() || !s.timeline.keys.empty()) state.animation.showPanels = true;
   state.document.method = s.method;
   state.view.methodOptions = s.methodOptions;
