@@ -11,11 +11,11 @@
 #include <array>
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <string>
 
 #include "coordinates/bem_layer_integrals.h"
 #include "coordinates/somigliana_coordinates.h"
+#include "recorded_number.h"
 #include "test_models.h"
 #include "test_shapes.h"
 
@@ -60,11 +60,7 @@ double worstDifference(const Cage& cage, const Eigen::MatrixXd& points, Integrat
   return worst;
 }
 
-std::string scientific(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
+using test::scientific;
 
 // The closed form and the dual numbers are two derivations: at 0.1 from the faces they agree to 1e-12 of each entry
 // (measured 3.6e-14), but an entry that is a small sum of the near face's large terms (which grow like delta^-2 for

@@ -6,22 +6,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "base/simd_pack.h"
 #include "coordinates/somigliana_coordinates.h"
+#include "recorded_number.h"
 #include "test_models.h"
 #include "test_shapes.h"
 
 namespace somicage {
 namespace {
 
-std::string scientific(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
+using test::scientific;
 
 // The largest |packs - scalar| / max(1, |scalar|) over every term and winding number.
 double worstDifference(const Cage& cage, const Eigen::MatrixXd& points) {

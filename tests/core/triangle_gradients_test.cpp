@@ -11,12 +11,12 @@
 #include <array>
 #include <cmath>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "base/dual_number.h"
 #include "geometry/triangle_integrals.h"
+#include "recorded_number.h"
 
 namespace somicage {
 namespace {
@@ -80,11 +80,7 @@ double worstRelative(const Families& got, const Families& want) {
   return worst;
 }
 
-std::string scientific(double x) {
-  std::ostringstream out;
-  out << x;
-  return out.str();
-}
+using test::scientific;
 
 struct Triangle {
   Vec3 p[3];
