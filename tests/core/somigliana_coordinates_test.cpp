@@ -16,7 +16,6 @@ namespace somicage {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 double traction(double nu, int d) { return std::isinf(nu) ? 2.0 - d : 2 * (1 + d * nu / (1 - 2 * nu)); }  // c, Eq. 6
 
