@@ -1,0 +1,67 @@
+#include "deform/fold_check.h"
+
+#include <cmath>
+#include <vector>
+
+#include "geometry/cage_proximity.h"
+
+namespace somicage {
+
+Eigen::MatrixXd foldCheckSamples(const Cage& restCage) {
+  const int d = restCage.dim();
+  const Eigen::VectorXd lo = restCage.vertices.colwise().minCoeff(), hi = restCage.vertices.colwise().maxCoeff();
+  const double measure = std::abs(signedMeasure(restCage.vertices, restCage.faces));
+  const double h = std::pow(measure / kFoldCheckCells, 1.0 / d);
+  Eigen::VectorXi counts(d);
+  for (int a = 0; a < d; ++a) counts(a) = std::max(1, static_cast<int>(std::ceil((hi(a) - lo(a)) / h)));
+  const CageProximity proximity(restCage);
+  std::vector<Eigen::VectorXd> inside;
+  Eigen::VectorXi index = Eigen::VectorXi::Zero(d);
+  for (;;) {
+    const Eigen::VectorXd x = lo + h * (index.cast<double>().array() + 0.5).matrix();
+    const CageProximity::Closest c = proximity.closest(x);
+    // The outward pseudo-normal at the closest point tells inside from outside (Baerentzen & Aanaes 2005).
+    if ((x - c.point).dot(c.normal) < 0 && c.distance >= 0.5 * h) inside.push_back(x);
+    int a = 0;
+    while (a < d && ++index(a) == counts(a)) index(a++) = 0;
+    if (a == d) break;
+  }
+  Eigen::MatrixXd samples(static_cast<int>(inside.size()), d);
+  for (std::size_t p = 0; p < inside.size(); ++p) samples.row(static_cast<int>(p)) = inside[p].transpose();
+  return samples;
+}
+
+namespace {
+
+bool passes(const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1, double s, double minDet) {
+  const int d = J0.cols() == 9 ? 3 : 2;  // row-major d by d
+  for (int p = 0; p < J0.rows(); ++p) {
+    if (std::isnan(J0(p, 0))) continue;
+    const Eigen::RowVectorXd J = J0.row(p) + s * (J1.row(p) - J0.row(p));
+    const double det = d == 2 ? J(0) * J(3) - J(1) * J(2)
+                              : J(0) * (J(4) * J(8) - J(5) * J(7)) - J(1) * (J(3) * J(8) - J(5) * J(6)) +
+                                    J(2) * (J(3) * J(7) - J(4) * J(6));
+    if (!(det > minDet)) return false;  // a NaN fails too
+  }
+  return true;
+}
+
+}  // namespace
+
+double leastFoldFreeBlend(const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1, double minDet) {
+  constexpr int kSteps = 32, kBisections = 10;
+  if (passes(J0, J1, 0, minDet)) return 0;
+  for (int k = 1; k <= kSteps; ++k) {
+    double pass = static_cast<double>(k) / kSteps;
+    if (!passes(J0, J1, pass, minDet)) continue;
+    double fail = static_cast<double>(k - 1) / kSteps;
+    for (int i = 0; i < kBisections; ++i) {
+      const double mid = 0.5 * (fail + pass);
+      (passes(J0, J1, mid, minDet) ? pass : fail) = mid;
+    }
+    return pass;
+  }
+  return 1;
+}
+
+}  // namespace somicage
