@@ -23,7 +23,7 @@ SOMICAGE_HD inline void integrateSomiglianaGradientRowPortable(const PortableFac
   using portable_detail::kThird;
   const long vertexColumns = static_cast<long>(numVertices) * kPortableVertexTerms;
   const long mainColumns = vertexColumns + static_cast<long>(numFaces) * kPortableFaceTerms;
-  for (long k = 0; k < 3 * mainColumns; ++k) rows[k] = 0;
+  for (long k = 0; k < 3 * vertexColumns; ++k) rows[k] = 0;  // a face's own four terms are written, not added
   // The affine terms sum M_ab n_c over the faces: their gradients are sums of M3 n_c and U_b n_c, added up here and
   // written out once at the end.
   Scalar M3n[10][3], Un[3][3];
@@ -33,7 +33,11 @@ SOMICAGE_HD inline void integrateSomiglianaGradientRowPortable(const PortableFac
   const long termStride = 3L * numVertices;
   for (int j = 0; j < numFaces; ++j) {
     const PortableFace& face = faces[j];
-    if (face.frame.degenerate) continue;
+    Scalar* f = rows + 3 * (vertexColumns + static_cast<long>(j) * kPortableFaceTerms);
+    if (face.frame.degenerate) {
+      for (int k = 0; k < 3 * kPortableFaceTerms; ++k) f[k] = 0;
+      continue;
+    }
     triangleGradientTensorsPortable(face.frame, tables[j], x, d);
     const double* n = face.frame.n;
     const double n3[3] = {n[0] * kThird, n[1] * kThird, n[2] * kThird};
@@ -58,16 +62,15 @@ SOMICAGE_HD inline void integrateSomiglianaGradientRowPortable(const PortableFac
       }
     }
     // The face terms S and M n: d_i (M n)_a = 3 (M3 n)_ia - U_a n_i - delta_ia U.n.
-    Scalar* f = rows + 3 * (vertexColumns + static_cast<long>(j) * kPortableFaceTerms);
     const Scalar Udotn = d.U[0] * n[0] + d.U[1] * n[1] + d.U[2] * n[2];
     for (int i = 0; i < 3; ++i) {
-      f[i] += d.U[i];
+      f[i] = d.U[i];
       for (int a = 0; a < 3; ++a) {
         const Scalar M3n_ia =
             d.M3[kSymmetric3[i][a][0]] * n[0] + d.M3[kSymmetric3[i][a][1]] * n[1] + d.M3[kSymmetric3[i][a][2]] * n[2];
         Scalar g = 3 * M3n_ia - d.U[a] * n[i];
         if (i == a) g = g - Udotn;
-        f[3 * (1 + a) + i] += g;
+        f[3 * (1 + a) + i] = g;
       }
     }
     for (int s = 0; s < 10; ++s)
