@@ -31,33 +31,30 @@ Eigen::MatrixXd foldCheckSamples(const Cage& restCage) {
   return samples;
 }
 
-namespace {
-
-bool passes(const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1, double s, double minDet) {
-  const int d = J0.cols() == 9 ? 3 : 2;  // row-major d by d
-  for (int p = 0; p < J0.rows(); ++p) {
-    if (std::isnan(J0(p, 0))) continue;
-    const Eigen::RowVectorXd J = J0.row(p) + s * (J1.row(p) - J0.row(p));
-    const double det = d == 2 ? J(0) * J(3) - J(1) * J(2)
-                              : J(0) * (J(4) * J(8) - J(5) * J(7)) - J(1) * (J(3) * J(8) - J(5) * J(6)) +
-                                    J(2) * (J(3) * J(7) - J(4) * J(6));
-    if (!(det > minDet)) return false;  // a NaN fails too
+bool foldFree(const Eigen::MatrixXd& J, double minDet) {
+  const int d = J.cols() == 9 ? 3 : 2;  // row-major d by d
+  for (int p = 0; p < J.rows(); ++p) {
+    if (std::isnan(J(p, 0))) continue;
+    const auto j = J.row(p);
+    const double det = d == 2 ? j(0) * j(3) - j(1) * j(2)
+                              : j(0) * (j(4) * j(8) - j(5) * j(7)) - j(1) * (j(3) * j(8) - j(5) * j(6)) +
+                                    j(2) * (j(3) * j(7) - j(4) * j(6));
+    if (!(det > minDet)) return false;  // a NaN elsewhere in the row fails too
   }
   return true;
 }
 
-}  // namespace
-
 double leastFoldFreeBlend(const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1, double minDet) {
   constexpr int kSteps = 32, kBisections = 10;
-  if (passes(J0, J1, 0, minDet)) return 0;
+  auto passes = [&](double s) { return foldFree(J0 + s * (J1 - J0), minDet); };
+  if (passes(0)) return 0;
   for (int k = 1; k <= kSteps; ++k) {
     double pass = static_cast<double>(k) / kSteps;
-    if (!passes(J0, J1, pass, minDet)) continue;
+    if (!passes(pass)) continue;
     double fail = static_cast<double>(k - 1) / kSteps;
     for (int i = 0; i < kBisections; ++i) {
       const double mid = 0.5 * (fail + pass);
-      (passes(J0, J1, mid, minDet) ? pass : fail) = mid;
+      (passes(mid) ? pass : fail) = mid;
     }
     return pass;
   }

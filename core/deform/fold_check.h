@@ -21,10 +21,14 @@ constexpr double kFoldCheckMargin = 0.2;
 // The samples (#S by d) inside the rest cage, in a fixed order.
 Eigen::MatrixXd foldCheckSamples(const Cage& restCage);
 
-// The least s in [0, 1] with det(J0 + s (J1 - J0)) > minDet at every sample (J0, J1: #S by d*d, row-major per sample
-// as DeformationGradients::evaluate; NaN rows skipped): 0 when J0 passes, else the first of s = 1/32, 2/32, ...
-// that passes, refined by bisection against the one before; 1 when none passes. J is affine in s (the tractions
-// are, and T(x) does not depend on them), so det J along s is a cubic (2D: a quadratic) per sample.
+// Whether det J > minDet at every sample (J: #S by d*d, row-major per sample as DeformationGradients::evaluate;
+// NaN rows, samples without a J of their own, skipped).
+bool foldFree(const Eigen::MatrixXd& J, double minDet);
+
+// The least s in [0, 1] with det(J0 + s (J1 - J0)) > minDet at every sample (J0, J1 as for foldFree): 0 when J0
+// passes, else the first of s = 1/32, 2/32, ... that passes, refined by bisection against the one before; 1 when
+// none passes. J is affine in s (the tractions are, and T(x) does not depend on them), so det J along s is a cubic
+// (2D: a quadratic) per sample.
 double leastFoldFreeBlend(const Eigen::MatrixXd& J0, const Eigen::MatrixXd& J1, double minDet);
 
 }  // namespace somicage

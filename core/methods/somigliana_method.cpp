@@ -212,7 +212,7 @@ class SomiglianaDeformer final : public CageDeformer {
     const double minDet = kFoldCheckMargin * std::pow(bc.global.scale, dim());
     Eigen::MatrixXd positions, J0, J1;
     probe.gradients->evaluate(W0, positions, J0);
-    if (leastFoldFreeBlend(J0, J0, minDet) == 0) return W0;  // local passes: no damping
+    if (foldFree(J0, minDet)) return W0;  // the local variant passes: no damping
     FrameWeights W = weightsFor(bc, posed, params);
     probe.gradients->evaluate(W, positions, J1);
     const double s = leastFoldFreeBlend(J0, J1, minDet);
