@@ -27,7 +27,8 @@ namespace somicage {
 // What the gradients need of a face beyond its frame, once per cage: its derivative tensors rotated to world
 // coordinates (W_ij.. = sum Q_ia Q_jb .. L_ab.., Q = [u v n]) as tables on the tensors' distinct entries, so that a
 // rotation costs 10 N multiply-adds for N local entries (70 for a trace-free 3-tensor) instead of about 140 for the
-// three contractions with Q; the gradients rotate four 3-tensors and three matrices per face.
+// three contractions with Q; the gradients rotate four 3-tensors and three matrices per face. Plain data, made by
+// the caller and shared by every instruction set's copy of the kernels.
 struct PortableGradientFrame {
   double sym3[10][10];       // world entry (kSymmetric3's order) of a symmetric 3-tensor from its 10 local ones
   double traceFree3[10][7];  // of a trace-free one from uuu, uuv, uvv, vvv, uun, uvn, vvn, times -1/3 (B's factor)
