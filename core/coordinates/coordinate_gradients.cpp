@@ -202,14 +202,18 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
 #if SOMICAGE_SIMD_PACKS
 // The three gradient rows of simd::kLanes points at once from the closed-form derivatives
 // (somigliana_gradient_row.h: the three rows interleaved), the whole pack in one dispatched call (cpu_dispatch.h).
-SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces, int numVertices,
-                                                          const simd::Pack x[3], simd::Pack* rows) {
-  integrateSomiglianaGradientRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows);
+SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces,
+                                                          const std::vector<PortableGradientFrame>& tables,
+                                                          int numVertices, const simd::Pack x[3], simd::Pack* rows) {
+  integrateSomiglianaGradientRowPortable(faces.data(), tables.data(), static_cast<int>(faces.size()), numVertices, x,
+                                         rows);
 }
 
 void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                              const ProgressCallback& progress, const GradientRowSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, cageFrames(cage));
+  std::vector<PortableGradientFrame> tables(faces.size());  // the rotation tables, once per cage
+  for (std::size_t j = 0; j < faces.size(); ++j) makeGradientFrame(faces[j].frame, tables[j]);
   const int numPoints = static_cast<int>(points.rows());
   const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   struct Buffers {
@@ -220,7 +224,7 @@ void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, in
       points, cage.numFaces(), threads, progress,
       [columns] { return Buffers{std::vector<simd::Pack>(3 * columns), std::vector<double>(3 * columns)}; },
       [&](Buffers& buffers, int first, const simd::Pack x[3]) {
-        integrateSomiglianaGradientRowPack(faces, cage.numVertices(), x, buffers.packed.data());
+        integrateSomiglianaGradientRowPack(faces, tables, cage.numVertices(), x, buffers.packed.data());
         for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
           const double* rows[3];
           for (std::size_t a = 0; a < 3; ++a) {
