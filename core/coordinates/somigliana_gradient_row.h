@@ -3,10 +3,12 @@
 // integrals, linear in them, so each face's derivatives are added with the rows' own accumulation.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "coordinates/somigliana_row_portable.h"
 #include "geometry/triangle_gradients_kernel.h"
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 
 // Overwrites `rows` with the three rows d(row of x)/dx_a (each numVertices * 10 + numFaces * 4 + 18 numbers)
 // interleaved: entry k of row a at rows[3 * k + a], so that a face's three additions to an entry share a cache line.
@@ -26,4 +28,5 @@ SOMICAGE_HD inline void integrateSomiglianaGradientRowPortable(const PortableFac
   }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

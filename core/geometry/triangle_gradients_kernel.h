@@ -20,9 +20,11 @@
 // (closed-form.md 5.3), and h multiplies every R^-5 term, as in the value kernel (5.2): nothing divides by h.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "geometry/triangle_integrals_kernel.h"
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 
 namespace portable_detail {
 
@@ -206,4 +208,5 @@ SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangl
   }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage
