@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-CHECKER = Path(__file__).with_name("check_isa_symbols.py")
+CHECKER = Path(__file__).resolve().parents[2] / "tools" / "check_isa_symbols.py"
 INLINE = "inline int f(int x) { return x + 1; }"
 USE = "int g(int x) { return f(x); }"
 CLEAN = f"namespace somicage {{ inline namespace isa_x86_64_v3 {{ {INLINE} {USE} }} }}\n"
