@@ -204,6 +204,8 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
 void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                              const ProgressCallback& progress, const GradientRowSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, cageFrames(cage));
+  std::vector<PortableGradientFrame> tables(faces.size());  // the rotation tables, once per cage
+  for (std::size_t j = 0; j < faces.size(); ++j) makeGradientFrame(faces[j].frame, tables[j]);
   const SomiglianaRowKernels& kernels = somiglianaRowKernels();
   const int numPoints = static_cast<int>(points.rows()), lanes = kernels.lanes;
   const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
@@ -215,7 +217,8 @@ void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, in
       points, lanes, cage.numFaces(), threads, progress,
       [&] { return Buffers{makePackBuffer(3 * columns * lanes), std::vector<double>(3 * columns)}; },
       [&](Buffers& buffers, int first, const double* x) {
-        kernels.gradientRows(faces.data(), cage.numFaces(), cage.numVertices(), x, buffers.packed.get());
+        kernels.gradientRows(faces.data(), tables.data(), cage.numFaces(), cage.numVertices(), x,
+                             buffers.packed.get());
         for (int l = 0; l < lanes && first + l < numPoints; ++l) {
           const double* rows[3];
           for (std::size_t a = 0; a < 3; ++a) {

@@ -11,6 +11,7 @@
 
 #include "base/cpu_dispatch.h"
 #include "coordinates/somigliana_row_portable.h"
+#include "geometry/triangle_gradients_kernel.h"
 
 namespace somicage {
 
@@ -21,8 +22,10 @@ struct SomiglianaRowKernels {
   // The rows (numVertices * 10 + numFaces * 4 + 18 entries) and the winding numbers (`lanes` of them).
   void (*rows)(const PortableFace* faces, int numFaces, int numVertices, const double* x, double* rows,
                double* winding);
-  // The three gradient rows, interleaved as integrateSomiglianaGradientRowPortable's (entry k of row a at 3k + a).
-  void (*gradientRows)(const PortableFace* faces, int numFaces, int numVertices, const double* x, double* rows);
+  // The three gradient rows, interleaved as integrateSomiglianaGradientRowPortable's (entry k of row a at 3k + a);
+  // tables[j] = makeGradientFrame(faces[j].frame) (triangle_gradients_kernel.h), made once per cage.
+  void (*gradientRows)(const PortableFace* faces, const PortableGradientFrame* tables, int numFaces, int numVertices,
+                       const double* x, double* rows);
 };
 
 // The copy for `isa`, or nullptr where this build has none or the CPU does not run it (kernelIsaAvailable). Only

@@ -33,11 +33,12 @@ __attribute__((flatten)) void rows(const PortableFace* faces, int numFaces, int 
   for (int l = 0; l < simd::kLanes; ++l) winding[l] = w.v[l];
 }
 
-__attribute__((flatten)) void gradientRows(const PortableFace* faces, int numFaces, int numVertices, const double* x,
-                                           double* rows) {
+__attribute__((flatten)) void gradientRows(const PortableFace* faces, const PortableGradientFrame* tables,
+                                           int numFaces, int numVertices, const double* x, double* rows) {
   simd::Pack p[3];
   loadPoints(x, p);
-  integrateSomiglianaGradientRowPortable(faces, numFaces, numVertices, p, reinterpret_cast<simd::Pack*>(rows));
+  integrateSomiglianaGradientRowPortable(faces, tables, numFaces, numVertices, p,
+                                         reinterpret_cast<simd::Pack*>(rows));
 }
 
 }  // namespace

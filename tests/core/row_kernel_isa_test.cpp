@@ -35,6 +35,8 @@ CopyRows runCopy(const SomiglianaRowKernels& kernels, const Cage& cage, const Ei
     frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
                                        cage.vertices.row(cage.faces(j, 2))));
   const std::vector<PortableFace> faces = portableFaces(cage, frames);
+  std::vector<PortableGradientFrame> tables(faces.size());
+  for (std::size_t j = 0; j < faces.size(); ++j) makeGradientFrame(faces[j].frame, tables[j]);
   const int lanes = kernels.lanes, n = static_cast<int>(points.rows());
   const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   CopyRows out{Eigen::MatrixXd(n, columns), Eigen::MatrixXd(n, 1), {}};
@@ -46,7 +48,7 @@ CopyRows runCopy(const SomiglianaRowKernels& kernels, const Cage& cage, const Ei
     for (int l = 0; l < lanes; ++l)
       for (int a = 0; a < 3; ++a) x[a * lanes + l] = points(std::min(first + l, n - 1), a);
     kernels.rows(faces.data(), cage.numFaces(), cage.numVertices(), x, rows.get(), winding);
-    kernels.gradientRows(faces.data(), cage.numFaces(), cage.numVertices(), x, gradients.get());
+    kernels.gradientRows(faces.data(), tables.data(), cage.numFaces(), cage.numVertices(), x, gradients.get());
     for (int l = 0; l < lanes && first + l < n; ++l) {
       out.winding(first + l, 0) = winding[l];
       for (int k = 0; k < columns; ++k) {
