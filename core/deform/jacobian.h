@@ -32,6 +32,8 @@ class DeformationGradients {
   // point: column a*d + b holds df_a/dx_b; NaN rows where !defined(p)). One pass over C and one over each gradient.
   void evaluate(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& positions,
                 Eigen::MatrixXd& jacobians) const;
+  // The same for frame weights the caller made (the stable variant's fold check: fold_check.h).
+  void evaluate(const FrameWeights& W, Eigen::MatrixXd& positions, Eigen::MatrixXd& jacobians) const;
 
  private:
   const CageDeformer& deformer_;
