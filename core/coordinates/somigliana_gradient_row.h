@@ -5,10 +5,12 @@
 // without writing out the 3 x 46 derivatives of the integrals first.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "coordinates/somigliana_row_portable.h"
 #include "geometry/triangle_gradients_kernel.h"
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 
 // Overwrites `rows` with the three rows d(row of x)/dx_a (each numVertices * 10 + numFaces * 4 + 18 numbers)
 // interleaved: entry k of row a at rows[3 * k + a], so that a face's three additions to an entry share a cache line.
@@ -96,4 +98,5 @@ SOMICAGE_HD inline void integrateSomiglianaGradientRowPortable(const PortableFac
     }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

@@ -20,6 +20,7 @@
 // (closed-form.md 5.3), and h multiplies every R^-5 term, as in the value kernel (5.2): nothing divides by h.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "geometry/triangle_integrals_kernel.h"
 
 namespace somicage {
@@ -34,6 +35,7 @@ struct PortableGradientFrame {
   double traceFree3[10][7];  // of a trace-free one from uuu, uuv, uvv, vvv, uun, uvn, vvn, times -1/3 (B's factor)
   double traceFree2[6][5];   // world entry (kSymmetric2's order) of a trace-free symmetric matrix from uu uv un vv vn
 };
+SOMICAGE_ISA_BEGIN  // the tables above are one type for every copy; what follows is per copy
 
 // A face's derivatives at x (world coordinates), the compact form from which every output's gradient follows
 // (integrateTriangleGradientsPortable below; the Somigliana rows add them directly, somigliana_gradient_row.h):
@@ -253,4 +255,5 @@ SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangl
   }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

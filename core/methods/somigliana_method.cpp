@@ -200,20 +200,21 @@ class SomiglianaDeformer final : public CageDeformer {
   FrameWeights frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params) const override {
     validateDeformParams(params);
     SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == dim(), "posed cage matches the rest cage");
-    const BoundaryConditions bc = computeBoundaryConditions(rest_, posed, params);
-    if (params.kind != VariantKind::Stable || params.nu == 0) return weightsFor(bc, posed, params);
+    if (params.kind != VariantKind::Stable || params.nu == 0)
+      return weightsFor(computeBoundaryConditions(rest_, posed, params), posed, params);
     // The stable variant: the local variant's weights W0 (s = 0) blended toward the fully damped W1 (s = 1) by the
     // least s that passes the fold check (fold_check.h). The tractions, and so W and J, are affine in s.
     DeformParams localParams = params;
     localParams.kind = VariantKind::Blend;
     localParams.blend = 1;
-    const FrameWeights W0 = weightsFor(computeBoundaryConditions(rest_, posed, localParams), posed, localParams);
+    const BoundaryConditions localBc = computeBoundaryConditions(rest_, posed, localParams);
+    const FrameWeights W0 = weightsFor(localBc, posed, localParams);
     const FoldProbe& probe = foldProbe();
-    const double minDet = kFoldCheckMargin * std::pow(bc.global.scale, dim());
+    const double minDet = kFoldCheckMargin * std::pow(localBc.global.scale, dim());
     Eigen::MatrixXd positions, J0, J1;
     probe.gradients->evaluate(W0, positions, J0);
     if (foldFree(J0, minDet)) return W0;  // the local variant passes: no damping
-    FrameWeights W = weightsFor(bc, posed, params);
+    FrameWeights W = weightsFor(computeBoundaryConditions(rest_, posed, params), posed, params);
     probe.gradients->evaluate(W, positions, J1);
     const double s = leastFoldFreeBlend(J0, J1, minDet);
     W.main = W0.main + s * (W.main - W0.main);  // the tails agree: they hold no tractions
