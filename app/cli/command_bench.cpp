@@ -196,6 +196,9 @@ int runBenchCommand(const std::vector<std::string>& args, const FrameDevices& de
   std::vector<std::pair<std::string, double>> deformMs;
   deformMs.emplace_back("cpu_global", timeFrames(*deformer, posed, {0.0, 0.3, 1.0, true}, frames, false));
   deformMs.emplace_back("cpu_local", timeFrames(*deformer, posed, {1.0, 0.3, 1.0, true}, frames, false));
+  DeformParams stable{1.0, 0.3, 1.0, true};  // the fold check's cost: its samples made before the timed frames
+  stable.kind = VariantKind::Stable;
+  deformMs.emplace_back("cpu_stable", timeFrames(*deformer, posed, stable, frames, false));
   // The other devices of this executable (the CPU is timed above, through deform() as the CPU front ends run it).
   std::string deviceNotes;
   for (const FrameDevice& device : devices) {

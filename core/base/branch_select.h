@@ -4,9 +4,11 @@
 // position (triangle_integrals_kernel.h); this keeps one kernel for scalars, duals, CUDA and packs.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "base/portable.h"
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 
 // Two numbers a branch produces; a pack's branchSelect blends both members.
 template <typename Scalar>
@@ -19,4 +21,5 @@ SOMICAGE_HD inline auto branchSelect(bool condition, Then then, Else otherwise) 
   return condition ? then() : otherwise();
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

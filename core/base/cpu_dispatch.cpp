@@ -2,24 +2,51 @@
 
 namespace somicage {
 
-#if SOMICAGE_DISPATCH_CLONES
-namespace {
-
-// a * b + c with a b = 1 - 2^-60 and c = -1 (CMake compiles this file with -ffp-contract=fast): a fused multiply-add
-// keeps the -2^-60, a rounded product (1) loses it. Only the x86-64-v3 copy has FMA instructions.
-SOMICAGE_DISPATCH double multiplyAdd(double a, double b, double c) { return a * b + c; }
-
-}  // namespace
+// SOMICAGE_HAS_X86_64_V3 / _V4: the build compiled the per-ISA kernels for that level (core/CMakeLists.txt).
+bool kernelIsaAvailable(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::baseline:
+      return true;
+    case KernelIsa::x86_64_v3:
+#ifdef SOMICAGE_HAS_X86_64_V3
+      return __builtin_cpu_supports("x86-64-v3");  // the feature set of GCC's -march=x86-64-v3
+#else
+      return false;
 #endif
+    case KernelIsa::x86_64_v4:
+#ifdef SOMICAGE_HAS_X86_64_V4
+      return __builtin_cpu_supports("x86-64-v4");
+#else
+      return false;
+#endif
+  }
+  return false;
+}
+
+KernelIsa selectedKernelIsa() {
+  static const KernelIsa isa = kernelIsaAvailable(KernelIsa::x86_64_v4)   ? KernelIsa::x86_64_v4
+                               : kernelIsaAvailable(KernelIsa::x86_64_v3) ? KernelIsa::x86_64_v3
+                                                                          : KernelIsa::baseline;
+  return isa;
+}
+
+const char* kernelIsaName(KernelIsa isa) {
+  switch (isa) {
+    case KernelIsa::x86_64_v3:
+      return "x86-64-v3";
+    case KernelIsa::x86_64_v4:
+      return "x86-64-v4";
+    case KernelIsa::baseline:
+      break;
+  }
+  return "baseline";
+}
 
 const char* dispatchedKernelTarget() {
-#if SOMICAGE_DISPATCH_CLONES
-  volatile double a = 1 + 0x1p-30, b = 1 - 0x1p-30, c = -1;  // volatile: nothing to fold at compile time
-  return multiplyAdd(a, b, c) != 0 ? "x86-64-v3" : "baseline";
-#elif defined(__AVX2__) && defined(__FMA__)
+#if defined(__AVX2__) && defined(__FMA__)
   return "native";
 #else
-  return "baseline";
+  return kernelIsaName(selectedKernelIsa());
 #endif
 }
 

@@ -46,23 +46,37 @@ void forEachPointInBlocks(int numPoints, int facesPerPoint, int threads, const P
   progress(1.0);
 }
 
+// forEachPointInBlocks over groups of `lanes` points: perGroup(state, first, x) with x[a * lanes + l] the coordinate a
+// of point first + l, the last group repeating the last point (its extra lanes are the caller's to drop:
+// first + l >= numPoints). Points is an Eigen matrix (#P by 3); lanes at most kMaxGroupLanes.
+constexpr int kMaxGroupLanes = 8;
+template <typename Points, typename MakeState, typename PerGroup>
+void forEachPointGroup(const Points& points, int lanes, int facesPerPoint, int threads,
+                       const ProgressCallback& progress, MakeState makeState, PerGroup perGroup) {
+  const int numPoints = static_cast<int>(points.rows());
+  forEachPointInBlocks((numPoints + lanes - 1) / lanes, facesPerPoint * lanes, threads, progress, makeState,
+                       [&](auto& state, int group) {
+                         const int first = group * lanes;
+                         double x[3 * kMaxGroupLanes];
+                         for (int l = 0; l < lanes; ++l)
+                           for (int a = 0; a < 3; ++a) x[a * lanes + l] = points(std::min(first + l, numPoints - 1), a);
+                         perGroup(state, first, static_cast<const double*>(x));
+                       });
+}
+
 #if SOMICAGE_SIMD_PACKS
-// forEachPointInBlocks over packs of simd::kLanes points (simd_pack.h): perPack(state, first, x) with x[a] the
-// coordinate a of points first .. first + kLanes - 1, the last pack repeating the last point (its extra lanes are
-// the caller's to drop: first + l >= numPoints). Points is an Eigen matrix (#P by 3).
+// forEachPointGroup over packs of simd::kLanes points (simd_pack.h): perPack(state, first, x) with x[a] the
+// coordinate a of the pack's points.
 template <typename Points, typename MakeState, typename PerPack>
 void forEachPointPack(const Points& points, int facesPerPoint, int threads, const ProgressCallback& progress,
                       MakeState makeState, PerPack perPack) {
-  constexpr int lanes = simd::kLanes;
-  const int numPoints = static_cast<int>(points.rows());
-  forEachPointInBlocks((numPoints + lanes - 1) / lanes, facesPerPoint * lanes, threads, progress, makeState,
-                       [&](auto& state, int pack) {
-                         const int first = pack * lanes;
-                         simd::Pack x[3];
-                         for (int l = 0; l < lanes; ++l)
-                           for (int a = 0; a < 3; ++a) x[a].v[l] = points(std::min(first + l, numPoints - 1), a);
-                         perPack(state, first, x);
-                       });
+  forEachPointGroup(points, simd::kLanes, facesPerPoint, threads, progress, makeState,
+                    [&](auto& state, int first, const double* coordinates) {
+                      simd::Pack x[3];
+                      for (int a = 0; a < 3; ++a)
+                        for (int l = 0; l < simd::kLanes; ++l) x[a].v[l] = coordinates[a * simd::kLanes + l];
+                      perPack(state, first, x);
+                    });
 }
 #endif
 

@@ -12,11 +12,13 @@
 
 #include <math.h>
 
+#include "base/isa_namespace.h"
 #include "base/simd_pack.h"
 
 #if SOMICAGE_SIMD_PACKS
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 namespace simd {
 
 constexpr long long kSignBit = -0x7fffffffffffffffLL - 1;  // 1 << 63 without a signed shift
@@ -92,6 +94,7 @@ inline Pack atan2(const Pack& y, const Pack& x) {
 }
 
 }  // namespace simd
+SOMICAGE_ISA_END
 }  // namespace somicage
 
 #endif  // SOMICAGE_SIMD_PACKS

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "base/branch_select.h"
+#include "base/isa_namespace.h"
 
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__CUDACC__)
 #define SOMICAGE_SIMD_PACKS 1
@@ -20,9 +21,16 @@
 #if SOMICAGE_SIMD_PACKS
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 namespace simd {
 
+// Four lanes (one AVX2 register, two SSE2 ones); the x86-64-v4 copy of the row kernels is compiled with eight
+// (-DSOMICAGE_SIMD_LANES=8: one AVX-512 register).
+#ifdef SOMICAGE_SIMD_LANES
+constexpr int kLanes = SOMICAGE_SIMD_LANES;
+#else
 constexpr int kLanes = 4;
+#endif
 
 typedef double VecD __attribute__((vector_size(8 * kLanes)));
 typedef long long VecI __attribute__((vector_size(8 * kLanes)));
@@ -47,7 +55,8 @@ struct Mask {
 struct alignas(8 * kLanes) Pack {
   VecD v;
 
-  Pack(double x = 0) : v{x, x, x, x} {}  // NOLINT: implicit, so constants mix with packs as with doubles
+  // NOLINTNEXTLINE: implicit, so constants mix with packs as with doubles; every lane x (x - 0 keeps a -0)
+  Pack(double x = 0) : v(x - VecD{}) {}
   static Pack of(const VecD& w) {
     Pack p;
     p.v = w;
@@ -89,6 +98,7 @@ inline auto branchSelect(const Mask& m, Then then, Else otherwise) -> decltype(t
 }
 
 }  // namespace simd
+SOMICAGE_ISA_END
 }  // namespace somicage
 
 #endif  // SOMICAGE_SIMD_PACKS

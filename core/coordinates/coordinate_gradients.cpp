@@ -4,13 +4,12 @@
 #include <cmath>
 #include <vector>
 
-#include "base/cpu_dispatch.h"
 #include "base/dual_number.h"
 #include "base/point_blocks.h"
 #include "base/simd_math.h"
 #include "coordinates/bem_layer_integrals.h"
 #include "coordinates/somigliana_coordinates.h"
-#include "coordinates/somigliana_gradient_row.h"
+#include "coordinates/somigliana_row_kernels.h"
 #include "geometry/affine_terms.h"
 #include "geometry/edge_integrals.h"
 #include "geometry/triangle_integrals.h"
@@ -200,33 +199,32 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
 }
 
 #if SOMICAGE_SIMD_PACKS
-// The three gradient rows of simd::kLanes points at once from the closed-form derivatives
-// (somigliana_gradient_row.h: the three rows interleaved), the whole pack in one dispatched call (cpu_dispatch.h).
-SOMICAGE_DISPATCH void integrateSomiglianaGradientRowPack(const std::vector<PortableFace>& faces, int numVertices,
-                                                          const simd::Pack x[3], simd::Pack* rows) {
-  integrateSomiglianaGradientRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows);
-}
-
+// The three gradient rows of a group of points per call of the row kernel this CPU runs (somigliana_row_kernels.h),
+// from the closed-form derivatives (somigliana_gradient_row.h: the three rows interleaved).
 void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
                              const ProgressCallback& progress, const GradientRowSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, cageFrames(cage));
-  const int numPoints = static_cast<int>(points.rows());
+  std::vector<PortableGradientFrame> tables(faces.size());  // the rotation tables, once per cage
+  for (std::size_t j = 0; j < faces.size(); ++j) makeGradientFrame(faces[j].frame, tables[j]);
+  const SomiglianaRowKernels& kernels = somiglianaRowKernels();
+  const int numPoints = static_cast<int>(points.rows()), lanes = kernels.lanes;
   const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   struct Buffers {
-    std::vector<simd::Pack> packed;  // the 3 gradient rows of the pack, interleaved
-    std::vector<double> split;       // the 3 gradient rows of one lane
+    PackBuffer packed;           // the 3 gradient rows of the group, interleaved, each entry `lanes` wide
+    std::vector<double> split;  // the 3 gradient rows of one lane
   };
-  forEachPointPack(
-      points, cage.numFaces(), threads, progress,
-      [columns] { return Buffers{std::vector<simd::Pack>(3 * columns), std::vector<double>(3 * columns)}; },
-      [&](Buffers& buffers, int first, const simd::Pack x[3]) {
-        integrateSomiglianaGradientRowPack(faces, cage.numVertices(), x, buffers.packed.data());
-        for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
+  forEachPointGroup(
+      points, lanes, cage.numFaces(), threads, progress,
+      [&] { return Buffers{makePackBuffer(3 * columns * lanes), std::vector<double>(3 * columns)}; },
+      [&](Buffers& buffers, int first, const double* x) {
+        kernels.gradientRows(faces.data(), tables.data(), cage.numFaces(), cage.numVertices(), x,
+                             buffers.packed.get());
+        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
           const double* rows[3];
           for (std::size_t a = 0; a < 3; ++a) {
             double* out = buffers.split.data() + a * columns;
-            const simd::Pack* in = buffers.packed.data() + a;
-            for (std::size_t k = 0; k < columns; ++k) out[k] = in[3 * k].v[l];
+            const double* in = buffers.packed.get() + a * lanes + l;
+            for (std::size_t k = 0; k < columns; ++k) out[k] = in[3 * k * lanes];
             rows[a] = out;
           }
           sink(first + l, rows);

@@ -5,10 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "base/cpu_dispatch.h"
 #include "base/errors.h"
 #include "base/point_blocks.h"
-#include "base/simd_math.h"
+#include "coordinates/somigliana_row_kernels.h"
 #include "geometry/affine_terms.h"
 #include "geometry/edge_integrals.h"
 #include "geometry/kelvin_kernels.h"
@@ -149,34 +148,29 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
 }
 
 #if SOMICAGE_SIMD_PACKS
-// The rows of simd::kLanes points at once, one per lane (entry k of the rows at rows[k]): the whole hot work of a
-// pack in one dispatched call (cpu_dispatch.h), the closed form and the accumulation inlined into each copy.
-SOMICAGE_DISPATCH void integrateSomiglianaRowPack(const std::vector<PortableFace>& faces, int numVertices,
-                                                  const simd::Pack x[3], simd::Pack* rows, simd::Pack& winding) {
-  winding = integrateSomiglianaRowPortable(faces.data(), static_cast<int>(faces.size()), numVertices, x, rows, 1);
-}
-
-// The closed-form 3D rows, simd::kLanes points per kernel call (the last pack repeats the last point). Each pack's
-// rows (kLanes times one row: about 30 KB for a 100-face cage) stay in L1 while its faces are summed; the results
-// are the scalar closed form's to a few units of rounding (simd_math.h), independent of the thread count.
+// The closed-form 3D rows, a group of points per call of the row kernel this CPU runs (somigliana_row_kernels.h: 4
+// or 8 lanes, one point each; the last group repeats the last point). Each group's rows (lanes times one row: about
+// 30 KB for a 100-face cage in four lanes) stay in L1 while its faces are summed; the results are the scalar closed
+// form's to a few units of rounding (simd_math.h), independent of the thread count.
 void integrateSomiglianaPacks(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<TriangleFrame>& frames,
                               int threads, const ProgressCallback& progress, const CoordinateRowSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, frames);
-  const int numPoints = static_cast<int>(points.rows());
+  const SomiglianaRowKernels& kernels = somiglianaRowKernels();
+  const int numPoints = static_cast<int>(points.rows()), lanes = kernels.lanes;
   const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
   struct Buffers {
-    std::vector<simd::Pack> packed;
+    PackBuffer packed;  // entry k of lane l at k * lanes + l
     std::vector<double> row;
   };
-  forEachPointPack(
-      points, cage.numFaces(), threads, progress,
-      [columns] { return Buffers{std::vector<simd::Pack>(columns), std::vector<double>(columns)}; },
-      [&](Buffers& buffers, int first, const simd::Pack x[3]) {
-        simd::Pack winding;
-        integrateSomiglianaRowPack(faces, cage.numVertices(), x, buffers.packed.data(), winding);
-        for (int l = 0; l < simd::kLanes && first + l < numPoints; ++l) {
-          for (int k = 0; k < columns; ++k) buffers.row[k] = buffers.packed[k].v[l];
-          sink(first + l, buffers.row.data(), winding.v[l]);
+  forEachPointGroup(
+      points, lanes, cage.numFaces(), threads, progress,
+      [&] { return Buffers{makePackBuffer(static_cast<std::size_t>(columns) * lanes), std::vector<double>(columns)}; },
+      [&](Buffers& buffers, int first, const double* x) {
+        double winding[kMaxGroupLanes];
+        kernels.rows(faces.data(), cage.numFaces(), cage.numVertices(), x, buffers.packed.get(), winding);
+        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
+          for (int k = 0; k < columns; ++k) buffers.row[k] = buffers.packed[static_cast<std::size_t>(k) * lanes + l];
+          sink(first + l, buffers.row.data(), winding[l]);
         }
       });
 }

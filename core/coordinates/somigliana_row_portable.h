@@ -3,6 +3,7 @@
 // same arithmetic as integrateSomiglianaCoordinates' closed-form path. Host and device (SOMICAGE_HD).
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "geometry/affine_terms.h"
 #include "geometry/triangle_integrals_kernel.h"
 
@@ -13,6 +14,7 @@ struct PortableFace {
   PortableTriangleFrame frame;
   int corners[3];
 };
+SOMICAGE_ISA_BEGIN  // the face is one type for every copy; the functions below are per copy
 
 constexpr int kPortableVertexTerms = 10;  // vertexTermCount(3)
 constexpr int kPortableFaceTerms = 4;     // faceTermCount(3)
@@ -69,4 +71,5 @@ SOMICAGE_HD inline Scalar integrateSomiglianaRowPortable(const PortableFace* fac
   return -angleSum / (4 * 3.14159265358979323846);
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

@@ -212,7 +212,9 @@ Eigen::MatrixXd blendRotation(const Eigen::MatrixXd& global, const Eigen::Matrix
 // larger of r = 1 / (1 + v^2), a fixed function of nu, and 1 / (1 + (v delta_j / kStableLimit)^2), delta_j =
 // |q_j R_j n_j - qbar R n_j| / qbar the rest's size next to the uniform pressure: a face whose rest is small (a mild
 // pose) keeps most of it, and v r_j delta_j, what drives the fold-overs, stays at most kStableLimit / 2 wherever
-// the fixed r does not keep more. At nu = 0 (v = 0) r_j = 1: the local variant as it is.
+// the fixed r does not keep more. At nu = 0 (v = 0) r_j = 1: the local variant as it is. These are the fully damped
+// tractions (s = 1); the Somigliana frame blends them with the local variant's by the least s its fold check needs
+// (fold_check.h), so where the local variant does not fold, the stable variant is local.
 void stabiliseVolumetricTractions(BoundaryConditions& bc, const Eigen::VectorXd& restAreas, double volumetric,
                                   const Eigen::MatrixXd& restNormals, int d) {
   const int m = static_cast<int>(bc.tractionScales.size());

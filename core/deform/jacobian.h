@@ -18,7 +18,9 @@ namespace somicage {
 class DeformationGradients {
  public:
   // Integrates the coordinate gradients of `points` (the deformer's points, #P by d): d matrices the size of the
-  // deformer's point rows of C, held until this object is destroyed (estimateGradientBytes).
+  // deformer's point rows of C, held until this object is destroyed (estimateGradientBytes). Front ends take them
+  // from CageDeformer::gradients, which makes them once per deformer and keeps them; this constructor is the
+  // cache's (and `bench`'s, which times it).
   DeformationGradients(const CageDeformer& deformer, const Eigen::MatrixXd& points,
                        const ProgressCallback& progress = noProgress);
 
@@ -32,6 +34,8 @@ class DeformationGradients {
   // point: column a*d + b holds df_a/dx_b; NaN rows where !defined(p)). One pass over C and one over each gradient.
   void evaluate(const Eigen::MatrixXd& posedVertices, const DeformParams& params, Eigen::MatrixXd& positions,
                 Eigen::MatrixXd& jacobians) const;
+  // The same for frame weights the caller made (the stable variant's fold check: fold_check.h).
+  void evaluate(const FrameWeights& W, Eigen::MatrixXd& positions, Eigen::MatrixXd& jacobians) const;
 
  private:
   const CageDeformer& deformer_;

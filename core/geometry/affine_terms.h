@@ -2,9 +2,11 @@
 // the CPU integrator, the CUDA row kernel and the dual-number gradients. Host and device (SOMICAGE_HD).
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "base/portable.h"
 
 namespace somicage {
+SOMICAGE_ISA_BEGIN
 
 // affine[(a * pairs + k) * stride] += (M)_ab n_c + (M)_ac n_b for the k-th pair bc (b != c), (M)_ab n_b for b = c;
 // M symmetric (Dim by Dim, m[a][b]), n the face's unit normal. Pairs in B's order: xx, yy, zz, xy, xz, yz (3D) or
@@ -22,4 +24,5 @@ SOMICAGE_HD inline void addAffineTerms(const Matrix& m, const double* n, Scalar*
     }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

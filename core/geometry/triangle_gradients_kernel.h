@@ -20,9 +20,35 @@
 // (closed-form.md 5.3), and h multiplies every R^-5 term, as in the value kernel (5.2): nothing divides by h.
 #pragma once
 
+#include "base/isa_namespace.h"
 #include "geometry/triangle_integrals_kernel.h"
 
 namespace somicage {
+
+// What the gradients need of a face beyond its frame, once per cage: its derivative tensors rotated to world
+// coordinates (W_ij.. = sum Q_ia Q_jb .. L_ab.., Q = [u v n]) as tables on the tensors' distinct entries, so that a
+// rotation costs 10 N multiply-adds for N local entries (70 for a trace-free 3-tensor) instead of about 140 for the
+// three contractions with Q; the gradients rotate four 3-tensors and three matrices per face. Plain data, made by
+// the caller and shared by every instruction set's copy of the kernels.
+struct PortableGradientFrame {
+  double sym3[10][10];       // world entry (kSymmetric3's order) of a symmetric 3-tensor from its 10 local ones
+  double traceFree3[10][7];  // of a trace-free one from uuu, uuv, uvv, vvv, uun, uvn, vvn, times -1/3 (B's factor)
+  double traceFree2[6][5];   // world entry (kSymmetric2's order) of a trace-free symmetric matrix from uu uv un vv vn
+};
+SOMICAGE_ISA_BEGIN  // the tables above are one type for every copy; what follows is per copy
+
+// A face's derivatives at x (world coordinates), the compact form from which every output's gradient follows
+// (integrateTriangleGradientsPortable below; the Somigliana rows add them directly, somigliana_gradient_row.h):
+// per corner k, grad V_k = H_k, grad D_k = H_k n and d_c B_k,ab = (delta_ab (H_k n)_c - n_c H_k,ab) / 3 + Tb_k,cab;
+// grad S = U and d_c M_ab = 3 M3_cab - delta_ac U_b - delta_bc U_a.
+template <typename Scalar>
+struct PortableTriangleGradientTensors {
+  Scalar H[3][6];    // H_k, the Hessian of F_k = int phi_k/R (kSymmetric2's order)
+  Scalar Hn[3][3];   // H_k n
+  Scalar Tb[3][10];  // -h T_k / 3, T_k the third derivatives of F_k (kSymmetric3's order)
+  Scalar U[3];       // int r/R^3
+  Scalar M3[10];     // int r r r/R^5 (kSymmetric3's order)
+};
 
 namespace portable_detail {
 
@@ -34,50 +60,62 @@ SOMICAGE_HD inline void rotateVector(const double q[3][3], const Scalar l[3], Sc
   for (int i = 0; i < 3; ++i) w[i] = q[i][0] * l[0] + q[i][1] * l[1] + q[i][2] * l[2];
 }
 
-// W_ijk = sum Q_ia Q_jb Q_kc L_abc for a symmetric 3-tensor given by its 10 entries in the order of
-// kSymmetric3 (aaa with a <= b <= c: uuu, uuv, uun, uvv, uvn, unn, vvv, vvn, vnn, nnn); W returned as all 27.
+// The distinct entries of a symmetric 3-tensor, in the order uuu, uuv, uun, uvv, uvn, unn, vvv, vvn, vnn, nnn (abc
+// with a <= b <= c): kSymmetric3[a][b][c] is the place of entry abc, kSymmetric2 that of a symmetric matrix's.
 constexpr int kSymmetric3[3][3][3] = {{{0, 1, 2}, {1, 3, 4}, {2, 4, 5}},
                                       {{1, 3, 4}, {3, 6, 7}, {4, 7, 8}},
                                       {{2, 4, 5}, {4, 7, 8}, {5, 8, 9}}};
 constexpr int kSymmetric2[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};  // (xx, xy, xz, yy, yz, zz)
 
-template <typename Scalar>
-SOMICAGE_HD inline void rotateSymmetric3(const double q[3][3], const Scalar l[10], Scalar w[3][3][3]) {
-  Scalar a[6][3];  // a[ab][k] = sum_c Q_kc L_abc, symmetric in ab
-  for (int p = 0; p < 6; ++p) {
-    const int i = p < 3 ? 0 : (p < 5 ? 1 : 2), j = p < 3 ? p : (p < 5 ? p - 2 : 2);
-    for (int k = 0; k < 3; ++k)
-      a[p][k] = q[k][0] * l[kSymmetric3[i][j][0]] + q[k][1] * l[kSymmetric3[i][j][1]] +
-                q[k][2] * l[kSymmetric3[i][j][2]];
+// w = table l: a tensor's local entries l to its world ones w by one of PortableGradientFrame's tables.
+template <int Rows, int N, typename Scalar>
+SOMICAGE_HD inline void rotateByTable(const double (&table)[Rows][N], const Scalar (&l)[N], Scalar (&w)[Rows]) {
+  for (int r = 0; r < Rows; ++r) {
+    Scalar x = table[r][0] * l[0];
+    for (int c = 1; c < N; ++c) x += table[r][c] * l[c];
+    w[r] = x;
   }
-  Scalar b[3][6];  // b[a][jk] = sum_b Q_jb a[ab][k], symmetric in jk
-  for (int i = 0; i < 3; ++i)
-    for (int p = 0; p < 6; ++p) {
-      const int j = p < 3 ? 0 : (p < 5 ? 1 : 2), k = p < 3 ? p : (p < 5 ? p - 2 : 2);
-      b[i][p] = q[j][0] * a[kSymmetric2[i][0]][k] + q[j][1] * a[kSymmetric2[i][1]][k] +
-                q[j][2] * a[kSymmetric2[i][2]][k];
-    }
-  for (int i = 0; i < 3; ++i)
-    for (int j = i; j < 3; ++j)
-      for (int k = j; k < 3; ++k) {
-        const int p = kSymmetric2[j][k];
-        const Scalar x = q[i][0] * b[0][p] + q[i][1] * b[1][p] + q[i][2] * b[2][p];
-        w[i][j][k] = w[i][k][j] = w[j][i][k] = w[j][k][i] = w[k][i][j] = w[k][j][i] = x;
-      }
 }
 
 }  // namespace portable_detail
 
-// dx[i] = d/dx_i of every output of integrateTrianglePortable(f, x) (world coordinates), except solidAngle (0).
-template <typename Scalar>
-SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangleFrame& f, const Scalar x[3],
-                                                           PortableTriangleIntegralsOf<Scalar> (&dx)[3]) {
+// The tables of a face's frame (a degenerate frame's are never used).
+SOMICAGE_HD inline void makeGradientFrame(const PortableTriangleFrame& f, PortableGradientFrame& g) {
+  using portable_detail::kSymmetric2;
+  using portable_detail::kSymmetric3;
   using portable_detail::kThird;
-  if (f.degenerate) {  // all zeros, as the values are
-    for (auto& d : dx) integrateTriangleLocalPortable(f, Scalar(0), Scalar(0), Scalar(0), d);
-    return;
+  const double q[3][3] = {{f.u[0], f.v[0], f.n[0]}, {f.u[1], f.v[1], f.n[1]}, {f.u[2], f.v[2], f.n[2]}};
+  double sym2[6][6] = {};
+  for (int w = 0; w < 10; ++w)
+    for (int l = 0; l < 10; ++l) g.sym3[w][l] = 0;
+  for (int i = 0; i < 3; ++i)
+    for (int j = i; j < 3; ++j)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          sym2[kSymmetric2[i][j]][kSymmetric2[a][b]] += q[i][a] * q[j][b];
+          for (int k = j; k < 3; ++k)
+            for (int c = 0; c < 3; ++c)
+              g.sym3[kSymmetric3[i][j][k]][kSymmetric3[a][b][c]] += q[i][a] * q[j][b] * q[k][c];
+        }
+  // Trace-free: unn = -(uuu + uvv), vnn = -(uuv + vvv), nnn = -(uun + vvn); nn = -(uu + vv).
+  for (int w = 0; w < 10; ++w) {
+    const double* s = g.sym3[w];
+    const double tf[7] = {s[0] - s[5], s[1] - s[8], s[3] - s[5], s[6] - s[8], s[2] - s[9], s[4], s[7] - s[9]};
+    for (int c = 0; c < 7; ++c) g.traceFree3[w][c] = -kThird * tf[c];
   }
-  for (auto& d : dx) d.solidAngle = 0;
+  for (int w = 0; w < 6; ++w) {
+    const double* s = sym2[w];
+    const double tf[5] = {s[0] - s[5], s[1], s[2], s[3] - s[5], s[4]};
+    for (int c = 0; c < 5; ++c) g.traceFree2[w][c] = tf[c];
+  }
+}
+
+// The derivative tensors of face f (not degenerate; tables = makeGradientFrame(f)) at x.
+template <typename Scalar>
+SOMICAGE_HD inline void triangleGradientTensorsPortable(const PortableTriangleFrame& f,
+                                                        const PortableGradientFrame& tables, const Scalar x[3],
+                                                        PortableTriangleGradientTensors<Scalar>& out) {
+  using portable_detail::kThird;
   const Scalar rel[3] = {x[0] - f.origin[0], x[1] - f.origin[1], x[2] - f.origin[2]};
   const Scalar xu = rel[0] * f.u[0] + rel[1] * f.u[1] + rel[2] * f.u[2];
   const Scalar xv = rel[0] * f.v[0] + rel[1] * f.v[1] + rel[2] * f.v[2];
@@ -86,9 +124,9 @@ SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangl
   triangleMomentsPortable(f, xu, xv, h, mo);
   const Scalar W = mo.W, hh = h * h;
 
-  // Local second derivatives H_k of F_k (xx, xy, xz, yy, yz, zz in u, v, n) and h times the third ones T_k (the
+  // Local second derivatives H_k of F_k (uu, uv, un, vv, vn; nn = -(uu + vv)) and h times the third ones T_k (the
   // in-plane entries uuu, uuv, uvv, vvv, uun, uvn, vvn; the others follow from the traces).
-  Scalar H[3][6], T[3][7];
+  Scalar H[3][5], T[3][7];
   for (int k = 0; k < 3; ++k) {
     const double g0 = f.grad[k][0], g1 = f.grad[k][1];
     H[k][0] = g0 * mo.J31[0], H[k][1] = g0 * mo.J31[1], H[k][3] = g1 * mo.J31[1];  // gamma_a J31_b of (G1)
@@ -149,61 +187,73 @@ SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangl
     }
   }
 
-  // ---- To world coordinates: every derivative direction and tensor index rotated by Q = [u v n] ------------------
+  // ---- To world coordinates: the tables (T's 10 entries from its 7 and the traces T_ann = -(T_auu + T_avv)) -------
   const double q[3][3] = {{f.u[0], f.v[0], f.n[0]}, {f.u[1], f.v[1], f.n[1]}, {f.u[2], f.v[2], f.n[2]}};
-  const double* n = f.n;
   for (int k = 0; k < 3; ++k) {
     const double g0 = f.grad[k][0], g1 = f.grad[k][1];
     Scalar* Tk = T[k];
     Tk[0] += g0 * h * H0[0], Tk[1] += g1 * h * H0[0], Tk[2] += g0 * h * H0[1], Tk[3] += g1 * h * H0[1];
     Tk[4] += g0 * h * H0[2], Tk[5] += g0 * h * H0[3], Tk[6] += g1 * h * H0[3];
-    H[k][5] = -(H[k][0] + H[k][3]);
-    // T's 10 entries (kSymmetric3's order) from the 7 and the traces T_ann = -(T_auu + T_avv).
-    const Scalar unn = -(Tk[0] + Tk[2]), vnn = -(Tk[1] + Tk[3]), nnn = -(Tk[4] + Tk[6]);
-    const Scalar Tl[10] = {Tk[0], Tk[1], Tk[4], Tk[2], Tk[5], unn, Tk[3], Tk[6], vnn, nnn};
-    Scalar Hw[3][3], Tw[3][3][3], DD[3];
-    portable_detail::rotateSymmetric(q, H[k], Hw);
-    portable_detail::rotateSymmetric3(q, Tl, Tw);
-    const Scalar Hn[3] = {H[k][2], H[k][4], H[k][5]};  // grad D_k (local)
-    portable_detail::rotateVector(q, Hn, DD);
-    for (int i = 0; i < 3; ++i) {
-      PortableTriangleIntegralsOf<Scalar>& d = dx[i];
-      d.D[k] = DD[i];
-      for (int a = 0; a < 3; ++a) {
-        d.V[k][a] = Hw[i][a];
-        for (int b = a; b < 3; ++b)
-          d.B[k][a][b] = d.B[k][b][a] = ((a == b ? DD[i] : Scalar(0)) - n[i] * Hw[a][b] - Tw[i][a][b]) * kThird;
-      }
-    }
+    portable_detail::rotateByTable(tables.traceFree2, H[k], out.H[k]);
+    portable_detail::rotateByTable(tables.traceFree3, T[k], out.Tb[k]);
+    const Scalar Hn[3] = {H[k][2], H[k][4], -(H[k][0] + H[k][3])};  // grad D_k (local)
+    portable_detail::rotateVector(q, Hn, out.Hn[k]);
   }
 
   // S and M: U = grad S = int r/R^3 (local (J31, -W)) and the third moment int r r r/R^5.
   const Scalar Ul[3] = {mo.J31[0], mo.J31[1], -W};
-  Scalar Uw[3], Mw[3][3][3];
-  portable_detail::rotateVector(q, Ul, Uw);
-  {
-    Scalar sumQ[4] = {0, 0, 0, 0};  // sum_e m_e,u Q_e,uu; m_e,v Q_e,uu; m_e,u Q_e,vv; m_e,v Q_e,vv
-    for (int e = 0; e < 3; ++e) {
-      sumQ[0] += f.m[e][0] * mo.Q[e][0], sumQ[1] += f.m[e][1] * mo.Q[e][0];
-      sumQ[2] += f.m[e][0] * mo.Q[e][2], sumQ[3] += f.m[e][1] * mo.Q[e][2];
-    }
-    // J53_abc = (delta_ac J31_b + delta_bc J31_a - sum_e m_e,c Q_e,ab) / 3 (the divergence of d_a d_b/R^3).
-    const Scalar Ml[10] = {(2 * mo.J31[0] - sumQ[0]) * kThird, -sumQ[1] * kThird, -mo.hJ52[0], -sumQ[2] * kThird,
-                           -mo.hJ52[1], mo.h2J51[0], (2 * mo.J31[1] - sumQ[3]) * kThird, -mo.hJ52[2],
-                           mo.h2J51[1], -mo.h3J50};
-    portable_detail::rotateSymmetric3(q, Ml, Mw);
+  portable_detail::rotateVector(q, Ul, out.U);
+  Scalar sumQ[4] = {0, 0, 0, 0};  // sum_e m_e,u Q_e,uu; m_e,v Q_e,uu; m_e,u Q_e,vv; m_e,v Q_e,vv
+  for (int e = 0; e < 3; ++e) {
+    sumQ[0] += f.m[e][0] * mo.Q[e][0], sumQ[1] += f.m[e][1] * mo.Q[e][0];
+    sumQ[2] += f.m[e][0] * mo.Q[e][2], sumQ[3] += f.m[e][1] * mo.Q[e][2];
   }
+  // J53_abc = (delta_ac J31_b + delta_bc J31_a - sum_e m_e,c Q_e,ab) / 3 (the divergence of d_a d_b/R^3).
+  const Scalar Ml[10] = {(2 * mo.J31[0] - sumQ[0]) * kThird, -sumQ[1] * kThird, -mo.hJ52[0], -sumQ[2] * kThird,
+                         -mo.hJ52[1], mo.h2J51[0], (2 * mo.J31[1] - sumQ[3]) * kThird, -mo.hJ52[2],
+                         mo.h2J51[1], -mo.h3J50};
+  portable_detail::rotateByTable(tables.sym3, Ml, out.M3);
+}
+
+// dx[i] = d/dx_i of every output of integrateTrianglePortable(f, x) (world coordinates), except solidAngle (0): the
+// tensors above written out (one face on its own, as the tests compare it).
+template <typename Scalar>
+SOMICAGE_HD inline void integrateTriangleGradientsPortable(const PortableTriangleFrame& f, const Scalar x[3],
+                                                           PortableTriangleIntegralsOf<Scalar> (&dx)[3]) {
+  using portable_detail::kSymmetric2;
+  using portable_detail::kSymmetric3;
+  using portable_detail::kThird;
+  if (f.degenerate) {  // all zeros, as the values are
+    for (auto& d : dx) integrateTriangleLocalPortable(f, Scalar(0), Scalar(0), Scalar(0), d);
+    return;
+  }
+  PortableGradientFrame tables;
+  makeGradientFrame(f, tables);
+  PortableTriangleGradientTensors<Scalar> t;
+  triangleGradientTensorsPortable(f, tables, x, t);
+  const double* n = f.n;
   for (int i = 0; i < 3; ++i) {
     PortableTriangleIntegralsOf<Scalar>& d = dx[i];
-    d.S = Uw[i];
+    d.solidAngle = 0;
+    for (int k = 0; k < 3; ++k) {
+      d.D[k] = t.Hn[k][i];
+      for (int a = 0; a < 3; ++a) {
+        d.V[k][a] = t.H[k][kSymmetric2[i][a]];
+        for (int b = a; b < 3; ++b)
+          d.B[k][a][b] = d.B[k][b][a] = t.Tb[k][kSymmetric3[i][a][b]] +
+                                        ((a == b ? t.Hn[k][i] : Scalar(0)) - n[i] * t.H[k][kSymmetric2[a][b]]) * kThird;
+      }
+    }
+    d.S = t.U[i];
     for (int a = 0; a < 3; ++a)
       for (int b = a; b < 3; ++b) {
-        Scalar m = 3 * Mw[i][a][b];
-        if (i == a) m = m - Uw[b];
-        if (i == b) m = m - Uw[a];
+        Scalar m = 3 * t.M3[kSymmetric3[i][a][b]];
+        if (i == a) m = m - t.U[b];
+        if (i == b) m = m - t.U[a];
         d.M[a][b] = d.M[b][a] = m;
       }
   }
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

@@ -9,6 +9,7 @@
 #include <math.h>
 
 #include "base/branch_select.h"
+#include "base/isa_namespace.h"
 #include "base/portable.h"
 
 namespace somicage {
@@ -25,6 +26,7 @@ struct PortableTriangleFrame {
   double mm[3][3], tm[3][3], tt[3][3];  // m m^T, sym(tau m^T), tau tau^T per edge as (xx, xy, yy)
   double mDotGrad[3][3];                // [k][e] = m_e . grad_k
 };
+SOMICAGE_ISA_BEGIN  // the data above is one type for every copy; the functions below are per copy
 
 // TriangleIntegrals with plain arrays; matrices are row-major [i][j], V and B indexed by the corner k first.
 // Scalar is double, or a dual number (dual_number.h) when the gradients with respect to x are wanted as well.
@@ -242,4 +244,5 @@ SOMICAGE_HD inline void integrateTrianglePortable(const PortableTriangleFrame& f
   integrateTriangleLocalPortable(f, xu, xv, h, out);
 }
 
+SOMICAGE_ISA_END
 }  // namespace somicage

@@ -1,6 +1,8 @@
 // The corotational Somigliana deformer (paper Eqs. 10-15) over precomputed Somigliana coordinates, and its method
 // descriptor (method.h).
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <vector>
 
 #include "base/errors.h"
@@ -9,6 +11,8 @@
 #include "deform/boundary_conditions.h"
 #include "deform/deformer.h"
 #include "deform/exterior_points.h"
+#include "deform/fold_check.h"
+#include "deform/jacobian.h"
 #include "methods/method_descriptors.h"
 
 namespace somicage {
@@ -153,8 +157,10 @@ void fillFrameCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const
 
 class SomiglianaDeformer final : public CageDeformer {
  public:
-  SomiglianaDeformer(Cage rest, FrameCoordinates coordinates, PrecomputeDiagnostics diagnostics, int threads)
+  SomiglianaDeformer(Cage rest, FrameCoordinates coordinates, PrecomputeDiagnostics diagnostics, int threads,
+                     IntegrationOptions integration)
       : CageDeformer(std::move(coordinates), threads),
+        integration_(integration),
         rest_(std::move(rest)),
         restNormals_(faceNormals(rest_, rest_.vertices)),
         layout_(somiglianaLayout(rest_.dim(), rest_.numVertices(), rest_.numFaces())) {
@@ -193,9 +199,50 @@ class SomiglianaDeformer final : public CageDeformer {
   // first through S_j's column, the second from the per-point affine terms in the tail (somigliana_coordinates.h).
   FrameWeights frameWeights(const Eigen::MatrixXd& posed, const DeformParams& params) const override {
     validateDeformParams(params);
+    SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == dim(), "posed cage matches the rest cage");
+    if (params.kind != VariantKind::Stable || params.nu == 0)
+      return weightsFor(computeBoundaryConditions(rest_, posed, params), posed, params);
+    // The stable variant: the local variant's weights W0 (s = 0) blended toward the fully damped W1 (s = 1) by the
+    // least s that passes the fold check (fold_check.h). The tractions, and so W and J, are affine in s.
+    DeformParams localParams = params;
+    localParams.kind = VariantKind::Blend;
+    localParams.blend = 1;
+    const BoundaryConditions localBc = computeBoundaryConditions(rest_, posed, localParams);
+    const FrameWeights W0 = weightsFor(localBc, posed, localParams);
+    const FoldProbe& probe = foldProbe();
+    const double minDet = kFoldCheckMargin * std::pow(localBc.global.scale, dim());
+    Eigen::MatrixXd positions, J0, J1;
+    probe.gradients->evaluate(W0, positions, J0);
+    if (foldFree(J0, minDet)) return W0;  // the local variant passes: no damping
+    FrameWeights W = weightsFor(computeBoundaryConditions(rest_, posed, params), posed, params);
+    probe.gradients->evaluate(W, positions, J1);
+    const double s = leastFoldFreeBlend(J0, J1, minDet);
+    W.main = W0.main + s * (W.main - W0.main);  // the tails agree: they hold no tractions
+    return W;
+  }
+
+ private:
+  // The fold check's samples inside the rest cage, with their coordinates and coordinate gradients: made at the
+  // first stable frame with nu != 0 (a few hundred points; other variants never pay for them).
+  struct FoldProbe {
+    std::unique_ptr<CageDeformer> deformer;
+    std::unique_ptr<DeformationGradients> gradients;
+  };
+  const FoldProbe& foldProbe() const {
+    std::call_once(foldProbeMade_, [this] {
+      const Eigen::MatrixXd samples = foldCheckSamples(rest_);
+      PrecomputeOptions options;
+      options.integration = integration_;
+      options.threads = threads_;
+      foldProbe_.deformer = methods::somigliana().precompute(rest_, samples, options, noProgress);
+      foldProbe_.gradients = std::make_unique<DeformationGradients>(*foldProbe_.deformer, samples);
+    });
+    return foldProbe_;
+  }
+
+  FrameWeights weightsFor(const BoundaryConditions& bc, const Eigen::MatrixXd& posed,
+                          const DeformParams& params) const {
     const int d = dim(), terms = vertexTermCount(d);
-    SOMICAGE_ASSERT(posed.rows() == rest_.numVertices() && posed.cols() == d, "posed cage matches the rest cage");
-    const BoundaryConditions bc = computeBoundaryConditions(rest_, posed, params);
     const std::vector<Eigen::MatrixXd> basis = vertexTermBasis(d, params.nu);
     const bool affine = params.kind == VariantKind::Affine;
     // Every R_i = R: T(x) comes from the per-point sums in the tail.
@@ -265,7 +312,9 @@ class SomiglianaDeformer final : public CageDeformer {
     return W;
   }
 
- private:
+  IntegrationOptions integration_;
+  mutable std::once_flag foldProbeMade_;
+  mutable FoldProbe foldProbe_;
   Cage rest_;
   Eigen::MatrixXd restNormals_;
   CoordinateLayout layout_;
@@ -288,7 +337,8 @@ std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const E
   else
     fillFrameCoordinates(restCage, points, integration, integrate, progress, layout, frame.doubles,
                          frame.exteriorBlends, diagnostics);
-  return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads);
+  return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads,
+                                              integration);
 }
 
 // Rows go straight into C; the diagnostics keep a winding number, a residual and a region per point; each thread

@@ -42,6 +42,7 @@ TEST(CliBench, JsonHasExactlyTheDocumentedKeys) {
   EXPECT_GT(json["baseline_speedup"].number, 1.0);  // 192 Gauss points per triangle against one closed form
   ASSERT_EQ(json["deform_ms"].type, Json::Type::Object);
   EXPECT_TRUE(json["deform_ms"].has("cpu_global") && json["deform_ms"].has("cpu_local"));
+  EXPECT_TRUE(json["deform_ms"].has("cpu_stable"));
   EXPECT_TRUE(json["deform_ms"].has("cpu_bem"));
   EXPECT_GT(json["bem_factor_ms"].number, 0);
   EXPECT_TRUE(json["deform_ms"].has("cpu_phong"));

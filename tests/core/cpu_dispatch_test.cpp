@@ -1,7 +1,7 @@
-// The dispatch of the hot kernels (core/base/cpu_dispatch.h): on a CPU with AVX2 and FMA the portable build runs their
-// x86-64-v3 copy. The reported target is observed (a dispatched function fused a multiply-add or not) and checked
-// here against the CPU's own feature flags. That the baseline copy runs, and agrees, on a CPU without them is
-// tests/python/test_portable_build.py (qemu's Nehalem).
+// The run-time choice of the per-ISA kernels (core/base/cpu_dispatch.h): the portable GCC build on x86-64 has
+// baseline, x86-64-v3 and x86-64-v4 copies of the row kernels and runs the highest this CPU supports, checked here
+// against the CPU's own feature flags (the features GCC's -march=x86-64-v3 and v4 add, named one by one). That the
+// baseline copy runs, and agrees, on a CPU without them is tests/python/test_portable_build.py (qemu's Nehalem).
 #include "base/cpu_dispatch.h"
 
 #include <gtest/gtest.h>
@@ -11,18 +11,35 @@
 namespace somicage {
 namespace {
 
-TEST(CpuDispatch, RunsTheAvx2FmaCopyExactlyWhereTheCpuHasIt) {
-#ifdef SOMICAGE_SANITIZE
-  // The sanitizer build compiles -O1, where GCC forms no fused multiply-add, so the observation cannot tell the
-  // copies apart there; the Release build runs this test.
-  GTEST_SKIP() << "the dispatch is observed through a fused multiply-add, which -O1 (sanitizer build) never forms";
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+bool cpuHasX86_64V3() {
+  for (const bool has : {__builtin_cpu_supports("avx"), __builtin_cpu_supports("avx2"), __builtin_cpu_supports("bmi"),
+                         __builtin_cpu_supports("bmi2"), __builtin_cpu_supports("fma"), __builtin_cpu_supports("f16c"),
+                         __builtin_cpu_supports("movbe"), __builtin_cpu_supports("lzcnt"),
+                         __builtin_cpu_supports("xsave")})
+    if (!has) return false;
+  return true;
+}
+
+bool cpuHasX86_64V4() {
+  return cpuHasX86_64V3() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw") &&
+         __builtin_cpu_supports("avx512cd") && __builtin_cpu_supports("avx512dq") &&
+         __builtin_cpu_supports("avx512vl");
+}
 #endif
+
+TEST(CpuDispatch, RunsTheHighestCopyTheCpuHas) {
   const std::string target = dispatchedKernelTarget();
-#if SOMICAGE_DISPATCH_CLONES
-  const bool v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  EXPECT_EQ(target, v3 ? "x86-64-v3" : "baseline");
-#elif defined(__AVX2__) && defined(__FMA__)
-  EXPECT_EQ(target, "native");  // SOMICAGE_NATIVE on this CPU
+  EXPECT_TRUE(kernelIsaAvailable(KernelIsa::baseline));
+#if defined(__AVX2__) && defined(__FMA__)
+  EXPECT_EQ(target, "native");  // SOMICAGE_NATIVE on this CPU: one copy, for it
+#elif defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+  // The copies of this build: x86-64-v3 and v4 wherever GCC builds for x86-64 (core/CMakeLists.txt).
+  const bool v3 = cpuHasX86_64V3(), v4 = cpuHasX86_64V4();
+  EXPECT_EQ(kernelIsaAvailable(KernelIsa::x86_64_v3), v3);
+  EXPECT_EQ(kernelIsaAvailable(KernelIsa::x86_64_v4), v4);
+  EXPECT_EQ(target, v4 ? "x86-64-v4" : v3 ? "x86-64-v3" : "baseline");
+  EXPECT_EQ(target, kernelIsaName(selectedKernelIsa()));
 #else
   EXPECT_EQ(target, "baseline");  // clang, other architectures: one copy
 #endif

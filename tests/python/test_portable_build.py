@@ -1,7 +1,7 @@
 """The portable build on an old CPU (core/base/cpu_dispatch.h, docs/performance.md): `somicage deform` and the module's
 Deformer run FIREHYDRANT under `qemu-x86_64 -cpu Nehalem` (SSE4.2: no AVX, no FMA; qemu stops at any newer
-instruction) and give the same points to 1e-12 as on this machine, where the kernels run their AVX2/FMA copy.
-Kept short for CI: the mesh's first 400 vertices, one thread (qemu is 10-50x slower than the host)."""
+instruction) and give the same points to 1e-12 as on this machine, where the kernels run their AVX2/FMA (and
+AVX-512) copies. Kept short for CI: the mesh's first 400 vertices, one thread (qemu is 10-50x slower than the host)."""
 import os
 import pathlib
 import platform
@@ -52,8 +52,11 @@ def subset(tmp_path_factory):
 
 def host_kernels():
     """What the dispatch should pick here, from the CPU's own flags (Linux's /proc/cpuinfo)."""
-    flags = next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines() if line.startswith("flags"))
-    return "x86-64-v3" if {"avx2", "fma"} <= set(flags.split()) else "baseline"
+    flags = set(next(line for line in pathlib.Path("/proc/cpuinfo").read_text().splitlines()
+                     if line.startswith("flags")).split())
+    if not {"avx2", "fma", "bmi2", "movbe"} <= flags:
+        return "baseline"
+    return "x86-64-v4" if {"avx512f", "avx512bw", "avx512cd", "avx512dq", "avx512vl"} <= flags else "x86-64-v3"
 
 
 def run(command, **kwargs):
