@@ -237,7 +237,11 @@ void defineDeformer(py::module_& module) {
           [](const PythonDeformer& d) -> const Eigen::VectorXd& { return d.engine().diagnostics().unityResidual; },
           "(P,) somigliana: max |sum_i T_i - I| (Eq. 9), meaningful inside the cage; empty for other methods")
       .def_property_readonly("coordinate_bytes",
-                             [](const PythonDeformer& d) { return d.engine().frameCoordinates().bytes(); });
+                             [](const PythonDeformer& d) { return d.engine().frameCoordinates().bytes(); })
+      .def_property_readonly(
+          "gradient_integrations", [](const PythonDeformer& d) { return d.engine().gradientIntegrations(); },
+          "how often analyze integrated the exact J: 1 after any number of calls (kept with the coordinates; "
+          "docs/engine.md, \"The gradients' cache\"), 0 before the first");
 }
 
 }  // namespace

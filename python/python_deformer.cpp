@@ -133,8 +133,8 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
   PythonProgress bridge(progress);
   try {
     py::gil_scoped_release release;
-    const std::lock_guard<std::mutex> lock(gradientsMutex_);
-    if (!gradients_) gradients_ = std::make_unique<DeformationGradients>(*deformer_, points_, bridge.callback());
+    // kept with the coordinates (CageDeformer::gradients): the next call, at any pose or parameters, reuses them
+    const std::shared_ptr<const DeformationGradients> gradients = deformer_->gradients(points_, bridge.callback());
     std::unique_ptr<SeamJumpEvaluator> seamJumps;
     if (seams.value_or(measuresSeamsByDefault(deformer_->method()))) {
       try {
@@ -143,7 +143,7 @@ py::dict PythonDeformer::analyze(const ArrayArgument& posed, const std::vector<s
         throw InputError(keywordOf(e.source()), e.line(), e.problem(), e.hint());
       }
     }
-    a = analyzePose(*deformer_, *gradients_, restCage_, points_, faces, pose, params, nus, "posed", "faces",
+    a = analyzePose(*deformer_, *gradients, restCage_, points_, faces, pose, params, nus, "posed", "faces",
                     bridge.callback(), seamJumps.get());
   } catch (const Cancelled&) {
     bridge.rethrowPythonError();  // Ctrl-C or the callback's own exception, when Python stopped it

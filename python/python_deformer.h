@@ -8,7 +8,6 @@
 
 #include <Eigen/Core>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <tuple>
@@ -65,8 +64,6 @@ class PythonDeformer {
   Cage restCage_;           // for the pose's vertex count and order checks
   Eigen::MatrixXd points_;  // the deformer's points, for analyze
   PrecomputeOptions options_;  // the precompute's (its volume mesh, tets=), for the seams' mesh
-  mutable std::mutex gradientsMutex_;
-  mutable std::unique_ptr<DeformationGradients> gradients_;  // analyze's J, made on its first call
 };
 
 }  // namespace somicage

@@ -120,7 +120,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   PrecomputeOptions options = precomputeOptions(threads);
   applyMethodOptions(args, method, cage, options, log.sink());
   std::unique_ptr<CageDeformer> deformer;
-  std::unique_ptr<DeformationGradients> gradients;
+  std::shared_ptr<const DeformationGradients> gradients;
   {
     ProgressReporter progress = log.progress("precomputing " + methodName(method) + " coordinates");
     deformer = precompute(method, cage, points, options, meshPath, progress.callback(), commandMemoryCheck(log, true));
@@ -128,7 +128,7 @@ int runAnalyzeCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   if (const std::optional<Notice> outside = exteriorPointsNotice(*deformer, meshPath)) log.notice(*outside);
   {
     ProgressReporter progress = log.progress("integrating their gradients");
-    gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
+    gradients = deformer->gradients(points, progress.callback());
   }
   std::unique_ptr<SeamJumpEvaluator> seams;
   if (args.has("--seams") || measuresSeamsByDefault(method)) {

@@ -137,10 +137,10 @@ int runAnimateCommand(const std::vector<std::string>& rawArgs, CommandLog& log) 
   }
   std::vector<Eigen::MatrixXd> normals;  // empty: recomputed per frame
   if (normalsByGradient) {
-    std::unique_ptr<DeformationGradients> gradients;
+    std::shared_ptr<const DeformationGradients> gradients;
     {
       ProgressReporter progress = log.progress("integrating the gradients for the normals");
-      gradients = std::make_unique<DeformationGradients>(*deformer, points, progress.callback());
+      gradients = deformer->gradients(points, progress.callback());
     }
     ProgressReporter progress = log.progress("carrying the normals");
     normals = deformTimelineNormals(*gradients, cage, session.timeline, session.poses, session.params, document, frames,

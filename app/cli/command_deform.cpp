@@ -128,8 +128,8 @@ int runDeformCommand(const std::vector<std::string>& rawArgs, const FrameDevices
   Eigen::MatrixXd normals;  // empty: recomputed by the writer
   if (normalsByGradient) {
     ProgressReporter progress = log.progress("integrating the gradients for the normals");
-    const DeformationGradients gradients(*deformer, points, progress.callback());
-    const TransformedNormals transformed = transformNormals(document, result, gradients, posed, params);
+    const auto gradients = deformer->gradients(points, progress.callback());
+    const TransformedNormals transformed = transformNormals(document, result, *gradients, posed, params);
     normals = transformed.normals;
     if (transformed.recomputed > 0)
       log.note(std::to_string(transformed.recomputed) + " of " + std::to_string(document.normalCount) +

@@ -215,6 +215,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
     std::fflush(stdout);
   }
   pollExport(state);
+  pollPosedCage(state);
   if (!state.files.droppedPaths.empty()) {
     std::vector<std::string> dropped;
     dropped.swap(state.files.droppedPaths);
@@ -542,7 +543,8 @@ int runWithState(const EditorOptions& options, const FrameDevices& devices) {
       while (!state.document.quitRequested) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
-        demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() || state.jobs.measure.busy() ||
+        demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() || state.jobs.posedCage.busy() ||
+                      state.jobs.measure.busy() ||
                       state.jobs.measure.ready() || state.view.quantities.sweepRequested || state.loadingScene() ||
                       state.animation.playing || state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "base/errors.h"
+#include "deform/jacobian.h"
 #include "geometry/medit_io.h"
 
 namespace somicage {
@@ -14,6 +15,39 @@ Eigen::MatrixXd CageDeformer::posedVolumeMesh(const Eigen::MatrixXd&, const Defo
 void CageDeformer::deform(const Eigen::MatrixXd& posedVertices, const DeformParams& params,
                           Eigen::MatrixXd& out) const {
   evaluateFrame(coordinates_, frameWeights(posedVertices, params), dim(), threads_, out);
+}
+
+std::shared_ptr<const DeformationGradients> CageDeformer::gradients(const Eigen::MatrixXd& points,
+                                                                    const ProgressCallback& progress) const {
+  if (std::shared_ptr<const DeformationGradients> kept = keptGradients()) return kept;
+  const std::lock_guard<std::mutex> integrating(gradientCache_.integrating);
+  std::uint64_t releases = 0;
+  {
+    const std::lock_guard<std::mutex> slot(gradientCache_.slot);
+    if (gradientCache_.kept) return gradientCache_.kept;  // integrated by the caller this one waited for
+    releases = gradientCache_.releases;
+  }
+  auto made = std::make_shared<const DeformationGradients>(*this, points, progress);
+  const std::lock_guard<std::mutex> slot(gradientCache_.slot);
+  gradientCache_.integrations += 1;
+  if (gradientCache_.releases == releases) gradientCache_.kept = made;
+  return made;
+}
+
+std::shared_ptr<const DeformationGradients> CageDeformer::keptGradients() const {
+  const std::lock_guard<std::mutex> slot(gradientCache_.slot);
+  return gradientCache_.kept;
+}
+
+void CageDeformer::releaseGradients() const {
+  const std::lock_guard<std::mutex> slot(gradientCache_.slot);
+  gradientCache_.kept.reset();
+  gradientCache_.releases += 1;
+}
+
+int CageDeformer::gradientIntegrations() const {
+  const std::lock_guard<std::mutex> slot(gradientCache_.slot);
+  return gradientCache_.integrations;
 }
 
 std::shared_ptr<const VolumeMesh> volumeMeshFor(const Cage& restCage, const PrecomputeOptions& options,

@@ -4,7 +4,9 @@
 
 #include <Eigen/Core>
 #include <algorithm>
+#include <cstdint>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -18,6 +20,8 @@
 #include "geometry/volume_mesh.h"
 
 namespace somicage {
+
+class DeformationGradients;  // jacobian.h
 
 struct PrecomputeOptions {
   IntegrationOptions integration;  // Somigliana only
@@ -86,6 +90,20 @@ class CageDeformer {
   virtual std::shared_ptr<const VolumeMesh> volumeMesh() const { return nullptr; }
   virtual Eigen::MatrixXd posedVolumeMesh(const Eigen::MatrixXd& posedVertices, const DeformParams& params) const;
 
+  // The exact gradients of J at the deformer's points (jacobian.h), integrated on the first call and kept with C:
+  // they are a function of what C is (the rest cage, the points, the method and its precompute options), never of
+  // the pose or the parameters (nu, gamma, variant, normals and bulging enter only W), so this deformer is their
+  // key and a new cage, points or options mean a new deformer (docs/engine.md, "The gradients' cache"). Every front
+  // end takes them here. A second caller waits for a running integration and shares its result; a cancelled one
+  // (Cancelled) keeps nothing. points: the points the deformer was made for.
+  std::shared_ptr<const DeformationGradients> gradients(const Eigen::MatrixXd& points,
+                                                        const ProgressCallback& progress = noProgress) const;
+  std::shared_ptr<const DeformationGradients> keptGradients() const;  // null while none are kept
+  // Forgets the kept gradients (their memory is freed once no caller holds them); an integration running meanwhile
+  // returns its result without keeping it.
+  void releaseGradients() const;
+  int gradientIntegrations() const;  // how often gradients() integrated (what the cache's tests count)
+
   const FrameCoordinates& frameCoordinates() const { return coordinates_; }
   const PrecomputeDiagnostics& diagnostics() const { return diagnostics_; }
   int numPoints() const { return coordinates_.numPoints(); }
@@ -105,6 +123,16 @@ class CageDeformer {
   FrameCoordinates coordinates_;
   int threads_;
   PrecomputeDiagnostics diagnostics_;
+
+ private:
+  struct GradientCache {
+    std::mutex integrating;  // held through an integration: one at a time
+    std::mutex slot;         // held briefly, for the fields below
+    std::shared_ptr<const DeformationGradients> kept;
+    std::uint64_t releases = 0;
+    int integrations = 0;
+  };
+  mutable GradientCache gradientCache_;
 };
 
 // Precomputes the coordinates of points (#P by d) in the rest cage with the method's descriptor (method.h).

@@ -18,7 +18,9 @@ namespace somicage {
 class DeformationGradients {
  public:
   // Integrates the coordinate gradients of `points` (the deformer's points, #P by d): d matrices the size of the
-  // deformer's point rows of C, held until this object is destroyed (estimateGradientBytes).
+  // deformer's point rows of C, held until this object is destroyed (estimateGradientBytes). Front ends take them
+  // from CageDeformer::gradients, which makes them once per deformer and keeps them; this constructor is the
+  // cache's (and `bench`'s, which times it).
   DeformationGradients(const CageDeformer& deformer, const Eigen::MatrixXd& points,
                        const ProgressCallback& progress = noProgress);
 

@@ -10,6 +10,7 @@
 
 #include "interaction/drop.h"
 #include "io/obj_io.h"
+#include "job_waiting.h"
 #include "model/app_state.h"
 #include "model/scene.h"
 
@@ -123,6 +124,8 @@ TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   posed.col(1).array() += 0.25;
   saveObj(posedPath, posed, cageTopology(scene->restCage));
   openDroppedFiles(state, {posedPath});
+  waitUntilDone(state.jobs.posedCage);  // counted and read on its job, applied by the poll
+  pollPosedCage(state);
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   EXPECT_LT((state.document.pose - posed).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_TRUE(state.document.history.canUndo());
@@ -133,6 +136,8 @@ TEST(EditorDrop, OpenDroppedFilesPosesTheSceneOrExplains) {
   tri.faces = {{0, 1, 2}};
   saveObj(meshPath, Eigen::MatrixXd::Identity(3, 3), tri);
   openDroppedFiles(state, {meshPath});
+  waitUntilDone(state.jobs.posedCage);
+  EXPECT_FALSE(pollPosedCage(state));
   ASSERT_EQ(state.status.errors.size(), 1u);
   EXPECT_NE(state.status.errors.front().find("3 vertices"), std::string::npos) << state.status.errors.front();
   EXPECT_EQ(state.model.scene, scene);

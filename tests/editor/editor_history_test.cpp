@@ -11,6 +11,7 @@
 
 #include "editor_test_support.h"
 #include "io/obj_io.h"
+#include "job_waiting.h"
 #include "methods/method_descriptors.h"
 #include "model/app_state.h"
 #include "model/history.h"
@@ -170,7 +171,11 @@ TEST_F(DocumentCommands, EveryCommandIsOneExactUndoableStep) {
 
   const std::string posedPath = ::testing::TempDir() + "somicage_history_posed.obj";
   saveObj(posedPath, moved(-0.3), cageTopology(state.model.scene->restCage));
-  expectOneUndoableStep("Load posed cage", [&] { ASSERT_TRUE(loadPosedCage(state, posedPath)); });
+  expectOneUndoableStep("Load posed cage", [&] {
+    ASSERT_TRUE(loadPosedCage(state, posedPath));
+    waitUntilDone(state.jobs.posedCage);  // read on its job, applied by the poll
+    ASSERT_TRUE(pollPosedCage(state));
+  });
   EXPECT_LT((state.document.pose - moved(-0.3)).cwiseAbs().maxCoeff(), 1e-9);
   std::filesystem::remove(posedPath);
 }

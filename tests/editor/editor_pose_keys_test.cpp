@@ -11,11 +11,15 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <sstream>
 #include <thread>
 
 #include "animation/animation_export.h"
+#include "animation/normal_transform.h"
 #include "base/errors.h"
+#include "deform/jacobian.h"
 #include "engine/session.h"
+#include "io/mesh_document.h"
 #include "io/obj_io.h"
 #include "job_waiting.h"
 #include "jobs/export_jobs.h"
@@ -399,6 +403,61 @@ TEST_F(EditorAnimationExport, MeshExportRunsOnTheWorkerAndCancelLeavesNothing) {
   ASSERT_TRUE(outcome.has_value());
   EXPECT_TRUE(outcome->cancelled);
   EXPECT_TRUE(leftOver(folder).empty());
+}
+
+// The `vn` records of an exported OBJ.
+Eigen::MatrixXd exportedNormals(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return parseObjDocument(text.str(), path).normals;
+}
+
+// The normals J carries at the editor's current pose, from gradients integrated here (no cache).
+Eigen::MatrixXd normalsFromFreshGradients(const AppState& state) {
+  const CageDeformer& deformer = *state.model.deformers.at(state.document.method);
+  const Scene& scene = *state.model.scene;
+  return transformNormals(*scene.document, deformer.deform(state.document.pose, state.document.params),
+                          DeformationGradients(deformer, scene.meshVertices), state.document.pose,
+                          state.document.params)
+      .normals;
+}
+
+// Issue 27: the exports take the gradients kept with the coordinates (CageDeformer::gradients): two mesh exports and
+// an OBJ sequence at other poses integrate them once, and a new rest cage (a new deformer) integrates its own,
+// whose normals are the new cage's.
+TEST_F(EditorAnimationExport, ExportsReuseTheGradientsKeptWithTheCoordinates) {
+  const std::string out = (folder / "deformed.obj").string();
+  const std::shared_ptr<const CageDeformer> deformer = state.model.deformers.at(state.document.method);
+  EXPECT_EQ(deformer->gradientIntegrations(), 0) << "lazy: no view needed them yet";
+  makeMeshExportJob(state, out)(noProgress);
+  EXPECT_LE((exportedNormals(out) - normalsFromFreshGradients(state)).cwiseAbs().maxCoeff(), 1e-12);
+  Eigen::MatrixXd moved = state.document.pose;
+  moved.row(1) += Eigen::RowVector3d(-0.2, 0.1, 0.3);
+  setPose(state, moved);
+  updateDeformation(state);
+  makeMeshExportJob(state, out)(noProgress);
+  EXPECT_LE((exportedNormals(out) - normalsFromFreshGradients(state)).cwiseAbs().maxCoeff(), 1e-12);
+  makeAnimationExportJob(state, AnimationExportJob::Kind::ObjSequence, (folder / "seq").string())(noProgress);
+  EXPECT_EQ(deformer->gradientIntegrations(), 1) << "two mesh exports and a sequence at other poses";
+
+  const Eigen::MatrixXd before = exportedNormals(out);
+  std::ofstream(folder / "wide.obj")  // the cage stretched along x: another map, other normals
+      << "v -1.6 -1 -1\nv 1.6 -1 -1\nv 1.6 1 -1\nv -1.6 1 -1\nv -1.6 -1 1\nv 1.6 -1 1\nv 1.6 1 1\n"
+         "v -1.6 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  requestSceneFiles(state, (folder / "mesh.obj").string(), (folder / "wide.obj").string());
+  std::optional<PrecomputeOutcome> outcome = waitForOutcome(state.jobs.precompute);
+  ASSERT_TRUE(outcome.has_value());
+  installOutcome(state, std::move(*outcome));
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  const std::shared_ptr<const CageDeformer> wide = state.model.deformers.at(state.document.method);
+  ASSERT_NE(wide, deformer);
+  setPose(state, moved);
+  updateDeformation(state);
+  makeMeshExportJob(state, out)(noProgress);
+  EXPECT_EQ(wide->gradientIntegrations(), 1) << "the new cage's gradients, integrated for it";
+  EXPECT_LE((exportedNormals(out) - normalsFromFreshGradients(state)).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_GT((exportedNormals(out) - before).cwiseAbs().maxCoeff(), 1e-3) << "not the old cage's normals";
 }
 
 }  // namespace

@@ -310,9 +310,13 @@ TEST(EditorQuantities, StaleWorkerResultsAreDroppedAndTheCurrentPoseIsMeasured) 
   }
   EXPECT_GT(largest, 0.05);  // the bend changes volumes: the test sees something
   EXPECT_GT(state.jobs.measure.heldBytes(), 0u);
+  const CageDeformer& deformer = *state.model.deformers.at(methods::somigliana());
+  EXPECT_EQ(deformer.gradientIntegrations(), 1) << "three measurements at two poses: the gradients kept with C";
+  EXPECT_NE(deformer.keptGradients(), nullptr) << "what an export takes without integrating";
   state.view.quantities.show.setAll(0);
   measureViews(state);
   EXPECT_EQ(state.jobs.measure.heldBytes(), 0u);
+  EXPECT_EQ(deformer.keptGradients(), nullptr) << "freed from the deformer too";
   EXPECT_EQ(state.view.quantities.measurement(0), nullptr);
 }
 

@@ -278,6 +278,45 @@ TEST(EditorWorker, APosedCageGivenWithTheSceneIsReadOnTheLoadJob) {
   EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Load posed cage");
 }
 
+// File > Load posed cage and a posed cage dropped on the scene shown are read on their job too
+// (JobsState::posedCage): the file replaced after the job has finished changes nothing; a pose read for a scene that
+// is no longer shown is not applied.
+TEST(EditorWorker, APosedCageLoadedOrDroppedOnTheSceneIsReadOnItsJob) {
+  const test::ScratchFolder dir;
+  AppState state;
+  requestDemo(state, 3);
+  std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
+  ASSERT_TRUE(out.has_value());
+  installOutcome(state, std::move(*out));
+  const Cage& cage = state.model.scene->restCage;
+  const std::string posed = dir / "posed.obj";
+  Eigen::MatrixXd read = cage.vertices, later = cage.vertices;
+  read.row(1) += Eigen::RowVector3d(0.5, 0.25, -0.125);  // exact in binary and in the OBJ's text
+  later.row(1) += Eigen::RowVector3d(-1.0, 0.0, 0.0);
+  for (const bool dropped : {false, true}) {
+    SCOPED_TRACE(dropped ? "dropped" : "File > Load posed cage");
+    resetPose(state);
+    saveObj(posed, read, cageTopology(cage));
+    if (dropped)
+      openDroppedFiles(state, {posed});
+    else
+      ASSERT_TRUE(loadPosedCage(state, posed));
+    EXPECT_EQ(state.document.pose, cage.vertices) << "not read on the UI thread";
+    waitUntilDone(state.jobs.posedCage);
+    saveObj(posed, later, cageTopology(cage));  // what a read on the UI thread would see
+    ASSERT_TRUE(pollPosedCage(state)) << (state.status.errors.empty() ? "" : state.status.errors.front());
+    EXPECT_EQ(state.document.pose, read);
+    EXPECT_EQ(state.document.history.step(state.document.history.cursor()).name, "Load posed cage");
+  }
+  ASSERT_TRUE(loadPosedCage(state, posed));
+  waitUntilDone(state.jobs.posedCage);
+  state.model.scene = std::make_shared<const Scene>(makeDemoScene(3));  // another scene shown meanwhile
+  EXPECT_FALSE(pollPosedCage(state));
+  EXPECT_EQ(state.document.pose, read) << "a pose read for another scene is not applied";
+  ASSERT_EQ(state.status.errors.size(), 1u);
+  EXPECT_NE(state.status.errors[0].find("another scene was opened"), std::string::npos) << state.status.errors[0];
+}
+
 TEST(EditorAppState, RestPoseReproducesTheMeshAndEditsMoveIt) {
   AppState state;
   state.view.compare = true;

@@ -175,3 +175,25 @@ def test_analyze_errors_name_the_keyword(cube_files):
         deformer.analyze(cube_files["cage"].vertices, nu_sweep=(0.0, 0.7, 3))
     with pytest.raises(somicage.InputError, match=r"^posed: the posed cage has 7 vertices"):
         deformer.analyze(cube_files["cage"].vertices[:7])
+
+
+def test_analyze_integrates_the_gradients_once_per_deformer(cube_files):
+    """Issue 27: the exact J's gradients are kept with the coordinates (CageDeformer::gradients): analyze at other
+    poses and parameters reuses them (what it returns is still that pose's: the volume change of the deformed mesh),
+    and a Deformer of other points integrates its own."""
+    deformer = somicage.Deformer(cube_files["cage"], cube_files["points"])
+    faces = cube_files["faces"]
+    assert deformer.gradient_integrations == 0, "lazy: nothing before analyze"
+    rest = signed_volume(cube_files["points"], faces)
+    for pose, settings in ((bent_cube_pose(cube_files["cage"]), {"nu": 0.3}),
+                           (1.1 * cube_files["cage"].vertices, {"nu": 0.45, "gamma": 1.0, "variant": "local"}),
+                           (bent_cube_pose(cube_files["cage"]) + 0.05, {"nu": 0.0, "variant": "affine"})):
+        analysis = deformer.analyze(pose, faces, **settings)
+        deformed = signed_volume(deformer.deform(pose, **settings), faces)
+        assert analysis["volume_change"] == pytest.approx(deformed / rest - 1, abs=1e-12), settings
+        if settings.get("variant") == "local":  # the uniform scale by 1.1: det J = 1.1^3 from the kept gradients
+            assert all(v == pytest.approx(1.1 ** 3, rel=1e-9) for v in analysis["jacobian_det"].values())
+    assert deformer.gradient_integrations == 1, "three poses and parameter sets, one integration"
+    other = somicage.Deformer(cube_files["cage"], 0.9 * cube_files["points"] + 0.05)
+    other.analyze(bent_cube_pose(cube_files["cage"]), faces)
+    assert other.gradient_integrations == 1 and deformer.gradient_integrations == 1

@@ -62,8 +62,9 @@ ExportWorker::Job makeMeshExportJob(AppState& state, const std::string& path) {
       Eigen::MatrixXd normals;  // empty: recomputed by the writer
       std::string note;
       if (deformer && gradientsFit(*deformer, &note)) {
-        const DeformationGradients gradients(*deformer, scene->meshVertices, stageProgress(progress, 0.0, 0.9));
-        const TransformedNormals carried = transformNormals(*scene->document, positions, gradients, pose, params);
+        // the gradients kept with the coordinates (a J view's, an earlier export's), else integrated and kept
+        const auto gradients = deformer->gradients(scene->meshVertices, stageProgress(progress, 0.0, 0.9));
+        const TransformedNormals carried = transformNormals(*scene->document, positions, *gradients, pose, params);
         normals = carried.normals;
         if (carried.recomputed > 0)
           notes.push_back(std::to_string(carried.recomputed) +
@@ -135,8 +136,8 @@ ExportWorker::Job makeAnimationExportJob(AppState& state, AnimationExportJob::Ki
     std::vector<std::string> notes;
     std::string note;
     if (carryNormals && gradientsFit(*deformer, &note)) {
-      const DeformationGradients gradients(*deformer, scene->meshVertices, stageProgress(progress, 0.3, 0.7));
-      normals = deformTimelineNormals(gradients, scene->restCage, timeline, poses, params, document, frames, first,
+      const auto gradients = deformer->gradients(scene->meshVertices, stageProgress(progress, 0.3, 0.7));
+      normals = deformTimelineNormals(*gradients, scene->restCage, timeline, poses, params, document, frames, first,
                                       stageProgress(progress, 0.7, 0.8));
     } else if (!note.empty()) {
       notes.push_back(note);

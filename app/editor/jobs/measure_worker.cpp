@@ -129,21 +129,23 @@ MeasureOutcome MeasureWorker::run(const MeasureRequest& request, Caches& caches,
       if (!wanted) continue;
       const CageDeformer* d = view.deformer.get();
       auto it = caches.gradients.find(d);
-      if (it != caches.gradients.end())
+      if (it != caches.gradients.end()) {
         kept[d] = std::move(it->second);
-      else if (!kept.count(d)) {
+        caches.gradients.erase(it);
+      } else if (!kept.count(d)) {
         kept[d].deformer = view.deformer;
-        missing.push_back(d);
+        kept[d].gradients = view.deformer->keptGradients();  // an export's, kept with the coordinates
+        if (!kept[d].gradients) missing.push_back(d);
       }
     }
+    for (const auto& [d, unused] : caches.gradients) unused.deformer->releaseGradients();
     caches.gradients = std::move(kept);
     if (!missing.empty()) requireGradientMemory(request, missing);
     for (std::size_t k = 0; k < missing.size(); ++k) {
       context.setStage("J setup " + std::to_string(k + 1) + "/" + std::to_string(missing.size()));
       const double n = static_cast<double>(missing.size());
       Caches::Gradients& g = caches.gradients[missing[k]];
-      g.gradients = std::make_unique<DeformationGradients>(*g.deformer, scene.meshVertices,
-                                                           context.span(0.8 * k / n, 0.8 * (k + 1) / n));
+      g.gradients = g.deformer->gradients(scene.meshVertices, context.span(0.8 * k / n, 0.8 * (k + 1) / n));
     }
     const std::vector<std::vector<int>> faces = faceLists(scene.meshTriangles);
     if (sweep) {

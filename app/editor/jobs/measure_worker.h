@@ -102,7 +102,7 @@ class MeasureWorker {
   struct Caches {
     struct Gradients {
       std::shared_ptr<const CageDeformer> deformer;  // keeps the deformer the gradients refer to alive
-      std::unique_ptr<DeformationGradients> gradients;
+      std::shared_ptr<const DeformationGradients> gradients;  // the deformer's (CageDeformer::gradients)
       std::unique_ptr<SeamJumpEvaluator> seams;  // while a view shows the seams (seam_jumps.h)
     };
     std::map<const CageDeformer*, Gradients> gradients;

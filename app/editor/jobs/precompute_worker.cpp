@@ -51,18 +51,6 @@ void requireMemoryFor(const PrecomputeRequest& request, const std::vector<Precom
                 memoryHint(!request.options.floatStorage));
 }
 
-// The posed cage's vertices against the rest cage, or why they cannot be had.
-PosedCageRead readPosedCage(const std::string& path, const Cage& restCage) {
-  PosedCageRead read;
-  read.path = path;
-  try {
-    read.pose = loadPosedVertices(path, restCage);
-  } catch (const std::exception& e) {
-    read.error = e.what();
-  }
-  return read;
-}
-
 // Loads the scene (and its posed cage) if asked, checks the memory, then builds each method's deformer; never throws.
 PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobContext& context,
                              const std::function<void(std::shared_ptr<const Scene>, const PosedCageRead&)>& loaded) {
@@ -107,6 +95,17 @@ PrecomputeOutcome runRequest(PrecomputeRequest request, std::uint64_t id, JobCon
   return out;
 }
 }  // namespace
+
+PosedCageRead readPosedCage(const std::string& path, const Cage& restCage) {
+  PosedCageRead read;
+  read.path = path;
+  try {
+    read.pose = loadPosedVertices(path, restCage);
+  } catch (const std::exception& e) {
+    read.error = e.what();
+  }
+  return read;
+}
 
 std::uint64_t PrecomputeWorker::start(PrecomputeRequest request) {
   const std::uint64_t id = nextId_++;

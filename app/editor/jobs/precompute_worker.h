@@ -51,6 +51,17 @@ struct PosedCageRead {
   std::string error;                    // else why not (the file, what is wrong)
 };
 
+// The posed cage's vertices in the file at path against the rest cage, or why they cannot be had. Read on a job only:
+// the precompute's (a posed cage given with the scene) or JobsState::posedCage (one loaded or dropped on the scene
+// shown); the UI thread reads no file.
+PosedCageRead readPosedCage(const std::string& path, const Cage& restCage);
+
+// A posed cage read on JobsState::posedCage for the scene shown when it was asked for (document_files.cpp).
+struct PosedCageLoad {
+  std::shared_ptr<const Scene> scene;  // the pose applies to this scene only
+  PosedCageRead read;
+};
+
 struct PrecomputeOutcome {
   std::uint64_t id = 0;                // as returned by start()
   std::shared_ptr<const Scene> scene;  // the scene the deformers belong to (null if loading failed)

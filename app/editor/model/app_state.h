@@ -23,6 +23,7 @@
 #include "interaction/camera.h"
 #include "interaction/element_pick.h"
 #include "interaction/transform.h"
+#include "jobs/background_job.h"
 #include "jobs/cage_maker.h"
 #include "jobs/export_worker.h"
 #include "jobs/measure_worker.h"
@@ -148,6 +149,7 @@ struct JobsState {
   CageMaker cageMaker;          // File > Make cage... (its dialog and the preview)
   MeasureWorker measure;        // the views' quantities and the nu sweep (measure_worker.h, quantity_overlay.h)
   ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
+  BackgroundJob<PosedCageLoad> posedCage;  // File > Load posed cage, a dropped posed cage: read here, never on the UI
   std::optional<PendingLoad> load;
 };
 
@@ -283,7 +285,10 @@ Session makeSession(const AppState& state);
 void applySession(AppState& state, const Session& session, PendingLoad load = {});
 // Each returns true on success. They write where they are told: the dialogs check the paths (file_dialog.h).
 bool savePosedCage(AppState& state, const std::string& path);
-bool loadPosedCage(AppState& state, const std::string& path);  // committed: "Load posed cage"
+// Starts reading the posed cage on JobsState::posedCage (false without a scene); pollPosedCage applies it when it
+// arrives, as the edit "Load posed cage", if its scene is still shown (else, or when it cannot be read, an error).
+bool loadPosedCage(AppState& state, const std::string& path);
+bool pollPosedCage(AppState& state);  // the frame loop's: true when a pose was applied
 // Starts the export on state.exporter (export_jobs.cpp); false when another export runs.
 bool exportDeformedMesh(AppState& state, const std::string& path);
 bool saveSessionFile(AppState& state, const std::string& path);  // marks the document saved
@@ -294,7 +299,8 @@ void acceptRestoreOffer(AppState& state);
 void discardRestoreOffer(AppState& state);
 
 // Opens files dropped on the window (see planDrop in drop.h): mesh + cage (+ posed cage) load on the worker like
-// the Open panel, one posed cage poses the current scene, a .json loads a session; anything else puts what to drop
+// the Open panel, one posed cage poses the current scene (counted and read on JobsState::posedCage, as
+// loadPosedCage), a .json loads a session; anything else puts what to drop
 // in state.errors.
 void openDroppedFiles(AppState& state, const std::vector<std::string>& paths);
 

@@ -1,6 +1,8 @@
 // Files: sessions, posed cages, dropped and recent files, the crash-recovery offer.
 #include <exception>
 #include <filesystem>
+#include <functional>
+#include <optional>
 #include <system_error>
 #include <utility>
 
@@ -103,21 +105,42 @@ bool savePosedCage(AppState& state, const std::string& path) {
   }
 }
 
+namespace {
+
+// Runs read against the scene shown on the posed-cage job (superseding one running); pollPosedCage applies it.
+void startPosedCageRead(AppState& state, std::function<PosedCageRead(const Scene&)> read) {
+  state.jobs.posedCage.start(
+      [scene = state.model.scene, read = std::move(read)](JobContext&) { return PosedCageLoad{scene, read(*scene)}; },
+      1);
+}
+
+}  // namespace
+
 bool loadPosedCage(AppState& state, const std::string& path) {
   if (!state.model.scene) return false;
-  try {
-    const Eigen::MatrixXd pose = posedVerticesFromMesh(loadAnyMesh(path), state.model.scene->restCage, path);
-    setPose(state, pose);
-    commitEdit(state, "Load posed cage");
-    state.status.message = "loaded pose " + path;
-    if (!state.model.scene->isDemo()) {
-      noteRecent(state, RecentEntry::files(state.model.scene->meshPath, state.model.scene->cagePath, path));
-    }
-    return true;
-  } catch (const std::exception& e) {
-    state.status.errors.push_back(e.what());
+  startPosedCageRead(state, [path](const Scene& scene) { return readPosedCage(path, scene.restCage); });
+  state.status.message = "reading posed cage " + path;
+  return true;
+}
+
+bool pollPosedCage(AppState& state) {
+  std::optional<PosedCageLoad> load = state.jobs.posedCage.poll();
+  if (!load) return false;
+  const std::string& path = load->read.path;
+  if (load->scene != state.model.scene || state.loadingScene()) {
+    state.status.errors.push_back(path + " was not applied: another scene was opened while it was read; load it again");
     return false;
   }
+  if (!load->read.pose) {
+    state.status.errors.push_back(load->read.error);
+    return false;
+  }
+  setPose(state, *load->read.pose);
+  commitEdit(state, "Load posed cage");
+  state.status.message = "loaded pose " + path;
+  if (!state.model.scene->isDemo())
+    noteRecent(state, RecentEntry::files(state.model.scene->meshPath, state.model.scene->cagePath, path));
+  return true;
 }
 
 bool saveSessionFile(AppState& state, const std::string& path) {
@@ -158,11 +181,16 @@ bool loadSessionFile(AppState& state, const std::string& path) {
 void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
   const bool sceneReady = state.model.scene && !state.loadingScene();
   const int cageVertices = sceneReady ? state.model.scene->restCage.numVertices() : -1;
-  int singleVertices = -1;
   if (paths.size() == 1 && lowerExtension(paths.front()) == ".obj" && cageVertices > 0) {
-    singleVertices = countObjVertices(paths.front(), cageVertices);
+    // A posed cage of the scene shown, or what to drop: the file is counted and read on the posed-cage job.
+    startPosedCageRead(state, [path = paths.front(), cageVertices](const Scene& scene) {
+      const DropPlan plan = planDrop({path}, cageVertices, countObjVertices(path, cageVertices));
+      return plan.kind == DropPlan::Kind::Pose ? readPosedCage(path, scene.restCage)
+                                               : PosedCageRead{path, std::nullopt, plan.message};
+    });
+    return;
   }
-  const DropPlan plan = planDrop(paths, cageVertices, singleVertices);
+  const DropPlan plan = planDrop(paths, cageVertices, -1);
   switch (plan.kind) {
     case DropPlan::Kind::Error:
       if (paths.size() == 1 && state.loadingScene()) {
@@ -182,8 +210,7 @@ void openDroppedFiles(AppState& state, const std::vector<std::string>& paths) {
                            (plan.posed.empty() ? "" : ", posed cage " + plan.posed);
       });
       break;
-    case DropPlan::Kind::Pose:
-      loadPosedCage(state, plan.posed);
+    case DropPlan::Kind::Pose:  // needs a scene shown: read above
       break;
     case DropPlan::Kind::Session:
       guardUnsaved(state, "open " + plan.session, [plan](AppState& s) { loadSessionFile(s, plan.session); });

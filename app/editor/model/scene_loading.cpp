@@ -212,6 +212,7 @@ void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
   state.jobs.measure.setOnFinished(wake);
   state.jobs.cageMaker.setOnFinished(wake);
   state.jobs.exporter.setOnFinished(wake);
+  state.jobs.posedCage.setOnFinished(wake);
 }
 
 bool pollWorker(AppState& state) {

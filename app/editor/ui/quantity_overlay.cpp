@@ -144,6 +144,7 @@ void measureViews(AppState& state) {
   if (!needsWorker(request)) {
     if (q.installed != MeasureKey{}) {  // nothing uses the gradients or field terms any more: free them
       state.jobs.measure.release();
+      for (const auto& [key, deformer] : state.model.deformers) deformer->releaseGradients();  // kept with C
       q.installed = MeasureKey{};
       for (std::size_t v = 0; v < viewCount; ++v) q.measured[v].reset();
       ++q.generation;
