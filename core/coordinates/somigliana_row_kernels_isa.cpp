@@ -2,7 +2,7 @@
 // core/CMakeLists.txt compiles it once per ISA, with -DSOMICAGE_ISA=isa_NAME (the namespace of every inline function
 // it instantiates, base/isa_namespace.h), that ISA's -march and, for x86-64-v4, -DSOMICAGE_SIMD_LANES=8. Nothing
 // here may call an inline function from outside those namespaces (Eigen, the standard library's templates): the
-// linker could keep this copy of it for the baseline code. tests/core/row_kernel_isa_test.cpp checks the symbols.
+// linker could keep this copy of it for the baseline code. The ctest core.isa_symbols (tools/check_isa_symbols.py) checks.
 #include "base/simd_math.h"
 #include "coordinates/somigliana_gradient_row.h"
 #include "coordinates/somigliana_row_kernels.h"

@@ -31,6 +31,10 @@ std::size_t DeformationGradients::bytes() const {
 
 namespace {
 
+// Up to one block of rows (the stable variant's fold check: a few hundred samples, every frame) runs on one thread:
+// waking the others costs more than it saves, and the outputs do not depend on the thread count.
+constexpr int kSerialRows = 256;
+
 template <int Dim>
 void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y,
                   const std::vector<CoordinateMatrix<double>>& dy, const std::vector<char>& defined,
@@ -41,7 +45,7 @@ void finishPoints(const FrameWeights& W, const CoordinateMatrix<double>& y,
   for (int a = 0; a < W.origin.size(); ++a) origin[a] = W.origin(a);
   positions.resize(numRows, Dim);
   jacobians.setConstant(numPoints, Dim * Dim, std::numeric_limits<double>::quiet_NaN());
-#pragma omp parallel for schedule(static, 256) if (numRows > 256)
+#pragma omp parallel for schedule(static, kSerialRows) if (numRows > kSerialRows)
   for (int p = 0; p < numRows; ++p) {
     Dual yd[kPortableMaxOutputs], f[Dim];
     const bool withGradient = p < numPoints && defined[static_cast<std::size_t>(p)];
@@ -69,9 +73,7 @@ void DeformationGradients::evaluate(const Eigen::MatrixXd& posedVertices, const 
 void DeformationGradients::evaluate(const FrameWeights& W, Eigen::MatrixXd& positions,
                                     Eigen::MatrixXd& jacobians) const {
   const FrameCoordinates& C = deformer_.frameCoordinates();
-  // One block of points (the stable variant's fold check, a few hundred samples, every frame) on one thread: waking
-  // the others costs more than it saves, and the outputs do not depend on the thread count.
-  const int threads = C.rows() > 256 ? 0 : 1;
+  const int threads = C.rows() > kSerialRows ? 0 : 1;
   CoordinateMatrix<double> y;
   evaluateFrameOutputs(C, W, threads, y);
   std::vector<CoordinateMatrix<double>> dy(gradients_.size());

@@ -226,7 +226,7 @@ class SomiglianaDeformer final : public CageDeformer {
   // first stable frame with nu != 0 (a few hundred points; other variants never pay for them).
   struct FoldProbe {
     std::unique_ptr<CageDeformer> deformer;
-    std::unique_ptr<DeformationGradients> gradients;
+    std::shared_ptr<const DeformationGradients> gradients;  // kept by the probe's deformer too
   };
   const FoldProbe& foldProbe() const {
     std::call_once(foldProbeMade_, [this] {
@@ -235,7 +235,7 @@ class SomiglianaDeformer final : public CageDeformer {
       options.integration = integration_;
       options.threads = threads_;
       foldProbe_.deformer = methods::somigliana().precompute(rest_, samples, options, noProgress);
-      foldProbe_.gradients = std::make_unique<DeformationGradients>(*foldProbe_.deformer, samples);
+      foldProbe_.gradients = foldProbe_.deformer->gradients(samples);
     });
     return foldProbe_;
   }
