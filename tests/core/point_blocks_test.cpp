@@ -26,22 +26,26 @@ TEST(PointBlocks, VisitsEveryPointOnce) {
 }
 
 TEST(PointBlocks, AnExceptionOfOnePointReachesTheCaller) {
-  // Point 1500 lies in the third block of 655 points (2^16 / 100 faces): the blocks before it complete, and the
-  // exception thrown on whichever thread computes it is the one the caller catches.
-  std::atomic<int> visited{0};
-  try {
-    forEachPointInBlocks(
-        5000, 100, 2, kNoProgress, [] { return 0; },
-        [&](int&, int p) {
-          ++visited;
-          if (p == 1500) throw InputError("point 1500", -1, "cannot be computed", "none");
-        });
-    FAIL() << "no exception";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.source(), "point 1500");
+  // On two threads, which points run before and after the failure depends on the schedule (a descheduled thread may
+  // hold point 1500 while the other computes the rest), so only the exception itself is asserted there. On one
+  // thread the order is fixed: points 0..1500 run, and none after the one that threw.
+  for (const int threads : {2, 1}) {
+    std::atomic<int> visited{0};
+    try {
+      forEachPointInBlocks(
+          5000, 100, threads, kNoProgress, [] { return 0; },
+          [&](int&, int p) {
+            ++visited;
+            if (p == 1500) throw InputError("point 1500", -1, "cannot be computed", "none");
+          });
+      FAIL() << "no exception on " << threads << " threads";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.source(), "point 1500");
+    }
+    if (threads == 1) {
+      EXPECT_EQ(visited.load(), 1501);
+    }
   }
-  EXPECT_GE(visited.load(), 1311);  // the two blocks before it, and the point itself
-  EXPECT_LE(visited.load(), 1965);  // no block after its own started
 }
 
 TEST(PointBlocks, AScratchBufferThatCannotBeMadeIsBadAlloc) {
