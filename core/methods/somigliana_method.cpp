@@ -7,6 +7,7 @@
 
 #include "base/errors.h"
 #include "base/point_blocks.h"
+#include "base/prefault.h"
 #include "coordinates/coordinate_gradients.h"
 #include "coordinates/somigliana_coordinates.h"
 #include "deform/boundary_conditions.h"
@@ -118,8 +119,11 @@ void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, co
                              std::vector<CoordinateMatrix<Scalar>>& gradients) {
   gradients.resize(static_cast<std::size_t>(cage.dim()));  // one at a time: no temporary fourth copy
   // Not zeroed here: the sink writes every row once, on the worker threads (a serial setZero of 3 x 140 MB for
-  // FIREHYDRANT would touch every page twice, once on one thread).
-  for (auto& g : gradients) g.resize(points.rows(), layout.columns());
+  // FIREHYDRANT would touch every page twice, once on one thread); only their pages are allocated up front.
+  for (auto& g : gradients) {
+    g.resize(points.rows(), layout.columns());
+    prefaultForWriting(g.data(), static_cast<std::size_t>(g.size()) * sizeof(Scalar), threads);
+  }
   integrateSomiglianaGradientGroups(cage, points, threads, progress, [&](const GradientRowGroup& group) {
     writeGradientGroup(layout, group, regions, gradients);
   });
