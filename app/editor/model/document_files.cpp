@@ -122,9 +122,7 @@ namespace {
 // Runs read against the scene shown on the posed-cage job (superseding one running); pollPosedCage applies it.
 void startPosedCageRead(AppState& state, std::function<PosedCageRead(const Scene&)> read) {
   state.jobs.posedCage.start(
-      [scene = state.model.scene, read = std::move(read)](JobContext&) {
-        return PosedCageLoad{scene, read(*scene)};
-      },
+      [scene = state.model.scene, read = std::move(read)](JobContext&) { return PosedCageLoad{scene, read(*scene)}; },
       1);
 }
 
