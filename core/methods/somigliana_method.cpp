@@ -113,9 +113,9 @@ void writeGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& 
                         const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<Scalar>>& gradients) {
   const bool contiguous = group.laneStride == 1;
   for (std::size_t a = 0; a < gradients.size(); ++a) {
-    Scalar* out[kMaxGroupLanes];
+    Scalar* out[kMaxGroupLanes] = {};
     for (int l = 0; l < group.count; ++l) out[l] = gradients[a].row(group.first + l).data();
-    double sums[kMaxGroupLanes][vertexTermCount(3)];
+    double sums[kMaxGroupLanes][vertexTermCount(3)] = {};
     const double* tail =
         contiguous && group.count == 8   ? writeMainColumns<8>(layout, group, group.rows[a], out, sums)
         : contiguous && group.count == 4 ? writeMainColumns<4>(layout, group, group.rows[a], out, sums)
