@@ -216,6 +216,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   pollExport(state);
   pollPosedCage(state);
+  pollSessionRead(state);
   if (!state.files.droppedPaths.empty()) {
     std::vector<std::string> dropped;
     dropped.swap(state.files.droppedPaths);
@@ -345,10 +346,12 @@ int runScripted(GLFWwindow* window, AppState& state, Renderer& renderer, InputEv
     for (const std::string& e : state.status.errors) std::fprintf(stderr, "somicage: %s\n", e.c_str());
     return rc;
   };
-  for (;;) {  // the scene, then every deformer the views need (or an error)
+  for (;;) {  // the session (--session), the scene, then every deformer the views need (or an error)
+    pollSessionRead(state);
     pollWorker(state);
     if (!state.status.errors.empty()) return fail(2);
-    if (!state.loadingScene() && !state.jobs.precompute.busy()) {
+    const bool reading = state.jobs.session.busy() || state.jobs.session.ready();  // ready: read since the poll
+    if (!reading && !state.loadingScene() && !state.jobs.precompute.busy()) {
       if (!state.model.scene) return fail(2);
       ensureDeformers(state);
       if (!state.jobs.precompute.busy()) break;
@@ -544,9 +547,9 @@ int runWithState(const EditorOptions& options, const FrameDevices& devices) {
         FrameDemand demand;
         demand.queued = !windowLink.queue.empty();
         demand.busy = state.jobs.precompute.busy() || state.jobs.exporter.busy() || state.jobs.posedCage.busy() ||
-                      state.jobs.measure.busy() ||
-                      state.jobs.measure.ready() || state.view.quantities.sweepRequested || state.loadingScene() ||
-                      state.animation.playing || state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
+                      state.jobs.session.busy() || state.jobs.measure.busy() || state.jobs.measure.ready() ||
+                      state.view.quantities.sweepRequested || state.loadingScene() || state.animation.playing ||
+                      state.jobs.cageMaker.status() == CageMaker::Status::Generating ||
                       state.animation.exportJob.has_value();  // playback and export draw every frame
         demand.changing = changing(state);
         const double wait = pacer.waitSeconds(demand);

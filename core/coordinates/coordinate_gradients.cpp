@@ -152,10 +152,10 @@ void vertexTermGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
       });
 }
 
-// Somigliana's face terms S_j and q_j = M_j n_j, and the affine terms (somigliana_coordinates.h).
+// Somigliana's face terms S_j and q_j = M_j n_j, and the affine terms (somigliana_coordinates.h), one point per group.
 template <int Dim>
 void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads, const ProgressCallback& progress,
-                         const GradientRowSink& sink) {
+                         const GradientGroupSink& sink) {
   auto writeFace = [](auto* f, const auto& I, const double* n, auto* affine) {
     f[0] += I.S;
     for (int a = 0; a < Dim; ++a)
@@ -164,7 +164,15 @@ void somiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int th
   };
   const CoordinateLayout layout = somiglianaLayout(Dim, cage.numVertices(), cage.numFaces());
   // One point at a time: the reference (the packs are somiglianaGradientPacks, the whole row in one dispatched call).
-  vertexTermGradients<Dim>(cage, points, threads, progress, layout, writeFace, sink, /*scalarKernel=*/true);
+  vertexTermGradients<Dim>(
+      cage, points, threads, progress, layout, writeFace,
+      [&](int p, const double* const* rows) {
+        GradientRowGroup group;
+        group.first = p, group.count = 1, group.entryStride = 1;
+        for (int a = 0; a < Dim; ++a) group.rows[a] = rows[a];
+        sink(group);
+      },
+      /*scalarKernel=*/true);
 }
 
 // The boundary element's face terms S_j and the full moment M_j (bem_layer_integrals.h).
@@ -200,43 +208,33 @@ void greenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads
 
 #if SOMICAGE_SIMD_PACKS
 // The three gradient rows of a group of points per call of the row kernel this CPU runs (somigliana_row_kernels.h),
-// from the closed-form derivatives (somigliana_gradient_row.h: the three rows interleaved).
+// from the closed-form derivatives (somigliana_gradient_row.h), handed on interleaved as the kernel wrote them.
 void somiglianaGradientPacks(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                             const ProgressCallback& progress, const GradientRowSink& sink) {
+                             const ProgressCallback& progress, const GradientGroupSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, cageFrames(cage));
   std::vector<PortableGradientFrame> tables(faces.size());  // the rotation tables, once per cage
   for (std::size_t j = 0; j < faces.size(); ++j) makeGradientFrame(faces[j].frame, tables[j]);
   const SomiglianaRowKernels& kernels = somiglianaRowKernels();
   const int numPoints = static_cast<int>(points.rows()), lanes = kernels.lanes;
   const std::size_t columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
-  struct Buffers {
-    PackBuffer packed;           // the 3 gradient rows of the group, interleaved, each entry `lanes` wide
-    std::vector<double> split;  // the 3 gradient rows of one lane
-  };
   forEachPointGroup(
-      points, lanes, cage.numFaces(), threads, progress,
-      [&] { return Buffers{makePackBuffer(3 * columns * lanes), std::vector<double>(3 * columns)}; },
-      [&](Buffers& buffers, int first, const double* x) {
-        kernels.gradientRows(faces.data(), tables.data(), cage.numFaces(), cage.numVertices(), x,
-                             buffers.packed.get());
-        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
-          const double* rows[3];
-          for (std::size_t a = 0; a < 3; ++a) {
-            double* out = buffers.split.data() + a * columns;
-            const double* in = buffers.packed.get() + a * lanes + l;
-            for (std::size_t k = 0; k < columns; ++k) out[k] = in[3 * k * lanes];
-            rows[a] = out;
-          }
-          sink(first + l, rows);
-        }
+      points, lanes, cage.numFaces(), threads, progress, [&] { return makePackBuffer(3 * columns * lanes); },
+      [&](PackBuffer& packed, int first, const double* x) {
+        kernels.gradientRows(faces.data(), tables.data(), cage.numFaces(), cage.numVertices(), x, packed.get());
+        GradientRowGroup group;
+        group.first = first, group.count = std::min(lanes, numPoints - first);
+        for (int a = 0; a < 3; ++a) group.rows[a] = packed.get() + a * lanes;
+        group.laneStride = 1, group.entryStride = 3 * lanes;
+        sink(group);
       });
 }
 #endif
 
 }  // namespace
 
-void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
-                                  const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel) {
+void integrateSomiglianaGradientGroups(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                       const ProgressCallback& progress, const GradientGroupSink& sink,
+                                       bool scalarKernel) {
   assertCageAndPoints(cage, points);
 #if SOMICAGE_SIMD_PACKS
   if (cage.dim() == 3 && !scalarKernel) return somiglianaGradientPacks(cage, points, threads, progress, sink);
@@ -246,6 +244,28 @@ void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& point
     somiglianaGradients<3>(cage, points, threads, progress, sink);
   else
     somiglianaGradients<2>(cage, points, threads, progress, sink);
+}
+
+void integrateSomiglianaGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,
+                                  const ProgressCallback& progress, const GradientRowSink& sink, bool scalarKernel) {
+  const int dim = cage.dim();
+  const std::size_t columns = somiglianaLayout(dim, cage.numVertices(), cage.numFaces()).integralColumns();
+  integrateSomiglianaGradientGroups(
+      cage, points, threads, progress,
+      [&](const GradientRowGroup& group) {
+        std::vector<double> split(dim * columns);
+        for (int l = 0; l < group.count; ++l) {
+          const double* rows[3];
+          for (int a = 0; a < dim; ++a) {
+            double* out = split.data() + a * columns;
+            const double* in = group.rows[a] + l * group.laneStride;
+            for (std::size_t k = 0; k < columns; ++k) out[k] = in[k * group.entryStride];
+            rows[a] = out;
+          }
+          sink(group.first + l, rows);
+        }
+      },
+      scalarKernel);
 }
 
 void integrateGreenGradients(const Cage& cage, const Eigen::MatrixXd& points, int threads,

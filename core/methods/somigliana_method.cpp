@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "base/errors.h"
+#include "base/point_blocks.h"
+#include "base/prefault.h"
 #include "coordinates/coordinate_gradients.h"
 #include "coordinates/somigliana_coordinates.h"
 #include "deform/boundary_conditions.h"
@@ -58,40 +60,93 @@ void sumVertexTerms(const CoordinateLayout& layout, const double* integrals, dou
     for (int i = 0; i < layout.numVertices; ++i) sums[k] += integrals[layout.vertexColumn(i, k)];
 }
 
-// A point's integrals (layout.integralColumns() numbers: the main block in the layout of C, then the affine terms)
-// into its row of C, in the storage type: the main block, then the tail [per-vertex sums | affine terms | x | 1]
-// with [x | 1] zero.
+// A point's tail in its row of C, in the storage type: [per-vertex sums | affine terms | x | 1] with [x | 1] zero;
+// tail integral k at tailIntegrals[k * stride].
 template <typename Scalar>
-void writeIntegralColumns(const CoordinateLayout& layout, const double* integrals, const double* sums, Scalar* row) {
-  for (int k = 0; k < layout.mainColumns(); ++k) row[k] = static_cast<Scalar>(integrals[k]);
+void writeTailColumns(const CoordinateLayout& layout, const double* sums, const double* tailIntegrals,
+                      std::ptrdiff_t stride, Scalar* row) {
   for (int k = 0; k < layout.vertexTerms; ++k) row[layout.tailColumn(k)] = static_cast<Scalar>(sums[k]);
   for (int k = 0; k < layout.tailIntegrals; ++k)
-    row[layout.tailColumn(layout.vertexTerms + k)] = static_cast<Scalar>(integrals[layout.mainColumns() + k]);
+    row[layout.tailColumn(layout.vertexTerms + k)] = static_cast<Scalar>(tailIntegrals[k * stride]);
   for (int k = layout.vertexTerms + layout.tailIntegrals; k < layout.tailColumns; ++k)
     row[layout.tailColumn(k)] = Scalar(0);
 }
 
-// The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the dual-number integrals of
+// A point's integrals (layout.integralColumns() numbers: the main block in the layout of C, then the affine terms)
+// into its row of C, in the storage type: the main block, then the tail.
+template <typename Scalar>
+void writeIntegralColumns(const CoordinateLayout& layout, const double* integrals, const double* sums, Scalar* row) {
+  for (int k = 0; k < layout.mainColumns(); ++k) row[k] = static_cast<Scalar>(integrals[k]);
+  writeTailColumns(layout, sums, integrals + layout.mainColumns(), 1, row);
+}
+
+// The main block of a group's gradient row (writeGradientGroup) into the lanes' rows, with their per-vertex sums
+// (in vertex order, as sumVertexTerms); returns where the tail integrals start. Lanes > 0: exactly that many lanes,
+// contiguous, so that the compiler keeps the lanes' sums in registers (twice as fast as a count it does not know).
+template <int Lanes, typename Scalar>
+const double* writeMainColumns(const CoordinateLayout& layout, const GradientRowGroup& group, const double* in,
+                               Scalar* const* out, double (*sums)[vertexTermCount(3)]) {
+  const int count = Lanes > 0 ? Lanes : group.count;
+  const std::ptrdiff_t laneStride = Lanes > 0 ? 1 : group.laneStride, entryStride = group.entryStride;
+  int k = 0;
+  for (int t = 0; t < layout.vertexTerms; ++t) {
+    double sum[kMaxGroupLanes] = {};
+    for (int i = 0; i < layout.numVertices; ++i, ++k, in += entryStride)  // k = layout.vertexColumn(i, t)
+      for (int l = 0; l < count; ++l) {
+        const double value = in[l * laneStride];
+        out[l][k] = static_cast<Scalar>(value);
+        sum[l] += value;
+      }
+    for (int l = 0; l < count; ++l) sums[l][t] = sum[l];
+  }
+  for (; k < layout.mainColumns(); ++k, in += entryStride)
+    for (int l = 0; l < count; ++l) out[l][k] = static_cast<Scalar>(in[l * laneStride]);
+  return in;
+}
+
+// A group's gradient rows d(row of C)/dx_a (coordinate_gradients.h) into the gradient matrices, as
+// writeIntegralColumns writes C's rows, with the lanes innermost: the packs' interleaved rows are read once, in
+// order, straight into the matrices (a copy per point first took as long as the float rows' writing). Rows of
+// points that are not Inside are zero.
+template <typename Scalar>
+void writeGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& group,
+                        const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<Scalar>>& gradients) {
+  const bool contiguous = group.laneStride == 1;
+  for (std::size_t a = 0; a < gradients.size(); ++a) {
+    Scalar* out[kMaxGroupLanes] = {};
+    for (int l = 0; l < group.count; ++l) out[l] = gradients[a].row(group.first + l).data();
+    double sums[kMaxGroupLanes][vertexTermCount(3)] = {};
+    const double* tail;
+    if (contiguous && group.count == 8)
+      tail = writeMainColumns<8>(layout, group, group.rows[a], out, sums);
+    else if (contiguous && group.count == 4)
+      tail = writeMainColumns<4>(layout, group, group.rows[a], out, sums);
+    else
+      tail = writeMainColumns<0>(layout, group, group.rows[a], out, sums);
+    for (int l = 0; l < group.count; ++l) {
+      if (regions[static_cast<std::size_t>(group.first + l)] != PointRegion::Inside)
+        gradients[a].row(group.first + l).setZero();
+      else
+        writeTailColumns(layout, sums[l], tail + l * group.laneStride, group.entryStride, out[l]);
+    }
+  }
+}
+
+// The d gradient matrices of C's point rows (CageDeformer::coordinateGradients): the closed-form integrals of
 // coordinate_gradients.h (in the layout of C) and their sums; zero rows for points that are not Inside.
 template <typename Scalar>
 void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<PointRegion>& regions,
                              int threads, const ProgressCallback& progress, const CoordinateLayout& layout,
                              std::vector<CoordinateMatrix<Scalar>>& gradients) {
-  const int d = cage.dim();
-  gradients.resize(static_cast<std::size_t>(d));  // one at a time: no temporary fourth copy
+  gradients.resize(static_cast<std::size_t>(cage.dim()));  // one at a time: no temporary fourth copy
   // Not zeroed here: the sink writes every row once, on the worker threads (a serial setZero of 3 x 140 MB for
-  // FIREHYDRANT would touch every page twice, once on one thread).
-  for (auto& g : gradients) g.resize(points.rows(), layout.columns());
-  integrateSomiglianaGradients(cage, points, threads, progress, [&](int p, const double* const* rows) {
-    if (regions[static_cast<std::size_t>(p)] != PointRegion::Inside) {
-      for (auto& g : gradients) g.row(p).setZero();
-      return;
-    }
-    for (int a = 0; a < d; ++a) {
-      double sums[vertexTermCount(3)] = {0};
-      sumVertexTerms(layout, rows[a], sums);
-      writeIntegralColumns(layout, rows[a], sums, gradients[static_cast<std::size_t>(a)].row(p).data());
-    }
+  // FIREHYDRANT would touch every page twice, once on one thread); only their pages are allocated up front.
+  for (auto& g : gradients) {
+    g.resize(points.rows(), layout.columns());
+    prefaultForWriting(g.data(), static_cast<std::size_t>(g.size()) * sizeof(Scalar), threads);
+  }
+  integrateSomiglianaGradientGroups(cage, points, threads, progress, [&](const GradientRowGroup& group) {
+    writeGradientGroup(layout, group, regions, gradients);
   });
 }
 

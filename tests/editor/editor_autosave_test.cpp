@@ -224,8 +224,6 @@ TEST(EditorAutosave, AcceptingTheOfferAppliesTheSessionAndDiscardingDropsIt) {
   state.files.restoreOfferTime = "2026-11-23 19:40";
   acceptRestoreOffer(state);
   EXPECT_FALSE(state.files.restoreOffer.has_value());
-  EXPECT_EQ(state.document.params.gamma, 2.5);
-  EXPECT_EQ(state.document.method, methods::green());
   EXPECT_EQ(state.status.message, "restored the session from 2026-11-23 19:40");
   std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);  // the 2D demo of the session loads
   ASSERT_TRUE(out.has_value());
@@ -233,6 +231,8 @@ TEST(EditorAutosave, AcceptingTheOfferAppliesTheSessionAndDiscardingDropsIt) {
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   ASSERT_TRUE(state.model.scene);
   EXPECT_EQ(state.model.scene->dim(), 2);
+  EXPECT_EQ(state.document.params.gamma, 2.5);  // set with the session's scene
+  EXPECT_EQ(state.document.method, methods::green());
 
   state.files.restoreOffer = demoSession(1);
   discardRestoreOffer(state);

@@ -248,9 +248,10 @@ TEST_F(Folder, OpenFillsTheMeshThenTheCageAndARecentEntryOpensOnlyOnOk) {
   chooseRecent(state.files.dialog, entry);
   EXPECT_EQ(state.files.dialog.purpose, FileDialogPurpose::OpenScene);
   EXPECT_EQ(state.status.message.find("opened session"), std::string::npos) << state.status.message;
-  // ... and OK (or a double click, which submits the same way) opens it (the same scene: applied at once).
+  // ... and OK (or a double click, which submits the same way) opens it (the same scene: applied once read).
   ASSERT_TRUE(submitFileDialog(state));
   EXPECT_EQ(state.files.dialog.purpose, FileDialogPurpose::None);
+  finishSessionRead(state);  // read on its job, then applied
   EXPECT_NE(state.status.message.find("opened session"), std::string::npos) << state.status.message;
   EXPECT_EQ(fs::path(state.document.path), fs::path(path("s.json")));
 }

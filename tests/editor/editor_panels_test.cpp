@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "core/scratch_folder.h"
 #include "drawn_text.h"
 #include "editor_test_support.h"
 #include "headless_imgui.h"
@@ -209,7 +210,33 @@ TEST_F(HeadlessFrame, FileOpenRecentListsSavedSessionsAndOpensTheChosenOne) {
   for (int k = 0; k < 3; ++k) frame(ImVec2(recent.x + 3, recent.y + 5), false, menu);  // hovering opens it
   EXPECT_TRUE(whereDrawn("session newer.json").has_value()) << "the last saved session is not in Open Recent";
   click("session older.json", menu);
+  finishSessionRead(state);
   EXPECT_EQ(state.status.message, "opened session " + older);
   EXPECT_EQ(state.files.recent.entries().front().session, older) << "the opened one comes first";
   std::filesystem::remove_all(dir);
+}
+
+// While a session is read (on its job), the control panel shows the stage naming the file, with a progress bar, and
+// its Cancel stops it: the document open before stays, and the status says the session was not opened.
+TEST_F(HeadlessFrame, WhileASessionIsReadThePanelShowsItAndItsCancelStopsIt) {
+  ImGui::GetIO().DisplaySize = ImVec2(1000, 3000);  // tall enough for the panel's last sections
+  const test::ScratchFolder dir;
+  const std::string session = dir / "opened.json";
+  SteeredSessionReader steered;
+  AppState state;
+  openDemoScene(state, 2);
+  ASSERT_TRUE(saveSessionFile(state, session));
+  const Document before = currentDocument(state);
+  const std::size_t steps = state.document.history.size();
+  loadSessionFile(state, session, steered.reader());
+  waitUntil([&steered] { return steered.entered.load(); });
+  const auto panel = [&state] { drawControlPanel(state); };
+  frame(ImVec2(-1, -1), false, panel);
+  EXPECT_TRUE(whereDrawn("Reading session opened.json").has_value()) << "the panel does not show the read";
+  click("Cancel", panel);
+  finishSessionRead(state);
+  EXPECT_FALSE(steered.timedOut) << "Cancel did not stop the read";
+  EXPECT_EQ(state.status.message, "opening session " + session + " cancelled");
+  EXPECT_TRUE(currentDocument(state) == before);
+  EXPECT_EQ(state.document.history.size(), steps);
 }

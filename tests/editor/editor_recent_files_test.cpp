@@ -7,6 +7,7 @@
 #include <fstream>
 #include <memory>
 
+#include "editor_test_support.h"
 #include "model/app_state.h"
 #include "model/recent_files.h"
 #include "model/scene.h"
@@ -159,12 +160,14 @@ TEST(EditorRecentFiles, AppStateRecordsLoadedScenesAndSessions) {
   const std::string bad = (dir / "bad.json").string();
   { std::ofstream(bad) << "{ not json"; }
   loadSessionFile(state, bad);
+  finishSessionRead(state);
   EXPECT_EQ(state.files.recent.entries().size(), 1u);
   EXPECT_EQ(state.status.errors.size(), 1u);
   state.status.errors.clear();
   const std::string good = (dir / "good.json").string();
   saveSessionFile(state, good);
   loadSessionFile(state, good);
+  finishSessionRead(state);
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   ASSERT_EQ(state.files.recent.entries().size(), 2u);
   EXPECT_EQ(state.files.recent.entries().front(), RecentEntry::sessionFile(good));

@@ -431,6 +431,7 @@ TEST(EditorViews, TheSingleViewTakesTheMethodsOwnOptionsFromThePanelAndSessions)
   EXPECT_EQ(saved.methodOptions, (MethodOptions{{"tet-level", "1"}}));
   AppState reopened;
   applySession(reopened, saved);
+  installNextOutcome(reopened);  // the session's views are set with its scene
   EXPECT_TRUE(reopened.views() == std::vector<ViewSpec>{level1});
   // Somigliana has no such option: its view and sessions have none.
   setMethod(state, methods::somigliana());

@@ -69,6 +69,11 @@ TEST(EditorWakeup, EveryWorkerOfTheStateWakesTheLoopWhenItFinishes) {
   ASSERT_TRUE(waitForOutcome(state.jobs.exporter).has_value());
   waitUntil([&] { return wakes.load() >= 5; });
   EXPECT_EQ(wakes.load(), 5) << "export";
+
+  loadSessionFile(state, "/nonexistent/session.json");  // File > Open session: the read's outcome is its error
+  waitUntil([&] { return wakes.load() >= 6; });
+  EXPECT_EQ(wakes.load(), 6) << "session read";
+  EXPECT_TRUE(state.jobs.session.ready()) << "woken before its outcome was there";
 }
 
 }  // namespace

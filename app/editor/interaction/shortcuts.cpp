@@ -22,6 +22,11 @@ void saveDocument(AppState& state) {
 }
 
 void cancelPrecompute(AppState& state) {
+  if (state.jobs.session.busy()) {  // a session being read: the open document stays
+    state.jobs.session.cancel();
+    state.status.message = "cancelling opening the session...";
+    return;
+  }
   if (!state.jobs.precompute.busy()) return;
   state.jobs.precompute.cancel();  // the worker stops at its next progress report; the outcome says "cancelled"
   state.status.message = "cancelling the precomputation...";
@@ -55,7 +60,8 @@ const std::vector<Shortcut>& shortcuts() {
        [](AppState& s) { s.view.screenshotRequest = defaultScreenshotName(); }},
       {"frame", GLFW_KEY_F, kNoMods, "F", "Frame everything (posed cage included)", frameAll},
       {"cancel", GLFW_KEY_ESCAPE, kNoMods, "Esc",
-       "Cancel the running precomputation (a scene or a method loading); the current scene stays", cancelPrecompute},
+       "Cancel the running precomputation (a session, a scene or a method loading); the current scene stays",
+       cancelPrecompute},
       {"play", GLFW_KEY_SPACE, kNoMods, "Space", "Play the timeline from the cursor, or stop", togglePlayback},
       {"reset_pose", GLFW_KEY_R, kAlt | kShift, "Alt+Shift+R", "Reset pose: every handle back to rest", resetPose},
       {"grab", GLFW_KEY_G, kNoMods, "G", "Grab the selection; then X/Y/Z, a typed value, Enter", nullptr},

@@ -32,6 +32,6 @@ void runCommand(AppState& state, const char* id);
 // Commands shared by keys and menus.
 void saveDocument(AppState& state);      // Ctrl+S: to the session file, or Save as the first time
 void newDocument(AppState& state);       // Ctrl+N: the 3D demo (asks about unsaved changes)
-void cancelPrecompute(AppState& state);  // Esc: stops the precompute worker (no-op when idle)
+void cancelPrecompute(AppState& state);  // Esc: stops a session being read, else the precompute (no-op when idle)
 
 }  // namespace somicage::editor

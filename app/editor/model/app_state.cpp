@@ -12,21 +12,27 @@
 
 namespace somicage::editor {
 
-std::vector<ViewSpec> AppState::views() const {
-  if (view.compare && view.compareViews.size() >= 2) return view.compareViews;
-  return {singleView()};
+std::vector<ViewSpec> shownViews(bool compare, const std::vector<ViewSpec>& compareViews, const ViewSpec& single) {
+  if (compare && compareViews.size() >= 2) return compareViews;
+  return {single};
 }
 
-ViewSpec AppState::singleView() const {
-  return withMethod(ViewSpec{document.method, {}, view.methodOptions}, document.method);
+ViewSpec singleViewOf(Method method, const MethodOptions& options) {
+  return withMethod(ViewSpec{method, {}, options}, method);
 }
 
-std::vector<DeformerKey> AppState::deformerKeys() const {
+std::vector<DeformerKey> deformerKeysOf(const std::vector<ViewSpec>& views) {
   std::vector<DeformerKey> keys;
-  for (const ViewSpec& shown : views())
+  for (const ViewSpec& shown : views)
     if (std::find(keys.begin(), keys.end(), deformerKey(shown)) == keys.end()) keys.push_back(deformerKey(shown));
   return keys;
 }
+
+std::vector<ViewSpec> AppState::views() const { return shownViews(view.compare, view.compareViews, singleView()); }
+
+ViewSpec AppState::singleView() const { return singleViewOf(document.method, view.methodOptions); }
+
+std::vector<DeformerKey> AppState::deformerKeys() const { return deformerKeysOf(views()); }
 
 std::string viewLabel(const AppState& state, std::size_t v) {
   const ViewSpec view = state.views()[v];

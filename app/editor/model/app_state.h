@@ -15,7 +15,6 @@
 
 #include "deform/deform_params.h"
 #include "deform/method.h"
-#include "engine/camera_state.h"
 #include "engine/session.h"
 #include "engine/view_spec.h"
 #include "geometry/cage.h"
@@ -28,6 +27,7 @@
 #include "jobs/export_worker.h"
 #include "jobs/measure_worker.h"
 #include "jobs/precompute_worker.h"
+#include "jobs/session_read.h"
 #include "jobs/thread_budget.h"
 #include "model/document.h"
 #include "model/frame_device_evaluators.h"
@@ -137,7 +137,9 @@ struct PendingLoad {
   std::optional<std::string> documentPath;  // the session being opened
   bool restored = false;                    // a crashed run's autosave: unsaved from the start
   std::optional<Eigen::MatrixXd> pose;      // the pose to show on the new cage
-  std::optional<CameraState> camera;
+  // A session's method, parameters, views, animation and camera: set when its scene is shown (applySessionSettings),
+  // not when it is asked for, so that a load that fails or is cancelled leaves the open document as it was.
+  std::optional<Session> session;
   PosedCageRead posed;                // a posed cage read on the load job against the new cage (path "": none)
   std::optional<RecentEntry> recent;  // the files being loaded; recorded when they arrive
   bool sceneShown = false;            // the loaded scene is shown (undeformed) while its deformers are computed
@@ -150,6 +152,7 @@ struct JobsState {
   MeasureWorker measure;        // the views' quantities and the nu sweep (measure_worker.h, quantity_overlay.h)
   ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
   BackgroundJob<PosedCageLoad> posedCage;  // File > Load posed cage, a dropped posed cage: read here, never on the UI
+  BackgroundJob<SessionRead> session;      // a session file being opened: read and parsed here (session_read.h)
   std::optional<PendingLoad> load;
 };
 
@@ -196,10 +199,17 @@ struct AppState {
   bool loadingScene() const { return jobs.load.has_value(); }  // the running precompute replaces the scene
 };
 
+// The views shown with `compare` on or off (AppState::views), the single view of a method and its options
+// (AppState::singleView), and the distinct deformers of `views` (AppState::deformerKeys).
+std::vector<ViewSpec> shownViews(bool compare, const std::vector<ViewSpec>& compareViews, const ViewSpec& single);
+ViewSpec singleViewOf(Method method, const MethodOptions& options);
+std::vector<DeformerKey> deformerKeysOf(const std::vector<ViewSpec>& views);
+
 // ---- controller functions (pure logic, used by the panels, the input handler and tests) ----
 
 // Starts loading/precomputing a new scene on the worker; `load` is applied when it arrives (state.jobs.load holds it
-// meanwhile). The current scene stays usable until then.
+// meanwhile), and its deformers are those of the views it will show (a session's). The current scene and document stay
+// usable until then. A session still being read is cancelled: the newer request wins.
 void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load = {});
 // The same with a loader run on the worker (the files read there).
 void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad load = {});
@@ -281,8 +291,12 @@ void frameRest(AppState& state);
 // Sessions and files (errors go to state.errors, never thrown).
 Session makeSession(const AppState& state);
 // A session of another scene loads it on the worker (what `load` says is applied when it arrives, with the session's
-// pose and camera); one of the scene shown is applied at once as the edit "Load session".
+// settings, pose and camera); one of the scene shown is applied at once as the edit "Load session".
 void applySession(AppState& state, const Session& session, PendingLoad load = {});
+// The session's method, parameters, views and animation (not its scene, pose or camera).
+void applySessionSettings(AppState& state, const Session& session);
+// The views the session shows once applied: its panes, or the editor's when it names none.
+std::vector<ViewSpec> sessionViews(const AppState& state, const Session& session);
 // Each returns true on success. They write where they are told: the dialogs check the paths (file_dialog.h).
 bool savePosedCage(AppState& state, const std::string& path);
 // Starts reading the posed cage on JobsState::posedCage (false without a scene); pollPosedCage applies it when it
@@ -292,7 +306,12 @@ bool pollPosedCage(AppState& state);  // the frame loop's: true when a pose was 
 // Starts the export on state.exporter (export_jobs.cpp); false when another export runs.
 bool exportDeformedMesh(AppState& state, const std::string& path);
 bool saveSessionFile(AppState& state, const std::string& path);  // marks the document saved
-bool loadSessionFile(AppState& state, const std::string& path);
+// Starts reading the session file on JobsState::session (superseding one being read; `read`: a test's reader) and
+// returns; pollSessionRead applies it on the UI thread once read (as applySession), or reports why it could not be read
+// (the InputError: file, line, what is wrong). A cancel (Esc, the panel's Cancel) or an error leaves the document as
+// it was.
+void loadSessionFile(AppState& state, const std::string& path, SessionReader read = readSessionFile);
+bool pollSessionRead(AppState& state);  // the frame loop's: true when a read session was applied
 
 // Crash recovery: applies state.restoreOffer (the Restore button, --restore-autosave) or drops it (Discard).
 void acceptRestoreOffer(AppState& state);

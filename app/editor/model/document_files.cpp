@@ -3,14 +3,16 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include "base/file_util.h"
 #include "engine/engine.h"
 #include "interaction/drop.h"
-#include "io/mesh_formats.h"
 #include "io/obj_io.h"
+#include "jobs/session_read.h"
 #include "model/app_state.h"
 
 namespace somicage::editor {
@@ -35,7 +37,7 @@ Session makeSession(const AppState& state) {
   return s;
 }
 
-void applySession(AppState& state, const Session& s, PendingLoad load) {
+void applySessionSettings(AppState& state, const Session& s) {
   state.animation.poses = s.poses;
   state.animation.timeline = s.timeline;
   // The frame cursor starts at the session's range, as Blender's at its scene's start (the session keeps no cursor).
@@ -47,12 +49,22 @@ void applySession(AppState& state, const Session& s, PendingLoad load) {
   state.document.params = s.params;
   state.view.compare = s.compare;
   if (!s.compareViews.empty()) state.view.compareViews = s.compareViews;
+}
+
+std::vector<ViewSpec> sessionViews(const AppState& state, const Session& s) {
+  return shownViews(s.compare, s.compareViews.empty() ? state.view.compareViews : s.compareViews,
+                    singleViewOf(s.method, s.methodOptions));
+}
+
+void applySession(AppState& state, const Session& s, PendingLoad load) {
   const bool inlineCage = s.restCage.numVertices() > 0;
-  const bool sameScene = state.model.scene && !state.loadingScene() && samePath(state.model.scene->meshPath, s.meshPath) &&
+  const bool sameScene = state.model.scene && !state.loadingScene() &&
+                         samePath(state.model.scene->meshPath, s.meshPath) &&
                          samePath(state.model.scene->cagePath, s.cagePath) &&
                          (!s.meshPath.empty() || state.model.scene->dim() == s.demoDim) &&
                          (!inlineCage || sameCage(state.model.scene->restCage, s.restCage));
   if (sameScene) {
+    applySessionSettings(state, s);
     if (s.pose.rows() == state.document.pose.rows() && s.pose.cols() == state.document.pose.cols())
       setPose(state, s.pose);
     commitEdit(state, "Load session");
@@ -62,7 +74,7 @@ void applySession(AppState& state, const Session& s, PendingLoad load) {
     return;
   }
   if (s.pose.rows() > 0) load.pose = s.pose;
-  load.camera = s.camera;
+  load.session = s;  // its settings are applied with its scene (showLoadedScene)
   if (inlineCage) {
     requestLoad(
         state,
@@ -157,12 +169,28 @@ bool saveSessionFile(AppState& state, const std::string& path) {
   }
 }
 
-bool loadSessionFile(AppState& state, const std::string& path) {
+void loadSessionFile(AppState& state, const std::string& path, SessionReader read) {
+  state.jobs.session.start(
+      [path, read = std::move(read)](JobContext& context) { return readSessionOnJob(path, read, context); }, 1);
+  state.status.message = "reading session " + path;
+}
+
+bool pollSessionRead(AppState& state) {
+  std::optional<SessionRead> read = state.jobs.session.poll();
+  if (!read) return false;
+  const std::string& path = read->path;
+  if (read->cancelled) {
+    state.status.message = "opening session " + path + " cancelled";
+    return false;
+  }
+  if (!read->session) {
+    state.status.errors.push_back(read->error);
+    return false;
+  }
   try {
-    const Session session = loadSession(path);
     PendingLoad load;
     load.documentPath = path;
-    applySession(state, session, std::move(load));
+    applySession(state, *read->session, std::move(load));
     if (!state.loadingScene()) {  // the same scene: applied at once, as an edit
       state.document.path = path;
       state.document.history.markSaved();

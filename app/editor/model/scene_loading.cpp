@@ -40,24 +40,31 @@ std::vector<DeformerKey> missingDeformers(const AppState& state) {
 
 }  // namespace
 
+namespace {
+
 // A scene's load takes every core (thread_budget.h): until its mesh arrives the UI has nothing to deform, and then
-// only draws it at rest.
-void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load) {
-  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
+// only draws it at rest. Its deformers are those of the views it will show: a session's are set only when its scene
+// is shown (applySessionSettings). A session still being read is cancelled: this newer request wins.
+void startLoad(AppState& state, std::shared_ptr<const Scene> scene, std::function<Scene()> loader, PendingLoad load) {
+  state.jobs.session.cancel();
+  PrecomputeRequest request =
+      deformerRequest(state, load.session ? deformerKeysOf(sessionViews(state, *load.session)) : state.deformerKeys());
   request.threads = ThreadBudget::machine().cores();
-  request.scene = std::move(scene);
+  request.scene = std::move(scene);  // or, when null, the loader runs on the job
+  request.loadScene = std::move(loader);
   request.posedPath = load.posed.path;  // read on the job, with the scene
   state.jobs.load = std::move(load);
   state.jobs.precompute.start(std::move(request));
 }
 
+}  // namespace
+
+void requestScene(AppState& state, std::shared_ptr<const Scene> scene, PendingLoad load) {
+  startLoad(state, std::move(scene), {}, std::move(load));
+}
+
 void requestLoad(AppState& state, std::function<Scene()> loader, PendingLoad load) {
-  PrecomputeRequest request = deformerRequest(state, state.deformerKeys());
-  request.threads = ThreadBudget::machine().cores();
-  request.loadScene = std::move(loader);
-  request.posedPath = load.posed.path;  // read on the job, with the scene
-  state.jobs.load = std::move(load);
-  state.jobs.precompute.start(std::move(request));
+  startLoad(state, nullptr, std::move(loader), std::move(load));
 }
 
 void requestSceneFiles(AppState& state, const std::string& meshPath, const std::string& cagePath,
@@ -118,13 +125,14 @@ void showLoadedScene(AppState& state, std::shared_ptr<const Scene> scene) {
   std::vector<std::string> notices;                            // for the status bar and the log
   PendingLoad load = state.jobs.load.value_or(PendingLoad{});  // none: a scene installed directly (tests)
   if (state.jobs.load) state.jobs.load->sceneShown = true;
+  if (load.session) applySessionSettings(state, *load.session);  // the open document changes only now
   const std::shared_ptr<const Scene> previous = state.model.scene;
   installScene(state, std::move(scene));
   state.document.pose = state.model.scene->restCage.vertices;
   state.view.camera.setMode2D(state.model.scene->dim() == 2);
   frameRest(state);
-  state.view.frameRequested = !load.camera.has_value();
-  if (load.camera) state.view.camera.setState(*load.camera);
+  state.view.frameRequested = !load.session.has_value();
+  if (load.session) state.view.camera.setState(load.session->camera);
   if (load.pose) {
     if (load.pose->rows() == state.document.pose.rows() && load.pose->cols() == state.document.pose.cols()) {
       state.document.pose = *load.pose;
@@ -213,6 +221,7 @@ void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
   state.jobs.cageMaker.setOnFinished(wake);
   state.jobs.exporter.setOnFinished(wake);
   state.jobs.posedCage.setOnFinished(wake);
+  state.jobs.session.setOnFinished(wake);
 }
 
 bool pollWorker(AppState& state) {

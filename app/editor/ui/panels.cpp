@@ -190,6 +190,15 @@ void drawTetrahedraChoice(AppState& state) {
       "1 to 4: CGAL's, finer with each level. Esc stops a long tetrahedralization.");
 }
 
+// A job's stage, its progress bar and Cancel (with `cancelTip`); true when Cancel was clicked.
+bool jobProgress(const std::string& stage, double progress, const char* cancelTip) {
+  ImGui::TextUnformatted(stage.empty() ? "starting..." : stage.c_str());
+  ImGui::ProgressBar(static_cast<float>(progress), ImVec2(-1.0f, 0.0f));
+  const bool cancel = ImGui::Button("Cancel");
+  tooltip(cancelTip);
+  return cancel;
+}
+
 }  // namespace
 
 void drawControlPanel(AppState& state) {
@@ -304,12 +313,14 @@ void drawControlPanel(AppState& state) {
   }
 
   sectionHeader("Precompute");
-  if (state.jobs.precompute.busy()) {
-    const std::string stage = state.jobs.precompute.stage();
-    ImGui::TextUnformatted(stage.empty() ? "starting..." : stage.c_str());
-    ImGui::ProgressBar(static_cast<float>(state.jobs.precompute.progress()), ImVec2(-1.0f, 0.0f));
-    if (ImGui::Button("Cancel")) state.jobs.precompute.cancel();
-    tooltip("Stop the precomputation; the previous scene stays (Esc)");
+  if (state.jobs.session.busy()) {  // a session being read (session_read.h); its scene loads next
+    if (jobProgress(state.jobs.session.stage(), state.jobs.session.progress(),
+                    "Stop opening the session; the open document stays (Esc)"))
+      state.jobs.session.cancel();
+  } else if (state.jobs.precompute.busy()) {
+    if (jobProgress(state.jobs.precompute.stage(), state.jobs.precompute.progress(),
+                    "Stop the precomputation; the previous scene stays (Esc)"))
+      state.jobs.precompute.cancel();
   } else {
     ImGui::Text("ready (%.2f s)", state.status.stats.precomputeSeconds);
   }
