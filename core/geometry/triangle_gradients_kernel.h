@@ -27,13 +27,15 @@ namespace somicage {
 
 // What the gradients need of a face beyond its frame, once per cage: its derivative tensors rotated to world
 // coordinates (W_ij.. = sum Q_ia Q_jb .. L_ab.., Q = [u v n]) as tables on the tensors' distinct entries, so that a
-// rotation costs 10 N multiply-adds for N local entries (70 for a trace-free 3-tensor) instead of about 140 for the
-// three contractions with Q; the gradients rotate four 3-tensors and three matrices per face. Plain data, made by
+// rotation costs 10 N multiply-adds for N local entries (a trace-free 3-tensor: 49 for seven world entries, the
+// other three from its traces) instead of about 140 for the three contractions with Q; the gradients rotate four
+// 3-tensors and three matrices per face. Plain data, made by
 // the caller and shared by every instruction set's copy of the kernels.
 struct PortableGradientFrame {
-  double sym3[10][10];       // world entry (kSymmetric3's order) of a symmetric 3-tensor from its 10 local ones
-  double traceFree3[10][7];  // of a trace-free one from uuu, uuv, uvv, vvv, uun, uvn, vvn, times -1/3 (B's factor)
-  double traceFree2[6][5];   // world entry (kSymmetric2's order) of a trace-free symmetric matrix from uu uv un vv vn
+  double sym3[10][10];      // world entry (kSymmetric3's order) of a symmetric 3-tensor from its 10 local ones
+  double traceFree3[7][7];  // of a trace-free one (its world entries but xzz, yzz, zzz) from uuu, uuv, uvv, vvv,
+                            // uun, uvn, vvn, times -1/3 (B's factor)
+  double traceFree2[6][5];  // world entry (kSymmetric2's order) of a trace-free symmetric matrix from uu uv un vv vn
 };
 SOMICAGE_ISA_BEGIN  // the tables above are one type for every copy; what follows is per copy
 
@@ -66,6 +68,9 @@ constexpr int kSymmetric3[3][3][3] = {{{0, 1, 2}, {1, 3, 4}, {2, 4, 5}},
                                       {{1, 3, 4}, {3, 6, 7}, {4, 7, 8}},
                                       {{2, 4, 5}, {4, 7, 8}, {5, 8, 9}}};
 constexpr int kSymmetric2[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};  // (xx, xy, xz, yy, yz, zz)
+// The world entries of a trace-free symmetric 3-tensor that its table gives (all but xzz, yzz, zzz: those follow from
+// the traces T_aii = 0, three additions instead of 21 multiply-adds).
+constexpr int kTraceFreeRows[7] = {0, 1, 2, 3, 4, 6, 7};
 
 // w = table l: a tensor's local entries l to its world ones w by one of PortableGradientFrame's tables.
 template <int Rows, int N, typename Scalar>
@@ -98,10 +103,10 @@ SOMICAGE_HD inline void makeGradientFrame(const PortableTriangleFrame& f, Portab
               g.sym3[kSymmetric3[i][j][k]][kSymmetric3[a][b][c]] += q[i][a] * q[j][b] * q[k][c];
         }
   // Trace-free: unn = -(uuu + uvv), vnn = -(uuv + vvv), nnn = -(uun + vvn); nn = -(uu + vv).
-  for (int w = 0; w < 10; ++w) {
-    const double* s = g.sym3[w];
+  for (int r = 0; r < 7; ++r) {
+    const double* s = g.sym3[portable_detail::kTraceFreeRows[r]];
     const double tf[7] = {s[0] - s[5], s[1] - s[8], s[3] - s[5], s[6] - s[8], s[2] - s[9], s[4], s[7] - s[9]};
-    for (int c = 0; c < 7; ++c) g.traceFree3[w][c] = -kThird * tf[c];
+    for (int c = 0; c < 7; ++c) g.traceFree3[r][c] = -kThird * tf[c];
   }
   for (int w = 0; w < 6; ++w) {
     const double* s = sym2[w];
@@ -195,7 +200,11 @@ SOMICAGE_HD inline void triangleGradientTensorsPortable(const PortableTriangleFr
     Tk[0] += g0 * h * H0[0], Tk[1] += g1 * h * H0[0], Tk[2] += g0 * h * H0[1], Tk[3] += g1 * h * H0[1];
     Tk[4] += g0 * h * H0[2], Tk[5] += g0 * h * H0[3], Tk[6] += g1 * h * H0[3];
     portable_detail::rotateByTable(tables.traceFree2, H[k], out.H[k]);
-    portable_detail::rotateByTable(tables.traceFree3, T[k], out.Tb[k]);
+    Scalar Tw[7];
+    portable_detail::rotateByTable(tables.traceFree3, T[k], Tw);
+    Scalar* Tb = out.Tb[k];
+    for (int r = 0; r < 7; ++r) Tb[portable_detail::kTraceFreeRows[r]] = Tw[r];
+    Tb[5] = -(Tb[0] + Tb[3]), Tb[8] = -(Tb[1] + Tb[6]), Tb[9] = -(Tb[2] + Tb[7]);  // xzz, yzz, zzz
     const Scalar Hn[3] = {H[k][2], H[k][4], -(H[k][0] + H[k][3])};  // grad D_k (local)
     portable_detail::rotateVector(q, Hn, out.Hn[k]);
   }

@@ -113,13 +113,16 @@ void writeGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& 
                         const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<Scalar>>& gradients) {
   const bool contiguous = group.laneStride == 1;
   for (std::size_t a = 0; a < gradients.size(); ++a) {
-    Scalar* out[kMaxGroupLanes];
+    Scalar* out[kMaxGroupLanes] = {};
     for (int l = 0; l < group.count; ++l) out[l] = gradients[a].row(group.first + l).data();
-    double sums[kMaxGroupLanes][vertexTermCount(3)];
-    const double* tail =
-        contiguous && group.count == 8   ? writeMainColumns<8>(layout, group, group.rows[a], out, sums)
-        : contiguous && group.count == 4 ? writeMainColumns<4>(layout, group, group.rows[a], out, sums)
-                                         : writeMainColumns<0>(layout, group, group.rows[a], out, sums);
+    double sums[kMaxGroupLanes][vertexTermCount(3)] = {};
+    const double* tail;
+    if (contiguous && group.count == 8)
+      tail = writeMainColumns<8>(layout, group, group.rows[a], out, sums);
+    else if (contiguous && group.count == 4)
+      tail = writeMainColumns<4>(layout, group, group.rows[a], out, sums);
+    else
+      tail = writeMainColumns<0>(layout, group, group.rows[a], out, sums);
     for (int l = 0; l < group.count; ++l) {
       if (regions[static_cast<std::size_t>(group.first + l)] != PointRegion::Inside)
         gradients[a].row(group.first + l).setZero();
