@@ -88,7 +88,8 @@ void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, do
 }
 
 namespace {
-// A pane too small for its overlays: the scene keeps at least this share of the size it would have without them.
+// A pane too small for its overlays and the gizmo: the camera moves back at most to 1 / kLeastShare times the
+// distance without them (the scene a third of its size there), and they cover part of it.
 constexpr double kLeastShare = 1.0 / 3.0;
 }  // namespace
 
@@ -106,6 +107,7 @@ void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, co
   const auto perPixel = [&](const Eigen::Vector3d& rel, double distance) {  // world length of a pixel there
     return mode2D_ ? distance * tanV / cy : (distance + rel.dot(forward())) / focal;
   };
+  const double farthest = fitted / kLeastShare;
   double distance = fitted;
   if (room.hasPoint) {  // the point at least pointPixels inside each edge: its offset shrinks as the distance grows
     const Eigen::Vector3d rel = room.point - state_.target;
@@ -136,7 +138,7 @@ void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, co
     }
     return true;
   };
-  const double farthest = std::max(distance, fitted / kLeastShare);
+  distance = std::min(distance, farthest);
   if (!clear(distance)) {
     double near = distance, far = farthest;
     if (clear(far)) {
@@ -144,7 +146,7 @@ void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, co
     }
     distance = far;
   }
-  state_.distance = std::min(distance, farthest);
+  state_.distance = distance;
 }
 
 double OrbitCamera::worldPerPixel(const Eigen::Vector3d& point, double viewportHeight) const {
