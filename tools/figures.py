@@ -25,6 +25,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 EXE = os.environ.get("SOMICAGE", os.path.join(ROOT, "build", "app", "somicage"))
 MODELS = os.path.normpath(os.environ.get("SOMICAGE_MODELS", os.path.join(ROOT, "..", "shared", "models")))
 PANE_SIZE = (340, 340)  # one pane of a figure; a shot of n panes is n * 340 wide
+# Fig. 3's panes: wider, so the selected vertex's gizmo ring (100 pixels, framed inside the pane: docs/editor.md,
+# "Framing") leaves the bar most of the width.
+FIG03_PANE = (500, 400)
 # The written PNGs have COLORS palette colours (docs/gallery stays under the budget tests/docs checks), among them
 # the colours a median cut would merge into the greys because they cover few pixels, when the image has them: the
 # colour maps' stops (render/color_maps.cpp: cool-warm, viridis), which the legends show, and the fold-over magenta
@@ -248,16 +251,60 @@ def editor_boxes(pane, background):
     return found
 
 
+def clear_crop(mesh, boxes, size, zoom, least=0):
+    """The crop (y0, x0, side) of a pane (`mesh`: its mesh's pixels) that zoom_panes scales to `size` (h, w): the
+    closest (smallest side, from the mesh's box with a 5 % margin up to twice the pane: beyond the pane is background)
+    that holds the mesh and keeps it out of the overlay boxes pasted back at their own size (the editor frames its
+    scene clear of them, docs/editor.md "Framing"; pasted over a zoomed crop they would cover it again), and of
+    those the one that centres the mesh best; `least`: the smallest side to try. Coordinates are the pane's; y0 and x0
+    may be negative."""
+    H, W = mesh.shape
+    h, w = size
+    pad = H // 2
+    padded = np.pad(mesh, pad)
+    inside = np.pad(padded.astype(np.int32).cumsum(0).cumsum(1), ((1, 0), (1, 0)))  # integral image
+
+    def any_mesh(y_lo, y_hi, x_lo, x_hi):
+        y_lo, y_hi = max(int(y_lo) + pad, 0), min(int(np.ceil(y_hi)) + pad, H + 2 * pad)
+        x_lo, x_hi = max(int(x_lo) + pad, 0), min(int(np.ceil(x_hi)) + pad, W + 2 * pad)
+        if y_lo >= y_hi or x_lo >= x_hi:
+            return False
+        return inside[y_hi, x_hi] - inside[y_lo, x_hi] - inside[y_hi, x_lo] + inside[y_lo, x_lo] > 0
+
+    ys, xs = np.nonzero(mesh)
+    if len(ys) == 0:
+        return 0, 0, H
+    pasted = [(y if y < H // 2 else h - (H - y), x if x < W // 2 else w - (W - x), bh, bw) for y, x, bh, bw in boxes]
+    pasted.append((0, 0, 24, w))  # the view's name, which label_panes writes over the top
+    smallest = max(least, int(np.clip(max(ys.ptp() + 1, (xs.ptp() + 1) * h / w) * 1.05, H // zoom, H)))
+    for side in sorted(set(np.linspace(smallest, 2 * H, 60).astype(int))):
+        sw, k = side * w // h, side / h  # pane pixels per output pixel
+        best = None
+        for y0 in range(max(-pad, ys.max() + 1 - side), min(ys.min(), H + pad - side) + 1, 2):
+            for x0 in range(max(-pad, xs.max() + 1 - sw), min(xs.min(), W + pad - sw) + 1, 2):
+                if any(any_mesh(y0 + py * k, y0 + (py + bh) * k, x0 + px * k, x0 + (px + bw) * k)
+                       for py, px, bh, bw in pasted):
+                    continue
+                off = abs(y0 + side / 2 - (ys.min() + ys.max()) / 2) + abs(x0 + sw / 2 - (xs.min() + xs.max()) / 2)
+                if best is None or off < best[0]:
+                    best = (off, y0, x0)
+        if best is not None:
+            return best[1], best[2], side
+    return 0, 0, H  # nothing clear: the whole pane
+
+
 def zoom_panes(path, count, zoom):
     """The editor frames the mesh and the whole posed cage, so a 3D mesh fills little of its pane. Each pane of the
-    zoom-times larger shot is cropped to a square around its mesh (at most zoom times closer: pixels stay sharp),
-    scaled to the pane's size, and the editor's numbers (top left) and legend (bottom right) are put back on it."""
+    zoom-times larger shot is cropped to a square around its mesh (at most zoom times closer: pixels stay sharp; as
+    close as keeps the mesh clear of the boxes, clear_crop), scaled to the pane's size, and the editor's numbers (top
+    left) and legend (bottom right) are put back on it at their own size."""
     big = np.asarray(Image.open(path).convert("RGB"))
     colours, counts = np.unique(big.reshape(-1, 3), axis=0, return_counts=True)
     background = colours[counts.argmax()]
     H, W = big.shape[0], big.shape[1] // count
     h, w = H // zoom, W // zoom
     result = Image.new("RGB", (w * count, h))
+    panes = []
     for k in range(count):
         pane = big[:, k * W:(k + 1) * W]
         drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
@@ -265,17 +312,18 @@ def zoom_panes(path, count, zoom):
         overlay = np.zeros_like(drawn)
         for y, x, bh, bw in boxes:
             overlay[y:y + bh, x:x + bw] = True
-        ys, xs = np.nonzero(drawn & ~overlay)
-        if len(ys) == 0:
-            ys, xs = np.array([0, H - 1]), np.array([0, W - 1])
-        # The mesh fills the lower 78 % of the square (the numbers stay above it), with a small margin.
-        side = int(np.clip(max(ys.max() - ys.min(), (xs.max() - xs.min()) * h / w) * 1.05 / 0.78, H // zoom, H))
-        y0 = int(np.clip(ys.min() - 0.19 * side, 0, H - side))
+        panes.append((pane, boxes, overlay, clear_crop(drawn & ~overlay, boxes, (h, w), zoom)))
+    common = max(crop[2] for _, _, _, crop in panes)  # one scale for every pane: their meshes compare
+    for k, (pane, boxes, overlay, _) in enumerate(panes):
+        drawn = np.abs(pane.astype(int) - background).max(axis=2) > 12
+        y0, x0, side = clear_crop(drawn & ~overlay, boxes, (h, w), zoom, least=common)
         sw = side * w // h
-        x0 = int(np.clip((xs.max() + xs.min()) // 2 - sw // 2, 0, W - sw))
         clean = pane.copy()
         clean[overlay] = background  # the boxes must not come along, scaled down, in the crop
-        crop = Image.fromarray(clean[y0:y0 + side, x0:x0 + sw]).resize((w, h), Image.LANCZOS)
+        pad = H // 2  # a crop may reach beyond the pane (clear_crop): background there
+        clean = np.pad(clean, ((pad, pad), (pad, pad), (0, 0)))
+        clean[:pad], clean[-pad:], clean[:, :pad], clean[:, -pad:] = background, background, background, background
+        crop = Image.fromarray(clean[pad + y0:pad + y0 + side, pad + x0:pad + x0 + sw]).resize((w, h), Image.LANCZOS)
         for y, x, bh, bw in boxes:  # back at their own size, as far from the same corner
             crop.paste(Image.fromarray(pane[y:y + bh, x:x + bw]), (x if x < W // 2 else w - (W - x),
                                                                     y if y < H // 2 else h - (H - y)))
@@ -427,7 +475,7 @@ def fig02(out):  # paper Fig. 2: MANHEAD face lift over nu x gamma, global varia
 def fig03(out):  # paper Fig. 3: the 2D kernels at two nu (the built-in 2D demo)
     editor_figure(out, "fig03", "Fig. 3: |T_0 n_0| of cage vertex 0 at nu = 0 and 0.45",
                   ["--demo", "2d", "--view", "somigliana:nu=0", "--view", "somigliana:nu=0.45", "--show", "field:0",
-                   "--hide-ui", "--size", "%dx%d" % (2 * PANE_SIZE[0], PANE_SIZE[1])],
+                   "--hide-ui", "--size", "%dx%d" % (2 * FIG03_PANE[0], FIG03_PANE[1])],
                   ["The legend's range (printed as `legend field`) leaves out the most extreme 2 % of the vertices."])
 
 

@@ -235,7 +235,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
       state.view.hideUi ? 0.0 : statusBarHeight() + (state.animation.showPanels ? timelinePanelHeight() : 0.0);
   const std::vector<ViewRect> views =
       layoutViews(io.DisplaySize.x, io.DisplaySize.y, left, top, bottom, static_cast<int>(state.views().size()));
-  state.view.viewAspect = views.front().width / views.front().height;
+  state.view.panes = views;
   if (!state.view.hideUi) {
     drawMainMenu(state);
     drawControlPanel(state);

@@ -28,7 +28,7 @@ class InputHarness : public ::testing::Test {
   void SetUp() override {
     createHeadlessImGui(1000, 700);
     views = layoutViews(1000, 700, 0, 0, 0, 1);
-    state.view.viewAspect = views[0].width / views[0].height;
+    state.view.panes = views;
     requestDemo(state, 3);
     std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
     ASSERT_TRUE(out.has_value());

@@ -121,7 +121,7 @@ DemoView demoView() {
   std::optional<PrecomputeOutcome> out = waitForOutcome(state.jobs.precompute);
   installOutcome(state, std::move(*out));
   const ViewRect view = layoutViews(kWidth, kHeight, panelWidth(kWidth), 19, 25, 1).front();
-  state.view.viewAspect = view.width / view.height;
+  state.view.panes = {view};
   frameAll(state);
   // A handle well apart from the others on screen: the drag picks it and nothing else.
   const Eigen::MatrixXd& pose = state.document.pose;

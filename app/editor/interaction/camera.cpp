@@ -82,16 +82,71 @@ void OrbitCamera::pan(double dxPixels, double dyPixels, double viewportHeight) {
 void OrbitCamera::zoom(double steps) { state_.distance = std::max(state_.distance * std::pow(0.85, steps), 1e-9); }
 
 void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double aspect) {
+  FrameRoom room;
+  room.width = std::clamp(aspect, 1e-3, 1e3);
+  frame(lo, hi, room);
+}
+
+namespace {
+// A pane too small for its overlays and the gizmo: the camera moves back at most to 1 / kLeastShare times the
+// distance without them (the scene a third of its size there), and they cover part of it.
+constexpr double kLeastShare = 1.0 / 3.0;
+}  // namespace
+
+void OrbitCamera::frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const FrameRoom& room) {
   state_.target = 0.5 * (lo + hi);
   const double radius = std::max(0.5 * (hi - lo).norm(), 1e-9);
-  const double tanV = std::tan(0.5 * kFovY), tanH = tanV * std::clamp(aspect, 1e-3, 1e3);
-  const double tanMin = std::min(tanV, tanH);
-  if (mode2D_) {
-    // Orthographic: the visible half-height is distance * tanV and the half-width that times aspect.
-    state_.distance = 1.05 * radius / tanMin;
-  } else {
-    state_.distance = 1.1 * radius / std::sin(std::atan(tanMin));
+  const double cx = 0.5 * std::max(room.width, 1e-9), cy = 0.5 * std::max(room.height, 1e-9);
+  const double tanV = std::tan(0.5 * kFovY), tanMin = tanV * std::min(cx / cy, 1.0);
+  // The pane: the box's circumscribed sphere, larger by a margin, fits it (orbiting keeps it in view).
+  const double fitted = mode2D_ ? 1.05 * radius / tanMin  // orthographic: the visible half-height is distance * tanV
+                                : 1.1 * radius / std::sin(std::atan(tanMin));
+  // A point's offset from the pane's centre in pixels at a distance (right, down): focal * offset / depth, or in 2D
+  // offset * cy / (distance * tanV).
+  const double focal = cy / tanV;
+  const auto perPixel = [&](const Eigen::Vector3d& rel, double distance) {  // world length of a pixel there
+    return mode2D_ ? distance * tanV / cy : (distance + rel.dot(forward())) / focal;
+  };
+  const double farthest = fitted / kLeastShare;
+  double distance = fitted;
+  if (room.hasPoint) {  // the point at least pointPixels inside each edge: its offset shrinks as the distance grows
+    const Eigen::Vector3d rel = room.point - state_.target;
+    const double depth = mode2D_ ? 0.0 : rel.dot(forward());
+    const double x = std::abs(rel.dot(right())), y = std::abs(rel.dot(up()));
+    const double scale = mode2D_ ? cy / tanV : focal;  // offset = scale * x / (distance [2D] or distance + depth)
+    if (cx > room.pointPixels) distance = std::max(distance, scale * x / (cx - room.pointPixels) - depth);
+    if (cy > room.pointPixels) distance = std::max(distance, scale * y / (cy - room.pointPixels) - depth);
   }
+  // The overlays: the projected bounding box of the box's corners, 5 % larger about the centre, must miss each one
+  // (but one over the pane's centre, which nothing can miss). It shrinks towards the centre as the distance grows,
+  // so the least distance that clears them is found by bisection.
+  const auto clear = [&](double d) {
+    double minX = 1e300, maxX = -1e300, minY = 1e300, maxY = -1e300;  // pixels from the centre, right and down
+    for (int k = 0; k < 8; ++k) {
+      const Eigen::Vector3d corner((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(), (k & 4) ? hi.z() : lo.z());
+      const Eigen::Vector3d rel = corner - state_.target;
+      const double pixel = perPixel(rel, d), x = 1.05 * rel.dot(right()) / pixel, y = -1.05 * rel.dot(up()) / pixel;
+      minX = std::min(minX, x);
+      maxX = std::max(maxX, x);
+      minY = std::min(minY, y);
+      maxY = std::max(maxY, y);
+    }
+    for (const ViewRect& r : room.keepClear) {
+      const double x0 = r.x - cx, x1 = r.x + r.width - cx, y0 = r.y - cy, y1 = r.y + r.height - cy;
+      const bool overCentre = x0 <= 0 && x1 >= 0 && y0 <= 0 && y1 >= 0;
+      if (!overCentre && minX < x1 && maxX > x0 && minY < y1 && maxY > y0) return false;
+    }
+    return true;
+  };
+  distance = std::min(distance, farthest);
+  if (!clear(distance)) {
+    double near = distance, far = farthest;
+    if (clear(far)) {
+      for (int i = 0; i < 60; ++i) (clear(0.5 * (near + far)) ? far : near) = 0.5 * (near + far);
+    }
+    distance = far;
+  }
+  state_.distance = distance;
 }
 
 double OrbitCamera::worldPerPixel(const Eigen::Vector3d& point, double viewportHeight) const {

@@ -4,9 +4,23 @@
 
 #include <Eigen/Core>
 
+#include <vector>
+
 #include "engine/camera_state.h"
+#include "ui/layout.h"
 
 namespace somicage::editor {
+
+// The pane a framing is for: its size in pixels, the boxes drawn over it that the framed box must stay clear of (pane
+// pixels, ui/pane_overlays.h), and a world point that must stay `pointPixels` inside the pane's edges (the gizmo's ring
+// around the selection, gizmo.h). A box that covers the pane's centre cannot be kept clear and is let be.
+struct FrameRoom {
+  double width = 1.0, height = 1.0;
+  std::vector<ViewRect> keepClear;
+  bool hasPoint = false;
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();
+  double pointPixels = 0.0;
+};
 
 class OrbitCamera {
  public:
@@ -35,6 +49,10 @@ class OrbitCamera {
   void zoom(double steps);
   // Fits the box [lo, hi] in a viewport of the given aspect (width / height), keeping the direction.
   void frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double aspect = 1.0);
+  // Frames it in the room's pane as frame(lo, hi, aspect) does (the target at the box's centre, its bounding sphere
+  // in view, so orbiting keeps it there), then, if need be, farther: until the room's point is inside and the
+  // projected bounding box of [lo, hi] misses the room's boxes (not farther than 3 times: a pane too small for them).
+  void frame(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, const FrameRoom& room);
 
   // World length of one pixel at the depth of `point` for a viewport `viewportHeight` pixels high.
   double worldPerPixel(const Eigen::Vector3d& point, double viewportHeight) const;

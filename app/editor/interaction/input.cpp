@@ -144,10 +144,7 @@ void drawAxisLine(const AppState& state, const std::vector<ViewRect>& views) {
 // The selection's gizmo (gizmo.h) in view `r`; `hot` is the part under the mouse (drawn brighter).
 bool selectionGizmo(const AppState& state, const ViewRect& r, GizmoLayout& g) {
   if (state.input.selection.empty()) return false;
-  const Eigen::VectorXd c = state.input.selection.centroid(state.document.pose);
-  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
-  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(c.size(), 3); ++k) pivot[k] = c[k];
-  return layoutGizmo(state.view.camera, pivot, state.dim(), r.width, r.height, g);
+  return layoutGizmo(state.view.camera, selectionPivot(state), state.dim(), r.width, r.height, g);
 }
 
 void drawGizmo(const AppState& state, const ViewRect& r, const GizmoPart& hot) {

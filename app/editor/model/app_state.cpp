@@ -8,7 +8,10 @@
 
 #include "deform/parameter_schema.h"
 #include "geometry/volume_mesh.h"
+#include "interaction/gizmo.h"
 #include "model/view_quantity.h"
+#include "ui/layout.h"
+#include "ui/pane_overlays.h"
 
 namespace somicage::editor {
 
@@ -114,13 +117,38 @@ void removeCompareView(AppState& state, std::size_t v) {
   setCompareViews(state, std::move(views));
 }
 
+Eigen::Vector3d selectionPivot(const AppState& state) {
+  const Eigen::VectorXd c = state.input.selection.centroid(state.document.pose);
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();
+  for (Eigen::Index k = 0; k < std::min<Eigen::Index>(c.size(), 3); ++k) pivot[k] = c[k];
+  return pivot;
+}
+
+// The room framing has in the first pane (the panes share the camera and are as large, to a pixel): clear of every
+// pane's overlays (pane_overlays.h) and, with a selection, its gizmo's ring inside the pane (gizmo.h).
+namespace {
+FrameRoom frameRoom(const AppState& state) {
+  FrameRoom room;
+  const ViewRect pane = state.view.panes.empty() ? ViewRect{} : state.view.panes.front();
+  room.width = pane.width;
+  room.height = pane.height;
+  room.keepClear = paneOverlayBoxes(state, state.view.panes);
+  if (state.view.showCage && !state.input.selection.empty() && state.document.pose.rows() > 0) {
+    room.point = selectionPivot(state);
+    room.hasPoint = true;
+    room.pointPixels = GizmoLayout::kRingPixels + GizmoLayout::kGrabPixels;
+  }
+  return room;
+}
+}  // namespace
+
 void frameAll(AppState& state) {
   if (!state.model.scene) return;
   ensureCpuPoints(state, 0);
   Eigen::Vector3d lo, hi, clo, chi;
   bounds3(displayedPoints(state, 0), lo, hi);
   bounds3(state.document.pose.rows() > 0 ? state.document.pose : state.model.scene->restCage.vertices, clo, chi);
-  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.view.viewAspect);
+  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), frameRoom(state));
 }
 
 void frameRest(AppState& state) {
@@ -128,7 +156,7 @@ void frameRest(AppState& state) {
   Eigen::Vector3d lo, hi, clo, chi;
   bounds3(state.model.scene->meshVertices, lo, hi);
   bounds3(state.model.scene->restCage.vertices, clo, chi);
-  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), state.view.viewAspect);
+  state.view.camera.frame(lo.cwiseMin(clo), hi.cwiseMax(chi), frameRoom(state));
 }
 
 }  // namespace somicage::editor

@@ -110,7 +110,7 @@ struct ViewState {
   std::vector<ViewSpec> compareViews = viewsOf(defaultCompareMethods());  // the panes while `compare` is on
   ViewQuantities quantities;  // what each view shows and its installed measurements (view_quantities.h)
   OrbitCamera camera;
-  double viewAspect = 1.6;      // width / height of the first viewport, set by the frame loop
+  std::vector<ViewRect> panes = {ViewRect{0, 0, 1000, 625}};  // the views' panes (layout.h), set by the frame loop
   bool frameRequested = false;  // frame the rest scene once the viewports are known
   bool showCage = true;
   bool showMesh = true;
@@ -284,7 +284,10 @@ void setCompare(AppState& state, bool on);
 void setCompareViews(AppState& state, std::vector<ViewSpec> views);
 void removeCompareView(AppState& state, std::size_t v);
 
-// Frames the current pose and the displayed mesh (F); frameRest frames the rest cage and mesh.
+// The selection's centroid on the posed cage, in 3D (z = 0 in 2D): the gizmo's pivot.
+Eigen::Vector3d selectionPivot(const AppState& state);
+// Frames the current pose and the displayed mesh (F), clear of the panes' overlays and with the selection's gizmo
+// inside the pane ("Framing" in docs/editor.md); frameRest frames the rest cage and mesh.
 void frameAll(AppState& state);
 void frameRest(AppState& state);
 

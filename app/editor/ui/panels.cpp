@@ -24,6 +24,7 @@
 #include "model/recent_files.h"
 #include "ui/compare_views_panel.h"
 #include "ui/file_dialog.h"
+#include "ui/pane_overlays.h"
 #include "ui/parameter_panel.h"
 #include "ui/quantity_overlay.h"
 #include "ui/unsaved_changes.h"
@@ -397,7 +398,7 @@ void drawViewLabels(const AppState& state, const std::vector<ViewRect>& views) {
   const std::size_t viewCount = state.views().size();
   for (std::size_t v = 0; v < views.size() && v < viewCount; ++v) {
     const std::string label = viewLabel(state, v);
-    const ImVec2 pos(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8));
+    const ImVec2 pos(static_cast<float>(views[v].x + kLabelLeft), static_cast<float>(views[v].y + kLabelTop));
     const ImVec2 size = ImGui::CalcTextSize(label.c_str());
     // Clipped to the pane: a view with several own parameters in a narrow pane must not run into the next one.
     draw->PushClipRect(

@@ -23,6 +23,7 @@
 #include "model/selection.h"
 #include "model/view_quantities.h"
 #include "model/view_quantity.h"
+#include "ui/pane_overlays.h"
 #include "ui/panels.h"  // tooltip
 
 namespace somicage::editor {
@@ -171,7 +172,6 @@ ImU32 toImColor(const Eigen::Vector3f& c) {
 }
 
 const ImU32 kText = IM_COL32(235, 235, 240, 255);
-const char* const kUndefinedNote = "grey: undefined (outside the cage)";
 
 // "views of Somigliana or BEM only": the methods whose descriptor lists element fields (MethodDescriptor::fields).
 std::string methodsShowingFields() {
@@ -195,10 +195,12 @@ void drawCategoryLegend(const QuantityDescriptor& d, const ViewRect& view) {
   const char* labels[2] = {"det J > 0", "fold-over (det J <= 0)"};
   const ImU32 colors[2] = {toImColor(render::colorMapColor(render::kDivergingMap, 0.5f)),
                            toImColor(render::kFoldoverColor)};
-  const float boxW = std::max(ImGui::CalcTextSize(d.name).x, 18 + ImGui::CalcTextSize(labels[1]).x);
-  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
-  const float y0 = static_cast<float>(view.y + view.height) - 58;
-  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + 50), IM_COL32(20, 20, 24, 190), 3.0f);
+  const ViewRect box =
+      legendBox(view, std::max(ImGui::CalcTextSize(d.name).x, 18 + ImGui::CalcTextSize(labels[1]).x), false);
+  const float x0 = static_cast<float>(box.x + kLegendPadding), y0 = static_cast<float>(box.y + 24);
+  draw->AddRectFilled(ImVec2(static_cast<float>(box.x), static_cast<float>(box.y)),
+                      ImVec2(static_cast<float>(box.x + box.width), static_cast<float>(box.y + box.height)),
+                      IM_COL32(20, 20, 24, 190), 3.0f);
   draw->AddText(ImVec2(x0, y0 - 20), kText, d.name);
   for (int k = 0; k < 2; ++k) {
     const float y = y0 + 4 + 20 * static_cast<float>(k);
@@ -218,22 +220,23 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
   const bool isFixed = fixed != state.view.quantities.show.ranges.end() && fixed->second.fixed;
   const bool log = d.scale == ColorScale::LogDiverging;
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float w = 220, h = 14;
-  const std::string title = std::string(d.name) + (log ? "  (log scale)" : "") + (isFixed ? "  fixed" : "");
-  const char* note = d.source == QuantitySource::Jacobian ? "    fold-over (det J <= 0)" : kUndefinedNote;
+  const float w = static_cast<float>(kLegendBarWidth), h = 14;
+  const std::string title = legendTitle(d, isFixed);
+  const char* note = legendNote(d);
   // The automatic range leaves out each view's most extreme 2 % (view_quantity.h): say how many take the end colours.
   const long beyond = verticesBeyond(
       viewsShowing(state.view.quantities.show, quantity, state.view.quantities.measurements(state.views().size())), range);
   char beyondText[64] = "";
   if (beyond > 0)
     std::snprintf(beyondText, sizeof beyondText, "%ld %s beyond the ends", beyond, beyond == 1 ? "vertex" : "vertices");
-  const float extra = beyond > 0 ? 18.0f : 0.0f;
-  const float boxW = std::max(
-      {w, ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x, ImGui::CalcTextSize(beyondText).x});
-  const float x0 = static_cast<float>(view.x + view.width) - boxW - 24;
-  const float y0 = static_cast<float>(view.y + view.height) - 58 - extra;
-  draw->AddRectFilled(ImVec2(x0 - 10, y0 - 24), ImVec2(x0 + boxW + 10, y0 + h + 36 + extra), IM_COL32(20, 20, 24, 190),
-                      3.0f);
+  const ViewRect box = legendBox(view,
+                                 std::max({ImGui::CalcTextSize(title.c_str()).x, ImGui::CalcTextSize(note).x,
+                                           ImGui::CalcTextSize(beyondText).x}),
+                                 beyond > 0);
+  const float x0 = static_cast<float>(box.x + kLegendPadding), y0 = static_cast<float>(box.y + 24);
+  draw->AddRectFilled(ImVec2(static_cast<float>(box.x), static_cast<float>(box.y)),
+                      ImVec2(static_cast<float>(box.x + box.width), static_cast<float>(box.y + box.height)),
+                      IM_COL32(20, 20, 24, 190), 3.0f);
   if (beyond > 0) draw->AddText(ImVec2(x0, y0 + h + 37), IM_COL32(170, 170, 180, 255), beyondText);
   draw->AddText(ImVec2(x0, y0 - 20), kText, title.c_str());
   const int steps = 64;
@@ -253,7 +256,7 @@ void drawLegend(const AppState& state, int quantity, const ViewRect& view) {
     draw->AddRectFilled(ImVec2(x0, y0 + h + 20), ImVec2(x0 + 12, y0 + h + 32), toImColor(render::kFoldoverColor));
     draw->AddText(ImVec2(x0 + 18, y0 + h + 19), kText, "fold-over (det J <= 0)");
   } else {
-    draw->AddText(ImVec2(x0, y0 + h + 19), IM_COL32(170, 170, 180, 255), kUndefinedNote);
+    draw->AddText(ImVec2(x0, y0 + h + 19), IM_COL32(170, 170, 180, 255), note);
   }
 }
 
@@ -374,11 +377,10 @@ HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRe
   const std::size_t n = std::min(views.size(), state.views().size());
   if (!state.view.quantities.show.anyShown(n)) return {};
   ImDrawList* draw = ImGui::GetForegroundDrawList();
-  const float line = ImGui::GetTextLineHeightWithSpacing();
   for (std::size_t v = 0; v < n; ++v) {
     const std::string text = viewNumbers(state, v, n);
     if (!text.empty())
-      drawBoxedText(draw, ImVec2(static_cast<float>(views[v].x + 10), static_cast<float>(views[v].y + 8) + line + 2),
+      drawBoxedText(draw, ImVec2(static_cast<float>(views[v].x + kLabelLeft), static_cast<float>(views[v].y + kNumbersTop)),
                     text);
   }
   for (std::size_t v = 0; v < n; ++v) drawFieldArrows(state, v, views[v]);
