@@ -38,10 +38,6 @@ std::vector<DeformerKey> missingDeformers(const AppState& state) {
   return missing;
 }
 
-}  // namespace
-
-namespace {
-
 // A scene's load takes every core (thread_budget.h): until its mesh arrives the UI has nothing to deform, and then
 // only draws it at rest. Its deformers are those of the views it will show: a session's are set only when its scene
 // is shown (applySessionSettings). A session still being read is cancelled: this newer request wins.

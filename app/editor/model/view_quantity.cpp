@@ -157,6 +157,14 @@ bool ShowSettings::anyShown(std::size_t viewCount) const {
   return false;
 }
 
+bool ShowSettings::drawsLegend(std::size_t v, std::size_t viewCount) const {
+  const int quantity = view(v).quantity;
+  if (quantity <= 0) return false;
+  for (std::size_t w = v + 1; w < viewCount; ++w)
+    if (view(w).quantity == quantity) return false;
+  return true;
+}
+
 bool ShowSettings::usesSource(QuantitySource source, std::size_t viewCount) const {
   for (std::size_t v = 0; v < viewCount; ++v)
     if (quantityDescriptor(view(v).quantity).source == source) return true;

@@ -109,6 +109,8 @@ struct ShowSettings {
   // The view a Difference view v compares with among `viewCount` views; -1 when there is none.
   int otherView(std::size_t v, std::size_t viewCount) const;
   bool anyShown(std::size_t viewCount) const;  // some view shows something besides shading
+  // Whether view v draws its quantity's legend: one legend per quantity, in the last view showing it.
+  bool drawsLegend(std::size_t v, std::size_t viewCount) const;
   bool usesSource(QuantitySource source, std::size_t viewCount) const;
 };
 

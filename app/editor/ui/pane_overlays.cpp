@@ -62,17 +62,14 @@ std::vector<ViewRect> paneOverlayBoxes(const AppState& state, const std::vector<
   std::vector<ViewRect> boxes;
   const std::size_t n = std::min(panes.size(), state.views().size());
   const ViewQuantities& q = state.view.quantities;
-  const bool numbers = q.show.anyShown(n);
   for (std::size_t v = 0; v < n; ++v) {
     const ViewRect local{0, 0, panes[v].width, panes[v].height};
     if (!state.view.hideUi) boxes.push_back(labelBox(local, textWidth(viewLabel(state, v))));
     const int quantity = q.show.view(v).quantity;
-    if (!numbers || quantity <= 0) continue;
+    if (quantity <= 0) continue;
     const QuantityDescriptor& d = quantityDescriptor(quantity);
     boxes.push_back(numbersBox(local, kNumbersWidth, numberLines(d.source)));
-    bool last = true;  // the legend is in the last view showing the quantity (drawQuantityOverlay)
-    for (std::size_t w = v + 1; w < n && last; ++w) last = q.show.view(w).quantity != quantity;
-    if (!last) continue;
+    if (!q.show.drawsLegend(v, n)) continue;
     const double content = std::max({textWidth(legendTitle(d, true)), textWidth(legendNote(d)),
                                      textWidth("9999999 vertices beyond the ends"),
                                      18 + textWidth("fold-over (det J <= 0)")});

@@ -384,12 +384,9 @@ HoverReadout drawQuantityOverlay(const AppState& state, const std::vector<ViewRe
                     text);
   }
   for (std::size_t v = 0; v < n; ++v) drawFieldArrows(state, v, views[v]);
-  for (std::size_t v = 0; v < n; ++v) {  // one legend per quantity, in the last view showing it
-    const int quantity = state.view.quantities.show.view(v).quantity;
-    bool last = quantity > 0;
-    for (std::size_t w = v + 1; w < n && last; ++w) last = state.view.quantities.show.view(w).quantity != quantity;
-    if (last) drawLegend(state, quantity, views[v]);
-  }
+  const ShowSettings& show = state.view.quantities.show;
+  for (std::size_t v = 0; v < n; ++v)
+    if (show.drawsLegend(v, n)) drawLegend(state, show.view(v).quantity, views[v]);
   if (state.view.hideUi || !state.view.screenshotRequest.empty()) return {};  // not in a capture
   return drawHoverValue(state, views);
 }
