@@ -153,6 +153,7 @@ struct JobsState {
   ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
   BackgroundJob<PosedCageLoad> posedCage;  // File > Load posed cage, a dropped posed cage: read here, never on the UI
   BackgroundJob<SessionRead> session;      // a session file being opened: read and parsed here (session_read.h)
+  std::uint64_t sessionFrom = 0;           // the document's History::revision() when that read began
   std::optional<PendingLoad> load;
 };
 
@@ -312,7 +313,9 @@ bool saveSessionFile(AppState& state, const std::string& path);  // marks the do
 // Starts reading the session file on JobsState::session (superseding one being read; `read`: a test's reader) and
 // returns; pollSessionRead applies it on the UI thread once read (as applySession), or reports why it could not be read
 // (the InputError: file, line, what is wrong). A cancel (Esc, the panel's Cancel) or an error leaves the document as
-// it was.
+// it was. The caller has asked about unsaved changes (guardUnsaved); if the document changed while the file was read
+// (a commit, undo, redo or jump) and is unsaved, the read session waits for the same question again (Save / Don't
+// save apply it, Cancel drops it), and a finished read is not taken while a question is shown or a handle moves.
 void loadSessionFile(AppState& state, const std::string& path, SessionReader read = readSessionFile);
 bool pollSessionRead(AppState& state);  // the frame loop's: true when a read session was applied
 
