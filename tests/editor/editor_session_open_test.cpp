@@ -434,8 +434,8 @@ TEST(EditorSessionOpen, SaveWritesTheDocumentWithTheEditThenAppliesTheSession) {
 }
 
 // (h) A finished read waits while another question is open (Ctrl+Q meanwhile: the quit question stays, not replaced
-// by the session's) and while a handle moves the cage (G: its edit, once confirmed, asks); an Esc'd transform changes
-// nothing, so the session then comes unasked.
+// by the session's) and during a live edit: a handle moving the cage (G: its edit, once confirmed, asks; an Esc'd
+// transform changes nothing, so the session then comes unasked) and a slider held (nu: committed on release, asks).
 TEST(EditorSessionOpen, AFinishedReadWaitsForAnOpenQuestionAndAMovingHandle) {
   const SessionFiles files;
   {
@@ -480,5 +480,24 @@ TEST(EditorSessionOpen, AFinishedReadWaitsForAnOpenQuestionAndAMovingHandle) {
     framesUntilSettled(state);
     EXPECT_EQ(state.document.unsaved.asking.has_value(), confirmed);
     EXPECT_EQ(sessionApplied(state, files.session), !confirmed);
+  }
+  {
+    SCOPED_TRACE("nu slider held");
+    SteeredSessionReader steered;
+    AppState state;
+    openEditedDemo(state);
+    startOpening(state, files.session, steered);
+    state.input.widgetActive = true;
+    DeformParams params = state.document.params;
+    params.nu = 0.125;
+    setParams(state, params);
+    finishReading(state, steered);
+    expectReadWaiting(state);
+    EXPECT_EQ(state.document.params.nu, 0.125);
+    EXPECT_TRUE(commitEdit(state, "nu"));  // released (IsItemDeactivatedAfterEdit)
+    state.input.widgetActive = false;
+    framesUntilSettled(state);
+    EXPECT_TRUE(state.document.unsaved.asking);
+    EXPECT_FALSE(sessionApplied(state, files.session));
   }
 }

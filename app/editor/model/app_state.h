@@ -129,6 +129,9 @@ struct InputState {
   Selection selection;
   ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
   Interaction mouse;
+  // A panel's widget is held (a slider dragged, a field typed in; the frame loop sets it from ImGui before it polls
+  // the jobs): its live edit is committed only when it lets go.
+  bool widgetActive = false;
 };
 
 // A scene load in flight: what to apply when its scene arrives (showLoadedScene). Present from the request until its
@@ -315,7 +318,8 @@ bool saveSessionFile(AppState& state, const std::string& path);  // marks the do
 // (the InputError: file, line, what is wrong). A cancel (Esc, the panel's Cancel) or an error leaves the document as
 // it was. The caller has asked about unsaved changes (guardUnsaved); if the document changed while the file was read
 // (a commit, undo, redo or jump) and is unsaved, the read session waits for the same question again (Save / Don't
-// save apply it, Cancel drops it), and a finished read is not taken while a question is shown or a handle moves.
+// save apply it, Cancel drops it), and a finished read is not taken while a question is shown or a live edit (a
+// handle, G / R / S, a held widget) is under way.
 void loadSessionFile(AppState& state, const std::string& path, SessionReader read = readSessionFile);
 bool pollSessionRead(AppState& state);  // the frame loop's: true when a read session was applied
 

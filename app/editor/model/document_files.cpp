@@ -201,9 +201,11 @@ bool openReadSession(AppState& state, const std::string& path, const Session& se
 }  // namespace
 
 bool pollSessionRead(AppState& state) {
-  // A finished read waits while another question is open (it would replace it) and while a handle or G / R / S moves
-  // the cage (its edit is committed when it ends, and then counts as a change below).
-  if (state.document.unsaved.asking || state.document.unsaved.afterSave || state.input.mouse.transform) return false;
+  // A finished read waits while another question is open (it would replace it) and while a live edit is under way
+  // (a handle or G / R / S moving the cage, a slider held: committed when it ends, it then counts as a change below).
+  if (state.document.unsaved.asking || state.document.unsaved.afterSave || state.input.mouse.transform ||
+      state.input.widgetActive)
+    return false;
   std::optional<SessionRead> read = state.jobs.session.poll();
   if (!read) return false;
   const std::string& path = read->path;
