@@ -200,6 +200,43 @@ TEST_F(Folder, QuitOpenAndDemoAskWhenThereAreUnsavedChanges) {
   autosave.finish();
 }
 
+// One question at a time: an action guarded while the unsaved-changes question is open (a session dropped on the
+// window, another guarded call) or while the Save session dialog its Save opened is, is refused with a status message
+// that names it and the open question, and what it leaves to undo runs; the question keeps its own action, which the
+// answer carries out. Before, the newer action replaced the open one, which was dropped unseen.
+TEST_F(Folder, AnActionGuardedWhileTheQuestionIsOpenIsRefused) {
+  AppState state;
+  openDemoScene(state);
+  makeAChange(state);
+  write("s.json", "{}");
+  requestQuit(state);
+  bool ran = false, dropped = false;
+  guardUnsaved(
+      state, "open mesh.obj", [&ran](AppState&) { ran = true; }, [&dropped](AppState&) { dropped = true; });
+  ASSERT_TRUE(state.document.unsaved.asking);
+  EXPECT_EQ(state.document.unsaved.asking->what, "quit") << "the open question was replaced";
+  EXPECT_FALSE(ran);
+  EXPECT_TRUE(dropped);
+  EXPECT_EQ(state.status.message, "not done: open mesh.obj (finish the open question first: quit)");
+  openDroppedFiles(state, {path("s.json")});
+  EXPECT_EQ(state.document.unsaved.asking->what, "quit");
+  EXPECT_FALSE(state.jobs.session.busy()) << "the dropped session is read";
+  EXPECT_EQ(state.status.message, "not done: open " + path("s.json") + " (finish the open question first: quit)");
+  answerUnsaved(state, UnsavedChoice::DontSave);
+  EXPECT_TRUE(state.document.quitRequested);
+
+  state.document.quitRequested = false;
+  requestQuit(state);
+  answerUnsaved(state, UnsavedChoice::Save);  // no file yet: the Save session dialog
+  ASSERT_TRUE(state.document.unsaved.afterSave);
+  guardUnsaved(state, "open the 2D demo", [](AppState& s) { requestDemo(s, 2); });
+  EXPECT_FALSE(state.loadingScene());
+  EXPECT_EQ(state.status.message, "not done: open the 2D demo (finish the open question first: quit)");
+  state.files.dialog.name = path("saved.json");
+  ASSERT_TRUE(submitFileDialog(state));
+  EXPECT_TRUE(state.document.quitRequested);
+}
+
 // Issue 24, row 6: Open with a mesh and no cage said "cage: choose a cage file", where the command line makes a cage
 // for a mesh opened alone. Now it loads, with the generated cage's notice; a posed cage still needs its cage.
 TEST_F(Folder, OpenTakesAMeshAlone) {

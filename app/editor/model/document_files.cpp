@@ -201,11 +201,8 @@ bool openReadSession(AppState& state, const std::string& path, const Session& se
 }  // namespace
 
 bool pollSessionRead(AppState& state) {
-  // A finished read waits while another question is open (it would replace it) and while a live edit is under way
-  // (a handle or G / R / S moving the cage, a slider held: committed when it ends, it then counts as a change below).
-  if (state.document.unsaved.asking || state.document.unsaved.afterSave || state.input.mouse.transform ||
-      state.input.widgetActive)
-    return false;
+  // A finished read waits while another question is open and while a live edit is under way (documentBusy).
+  if (documentBusy(state)) return false;
   std::optional<SessionRead> read = state.jobs.session.poll();
   if (!read) return false;
   const std::string& path = read->path;
@@ -218,8 +215,7 @@ bool pollSessionRead(AppState& state) {
     return false;
   }
   // The user was asked before the read began; edits, undo or redo since then were not part of that answer.
-  if (state.document.history.revision() == state.jobs.sessionFrom || !hasUnsavedChanges(state))
-    return openReadSession(state, path, *read->session);
+  if (!changedSince(state, state.jobs.sessionFrom)) return openReadSession(state, path, *read->session);
   guardUnsaved(state, "open session " + std::filesystem::path(path).filename().string(),
                [path, session = std::make_shared<const Session>(std::move(*read->session))](AppState& s) {
                  openReadSession(s, path, *session);

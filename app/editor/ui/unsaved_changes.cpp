@@ -7,12 +7,33 @@
 
 namespace somicage::editor {
 
-void guardUnsaved(AppState& state, std::string what, std::function<void(AppState&)> run) {
+namespace {
+
+// Carries out the action, or, when the answer did not let it run, what it leaves to do when dropped.
+void finish(AppState& state, DiscardingAction& action, bool run) {
+  if (run) {
+    action.run(state);
+  } else if (action.dropped) {
+    action.dropped(state);
+  }
+}
+
+}  // namespace
+
+void guardUnsaved(AppState& state, std::string what, std::function<void(AppState&)> run,
+                  std::function<void(AppState&)> dropped) {
+  const std::optional<DiscardingAction>& open =
+      state.document.unsaved.asking ? state.document.unsaved.asking : state.document.unsaved.afterSave;
+  if (open) {  // replacing it would drop the action the user is answering about, unseen
+    state.status.message = "not done: " + what + " (finish the open question first: " + open->what + ")";
+    if (dropped) dropped(state);
+    return;
+  }
   if (!hasUnsavedChanges(state)) {
     run(state);
     return;
   }
-  state.document.unsaved.asking = DiscardingAction{std::move(what), std::move(run)};
+  state.document.unsaved.asking = DiscardingAction{std::move(what), std::move(run), std::move(dropped)};
 }
 
 void answerUnsaved(AppState& state, UnsavedChoice choice) {
@@ -22,6 +43,7 @@ void answerUnsaved(AppState& state, UnsavedChoice choice) {
   switch (choice) {
     case UnsavedChoice::Cancel:
       state.status.message = "cancelled: " + action.what;
+      finish(state, action, false);
       return;
     case UnsavedChoice::DontSave:
       action.run(state);
@@ -32,7 +54,7 @@ void answerUnsaved(AppState& state, UnsavedChoice choice) {
         openFileDialog(state, FileDialogPurpose::SaveSession);
         return;
       }
-      if (saveSessionFile(state, state.document.path)) action.run(state);
+      finish(state, action, saveSessionFile(state, state.document.path));
       return;
   }
 }
@@ -41,7 +63,16 @@ void sessionDialogFinished(AppState& state, bool saved) {
   if (!state.document.unsaved.afterSave) return;
   DiscardingAction action = std::move(*state.document.unsaved.afterSave);
   state.document.unsaved.afterSave.reset();
-  if (saved) action.run(state);
+  finish(state, action, saved);
+}
+
+bool changedSince(const AppState& state, std::uint64_t from) {
+  return state.document.history.revision() != from && hasUnsavedChanges(state);
+}
+
+bool documentBusy(const AppState& state) {
+  return state.document.unsaved.asking || state.document.unsaved.afterSave || state.input.mouse.transform ||
+         state.input.widgetActive;
 }
 
 void requestQuit(AppState& state) {
