@@ -202,6 +202,8 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   timings.frame = state.status.stats.frames.last().frame + 1;
   state.status.stats.timeFrames = state.view.showFrameTimings || state.status.logFrames;
   feedInput(window, queue);
+  // As the last frame left it (a slider still held): a read session and a loaded scene wait while it is (documentBusy).
+  state.input.widgetActive = ImGui::IsAnyItemActive();
   if (pollWorker(state)) {  // --log-actions: the GUI tests wait for it; the benchmarks read the seconds
     char seconds[32];
     std::snprintf(seconds, sizeof seconds, " %.3f", state.status.stats.precomputeSeconds);
@@ -216,7 +218,6 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   pollExport(state);
   pollPosedCage(state);
-  state.input.widgetActive = ImGui::IsAnyItemActive();  // as the last frame left it: a slider still held
   pollSessionRead(state);
   if (!state.files.droppedPaths.empty()) {
     std::vector<std::string> dropped;

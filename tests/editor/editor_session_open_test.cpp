@@ -3,13 +3,9 @@
 // a good session is applied, on the UI thread, as its file says.
 #include <gtest/gtest.h>
 
-#include <atomic>
-#include <chrono>
 #include <fstream>
 #include <functional>
-#include <memory>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "core/scratch_folder.h"
@@ -18,9 +14,8 @@
 #include "interaction/transform.h"
 #include "job_waiting.h"
 #include "jobs/session_read.h"
-#include "jobs/thread_budget.h"
 #include "model/app_state.h"
-#include "model/pose_keys.h"
+#include "open_over_edits.h"
 #include "ui/unsaved_changes.h"
 
 using namespace somicage;
@@ -68,58 +63,6 @@ struct SessionFiles {
   }
 };
 
-// The document open before: the 2D demo with edits (a parameter, a moved vertex, a stored pose), unsaved.
-void openEditedDemo(AppState& state) {
-  openDemoScene(state, 2);
-  DeformParams params = state.document.params;
-  params.gamma = 0.5;
-  setParams(state, params);
-  Eigen::MatrixXd pose = state.document.pose;
-  pose(0, 0) -= 0.25;
-  setPose(state, pose);
-  commitEdit(state, "Grab");
-  storeCurrentPose(state, "mine");
-  ASSERT_TRUE(hasUnsavedChanges(state));
-}
-
-// What a cancelled or failed open must leave as it was: the scene, its deformers, the document and its history, the
-// views.
-struct Kept {
-  std::shared_ptr<const Scene> scene;
-  DeformerSet deformers;
-  Document document;
-  std::size_t steps = 0, cursor = 0;
-  std::string path;
-  std::vector<ViewSpec> views;
-};
-
-Kept keep(const AppState& state) {
-  return {state.model.scene,
-          state.model.deformers,
-          currentDocument(state),
-          state.document.history.size(),
-          state.document.history.cursor(),
-          state.document.path,
-          state.views()};
-}
-
-void expectKept(const AppState& state, const Kept& kept) {
-  EXPECT_EQ(state.model.scene, kept.scene);
-  EXPECT_EQ(state.model.deformers, kept.deformers);
-  EXPECT_TRUE(currentDocument(state) == kept.document) << "the open document changed";
-  EXPECT_EQ(state.document.history.size(), kept.steps);
-  EXPECT_EQ(state.document.history.cursor(), kept.cursor);
-  EXPECT_EQ(state.document.path, kept.path);
-  EXPECT_TRUE(state.views() == kept.views) << "the views changed";
-  EXPECT_TRUE(hasUnsavedChanges(state));
-}
-
-// What the frame loop polls each frame (editor.cpp, frame()): the session read, then the scene's load.
-void frame(AppState& state) {
-  pollSessionRead(state);
-  pollWorker(state);
-}
-
 // Frames until the session and its scene have arrived or failed.
 void framesUntilSettled(AppState& state) {
   waitUntil([&state] {
@@ -145,14 +88,6 @@ void finishReading(AppState& state, SteeredSessionReader& steered) {
   frame(state);
 }
 
-// One edit of the open document as the user makes it: a vertex moved, committed as "Grab".
-void grab(AppState& state) {
-  Eigen::MatrixXd pose = state.document.pose;
-  pose(1, 0) += 0.125;
-  setPose(state, pose);
-  ASSERT_TRUE(commitEdit(state, "Grab"));
-}
-
 // The finished read is there, untaken: nothing of the session was applied or started (its scene's load).
 void expectReadWaiting(const AppState& state) {
   EXPECT_TRUE(state.jobs.session.ready()) << "the read session was taken";
@@ -163,16 +98,6 @@ void expectReadWaiting(const AppState& state) {
 bool sessionApplied(const AppState& state, const std::string& session) {
   return methodName(state.document.method) == "green" && state.document.path == session;
 }
-
-// Every core of the machine's budget, held by the test: a job started meanwhile waits for its cores.
-struct HeldCores {
-  ThreadBudget::Lease lease;
-  std::atomic<bool> stop{false};
-  HeldCores() { ThreadBudget::machine().acquire(lease, ThreadBudget::machine().cores(), stop); }
-  ~HeldCores() { ThreadBudget::machine().release(lease); }
-  HeldCores(const HeldCores&) = delete;
-  HeldCores& operator=(const HeldCores&) = delete;
-};
 
 }  // namespace
 

@@ -110,6 +110,17 @@ class BackgroundJob {
     run_->context.cancel_ = true;
     budget_->cancelled(run_->lease);
   }
+  // Cancels the running job and drops its outcome, stored or still to come: nothing of it arrives, as when superseded
+  // (a scene load the user cancelled after its scene had loaded: PrecomputeWorker::discard).
+  void discard() {
+    if (!run_) return;
+    {
+      std::lock_guard<std::mutex> lock(run_->mutex);
+      run_->superseded = true;
+      run_->outcome.reset();
+    }
+    cancel();
+  }
   bool busy() const {
     if (!run_) return false;
     std::lock_guard<std::mutex> lock(run_->mutex);

@@ -131,6 +131,13 @@ void PrecomputeWorker::setOnFinished(std::function<void()> onFinished) {
   job_.setOnFinished(std::move(onFinished));
 }
 
+void PrecomputeWorker::discard() {
+  job_.discard();
+  ++nextId_;  // its scene, if it loads after this, is never taken (takeLoadedScene)
+  std::lock_guard<std::mutex> lock(loaded_->mutex);
+  loaded_->loaded.reset();
+}
+
 std::optional<PrecomputeWorker::LoadedScene> PrecomputeWorker::takeLoadedScene() {
   std::lock_guard<std::mutex> lock(loaded_->mutex);
   if (loaded_->id + 1 != nextId_) return std::nullopt;  // an older request's

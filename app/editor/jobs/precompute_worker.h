@@ -80,6 +80,9 @@ class PrecomputeWorker {
   // its id.
   std::uint64_t start(PrecomputeRequest request);
   void cancel() { job_.cancel(); }  // asks the running request to stop; it finishes with cancelled = true
+  // Stops the latest request and drops what it has or will have (its loaded scene, its outcome): nothing of it
+  // arrives. A load dropped on Cancel (pollWorker's question): its scene is freed once nothing else holds it.
+  void discard();
   bool busy() const { return job_.busy(); }
   // Called on the job's thread when a request has finished (background_job.h), and when its scene has loaded.
   void setOnFinished(std::function<void()> onFinished);

@@ -146,6 +146,10 @@ struct PendingLoad {
   PosedCageRead posed;                // a posed cage read on the load job against the new cage (path "": none)
   std::optional<RecentEntry> recent;  // the files being loaded; recorded when they arrive
   bool sceneShown = false;            // the loaded scene is shown (undeformed) while its deformers are computed
+  // Set by the request: the document's History::revision() then (what the user agreed to discard: a change since asks
+  // again before the scene is shown, pollWorker) and the load's precompute (PrecomputeWorker::start's id).
+  std::uint64_t from = 0;
+  std::uint64_t request = 0;
 };
 
 // Background work. Only the controller functions start or take jobs; the frame loop polls them.
@@ -231,7 +235,10 @@ void ensureDeformers(AppState& state);
 void wakeOnFinish(AppState& state, const std::function<void()>& wake);
 
 // Shows a load's scene as soon as its mesh has loaded (showLoadedScene), then takes a finished precompute outcome,
-// if any, and installs it. Errors go to state.status.errors. Returns true when an outcome was installed.
+// if any, and installs it. Errors go to state.status.errors. Returns true when an outcome was installed. The scene
+// replaces the document, so it waits while the document is busy (documentBusy: a question open, a live edit), and if
+// the document changed since the load was asked for (PendingLoad::from) and is unsaved, guardUnsaved asks again first:
+// Save / Don't save show it, Cancel drops the load and its scene (nothing of a session's settings is applied).
 bool pollWorker(AppState& state);
 // Installs an outcome (also used by the screenshot path after waiting).
 void installOutcome(AppState& state, PrecomputeOutcome outcome);

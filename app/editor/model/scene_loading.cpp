@@ -1,5 +1,6 @@
 // The scene's loading and precompute: requests to the precompute worker and the installation of its outcomes.
 #include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -49,8 +50,9 @@ void startLoad(AppState& state, std::shared_ptr<const Scene> scene, std::functio
   request.scene = std::move(scene);  // or, when null, the loader runs on the job
   request.loadScene = std::move(loader);
   request.posedPath = load.posed.path;  // read on the job, with the scene
+  load.from = state.document.history.revision();  // the caller asked about unsaved changes (guardUnsaved)
+  load.request = state.jobs.precompute.start(std::move(request));
   state.jobs.load = std::move(load);
-  state.jobs.precompute.start(std::move(request));
 }
 
 }  // namespace
@@ -220,20 +222,75 @@ void wakeOnFinish(AppState& state, const std::function<void()>& wake) {
   state.jobs.session.setOnFinished(wake);
 }
 
+namespace {
+
+// Installs a finished precompute, then the deformers the views still miss (e.g. the views changed while loading); not
+// after a cancel (a scene shown early would start again at once).
+void takeOutcome(AppState& state, PrecomputeOutcome outcome) {
+  const bool cancelled = outcome.cancelled;
+  installOutcome(state, std::move(outcome));
+  if (!cancelled && !state.jobs.precompute.busy()) ensureDeformers(state);
+}
+
+// What the load opens, for the question: "open session s.json", "open bunny.obj".
+std::string loadWhat(const PendingLoad& load, const Scene& scene) {
+  if (load.restored) return "restore the autosave";
+  if (load.documentPath) return "open session " + std::filesystem::path(*load.documentPath).filename().string();
+  return "open " + scene.name;
+}
+
+// The load's `scene` has arrived: `show` shows it now, unless the document changed since the load was asked for and
+// is unsaved (changedSince): then the same question again, with `show` as its action (run only if the load is still
+// the one asked about); Cancel drops the load, its precompute and, with the action, its scene. Returns whether shown.
+bool showWhenAgreed(AppState& state, const Scene& scene, std::function<void(AppState&)> show) {
+  if (!changedSince(state, state.jobs.load->from)) {
+    show(state);
+    return true;
+  }
+  const std::string what = loadWhat(*state.jobs.load, scene);
+  const std::string message = scene.name + " loaded: the document changed meanwhile";  // `show` may hold the scene
+  const std::uint64_t request = state.jobs.load->request;
+  const auto asked = [request](const AppState& s) { return s.jobs.load && s.jobs.load->request == request; };
+  guardUnsaved(
+      state, what,
+      [asked, show = std::move(show)](AppState& s) {
+        if (asked(s)) show(s);
+      },
+      [asked](AppState& s) {
+        if (!asked(s)) return;
+        s.jobs.precompute.discard();
+        s.jobs.load.reset();  // a session's settings (PendingLoad::session) go with it, unapplied
+        s.status.message += "; the loaded scene was dropped";
+      });
+  if (state.document.unsaved.asking) state.status.message = message;
+  return false;
+}
+
+}  // namespace
+
 bool pollWorker(AppState& state) {
-  if (state.jobs.load && !state.jobs.load->sceneShown) {  // the mesh has loaded: show it while the precompute runs
+  const bool awaitingScene = state.jobs.load && !state.jobs.load->sceneShown;
+  if (awaitingScene && documentBusy(state)) return false;  // the scene would replace the document under the user
+  if (awaitingScene) {  // the mesh has loaded: show it while the precompute runs
     if (std::optional<PrecomputeWorker::LoadedScene> loaded = state.jobs.precompute.takeLoadedScene()) {
-      state.jobs.load->posed = std::move(loaded->posed);
-      showLoadedScene(state, std::move(loaded->scene));
-      logLine(state, "scene shown");  // --log-actions: the GUI tests look for the mesh drawn from here on
+      const Scene& scene = *loaded->scene;
+      if (!showWhenAgreed(state, scene, [loaded = std::move(*loaded)](AppState& s) {
+            s.jobs.load->posed = loaded.posed;
+            showLoadedScene(s, loaded.scene);
+            logLine(s, "scene shown");  // --log-actions: the GUI tests look for the mesh drawn from here on
+          }))
+        return false;
     }
   }
   std::optional<PrecomputeOutcome> outcome = state.jobs.precompute.poll();
   if (!outcome) return false;
-  const bool cancelled = outcome->cancelled;
-  installOutcome(state, std::move(*outcome));
-  // e.g. the views changed while loading; not after a cancel (a scene shown early would start again at once)
-  if (!cancelled && !state.jobs.precompute.busy()) ensureDeformers(state);
+  // Its scene not shown yet (it finished before the frame took the loaded scene): the same question first.
+  if (state.jobs.load && !state.jobs.load->sceneShown && outcome->scene && !outcome->cancelled &&
+      outcome->error.empty()) {
+    const Scene& scene = *outcome->scene;
+    return showWhenAgreed(state, scene, [outcome = std::move(*outcome)](AppState& s) { takeOutcome(s, outcome); });
+  }
+  takeOutcome(state, std::move(*outcome));
   return true;
 }
 

@@ -1,0 +1,91 @@
+// What the tests of opening another document over the open one share (editor_session_open_test.cpp: a session read;
+// editor_scene_open_test.cpp: a scene loaded): the edited document opened over, one more edit, what a cancelled open
+// must keep exactly, the frame loop's polls, and cores held so that a load waits for them.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "editor_test_support.h"
+#include "jobs/thread_budget.h"
+#include "model/app_state.h"
+#include "model/pose_keys.h"
+
+namespace somicage::editor {
+
+// The document open before: the 2D demo with edits (a parameter, a moved vertex, a stored pose), unsaved.
+inline void openEditedDemo(AppState& state) {
+  openDemoScene(state, 2);
+  DeformParams params = state.document.params;
+  params.gamma = 0.5;
+  setParams(state, params);
+  Eigen::MatrixXd pose = state.document.pose;
+  pose(0, 0) -= 0.25;
+  setPose(state, pose);
+  commitEdit(state, "Grab");
+  storeCurrentPose(state, "mine");
+  ASSERT_TRUE(hasUnsavedChanges(state));
+}
+
+// One edit of the open document as the user makes it: a vertex moved, committed as "Grab".
+inline void grab(AppState& state) {
+  Eigen::MatrixXd pose = state.document.pose;
+  pose(1, 0) += 0.125;
+  setPose(state, pose);
+  ASSERT_TRUE(commitEdit(state, "Grab"));
+}
+
+// What a cancelled or failed open must leave as it was: the scene, its deformers, the document and its history, the
+// views.
+struct Kept {
+  std::shared_ptr<const Scene> scene;
+  DeformerSet deformers;
+  Document document;
+  std::size_t steps = 0, cursor = 0;
+  std::string path;
+  std::vector<ViewSpec> views;
+};
+
+inline Kept keep(const AppState& state) {
+  return {state.model.scene,
+          state.model.deformers,
+          currentDocument(state),
+          state.document.history.size(),
+          state.document.history.cursor(),
+          state.document.path,
+          state.views()};
+}
+
+inline void expectKept(const AppState& state, const Kept& kept) {
+  EXPECT_EQ(state.model.scene, kept.scene);
+  EXPECT_EQ(state.model.deformers, kept.deformers);
+  EXPECT_TRUE(currentDocument(state) == kept.document) << "the open document changed";
+  EXPECT_EQ(state.document.history.size(), kept.steps);
+  EXPECT_EQ(state.document.history.cursor(), kept.cursor);
+  EXPECT_EQ(state.document.path, kept.path);
+  EXPECT_TRUE(state.views() == kept.views) << "the views changed";
+  EXPECT_TRUE(hasUnsavedChanges(state));
+}
+
+// What the frame loop polls each frame (editor.cpp, frame()): the scene's load, then the session read.
+inline void frame(AppState& state) {
+  pollWorker(state);
+  pollSessionRead(state);
+}
+
+// Every core of the machine's budget, held by the test: a job started meanwhile waits for its cores.
+struct HeldCores {
+  ThreadBudget::Lease lease;
+  std::atomic<bool> stop{false};
+  HeldCores() { ThreadBudget::machine().acquire(lease, ThreadBudget::machine().cores(), stop); }
+  ~HeldCores() { ThreadBudget::machine().release(lease); }
+  HeldCores(const HeldCores&) = delete;
+  HeldCores& operator=(const HeldCores&) = delete;
+};
+
+}  // namespace somicage::editor
