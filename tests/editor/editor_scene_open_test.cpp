@@ -11,7 +11,6 @@
 
 #include "core/scratch_folder.h"
 #include "editor_test_support.h"
-#include "interaction/transform.h"
 #include "job_waiting.h"
 #include "model/app_state.h"
 #include "open_over_edits.h"
@@ -74,17 +73,7 @@ void expectDropped(AppState& state, const std::weak_ptr<const Scene>& loading, c
 // frame took its scene); nothing is shown before the answer. Don't save shows the scene; Cancel drops the load, frees
 // its scene and keeps the scene, document, history and views exactly. Before, the loaded scene replaced them unasked.
 TEST(EditorSceneOpen, AChangeWhileTheSceneLoadsAsksBeforeItIsShown) {
-  struct Change {
-    std::string name;
-    std::function<void(AppState&)> make;
-  };
-  const std::vector<Change> changes = {{"an edit", [](AppState& s) { grab(s); }},
-                                       {"an undo", [](AppState& s) { undo(s); }},
-                                       {"an undo and its redo", [](AppState& s) {
-                                          undo(s);
-                                          redo(s);
-                                        }}};
-  for (const Change& change : changes) {
+  for (const Meanwhile& change : changesMeanwhile()) {
     for (const bool precomputeFirst : {false, true}) {
       for (const UnsavedChoice answer : {UnsavedChoice::DontSave, UnsavedChoice::Cancel}) {
         SCOPED_TRACE(change.name + (precomputeFirst ? ", the precompute found first" : ", the loaded scene found") +
@@ -121,28 +110,12 @@ TEST(EditorSceneOpen, AChangeWhileTheSceneLoadsAsksBeforeItIsShown) {
 // commit that changed nothing meanwhile; and after an edit that was saved meanwhile (it is on disk).
 TEST(EditorSceneOpen, WithoutAChangeWhileTheSceneLoadsItIsShownUnasked) {
   const test::ScratchFolder dir;
-  struct Case {
-    std::string name;
-    bool edited = false;                       // the document is unsaved when the load is asked for
-    std::function<void(AppState&)> meanwhile;  // what the user does while the scene loads
-  };
   const std::string mine = dir / "mine.json";
-  const std::vector<Case> cases = {
-      {"clean", false, [](AppState&) {}},
-      {"unsaved, answered Don't save", true, [](AppState& s) { EXPECT_FALSE(commitEdit(s, "Grab")); }},
-      {"an edit saved meanwhile", true, [&mine](AppState& s) {
-         grab(s);
-         ASSERT_TRUE(saveSessionFile(s, mine));
-       }}};
-  for (const Case& c : cases) {
+  for (const Meanwhile& c : noChangeMeanwhile(mine)) {
     SCOPED_TRACE(c.name);
     AppState state;
-    if (c.edited) {
-      openEditedDemo(state);
-    } else {
-      openDemoScene(state, 2);
-    }
-    const std::weak_ptr<const Scene> loading = loadWhile(state, c.meanwhile);
+    openDocumentFor(state, c);
+    const std::weak_ptr<const Scene> loading = loadWhile(state, c.make);
     finishLoading(state);
     EXPECT_FALSE(state.document.unsaved.asking) << "asked again";
     frame(state);
@@ -248,28 +221,16 @@ TEST(EditorSceneOpen, ALoadedSceneWaitsForAnOpenQuestionAndAMovingHandle) {
     SCOPED_TRACE(confirmed ? "G confirmed" : "G cancelled");
     AppState state;
     openEditedDemo(state);
-    const Eigen::MatrixXd original = state.document.pose;
-    Eigen::MatrixXd moved = original;
-    moved(1, 0) += 0.125;
-    const std::weak_ptr<const Scene> loading = loadWhile(state, [&](AppState& s) {
-      s.input.mouse.mode = Interaction::Mode::Modal;
-      s.input.mouse.transform =
-          beginTransform(TransformKind::Grab, {1}, original, Eigen::Vector2d(10, 10), Eigen::Vector2d(100, 100));
-      setPose(s, moved);
-    });
+    Eigen::MatrixXd original;
+    const std::weak_ptr<const Scene> loading = loadWhile(state, [&original](AppState& s) { original = beginGrab(s); });
+    const Eigen::MatrixXd moved = state.document.pose;
     const std::shared_ptr<const Scene> open = state.model.scene;
     finishLoading(state);
     frame(state);
     EXPECT_EQ(state.model.scene, open) << "shown while the handle moves";
     EXPECT_FALSE(state.document.unsaved.asking);
     EXPECT_EQ(state.document.pose, moved);
-    if (confirmed) {
-      EXPECT_TRUE(commitEdit(state, "Grab"));  // Enter (confirmTransform)
-    } else {
-      setPose(state, original);  // Esc (cancelTransform)
-    }
-    state.input.mouse.transform.reset();
-    state.input.mouse.mode = Interaction::Mode::Idle;
+    endGrab(state, original, confirmed);
     frame(state);
     EXPECT_EQ(state.document.unsaved.asking.has_value(), confirmed);
     if (!confirmed) {
@@ -281,19 +242,12 @@ TEST(EditorSceneOpen, ALoadedSceneWaitsForAnOpenQuestionAndAMovingHandle) {
     SCOPED_TRACE("nu slider held");
     AppState state;
     openEditedDemo(state);
-    const std::weak_ptr<const Scene> loading = loadWhile(state, [](AppState& s) {
-      s.input.widgetActive = true;
-      DeformParams params = s.document.params;
-      params.nu = 0.125;
-      setParams(s, params);
-    });
+    loadWhile(state, holdNuSlider);
     const std::shared_ptr<const Scene> open = state.model.scene;
     finishLoading(state);
     frame(state);
     EXPECT_EQ(state.model.scene, open) << "shown while the slider is held";
-    EXPECT_EQ(state.document.params.nu, 0.125);
-    EXPECT_TRUE(commitEdit(state, "nu"));  // released (IsItemDeactivatedAfterEdit)
-    state.input.widgetActive = false;
+    releaseNuSlider(state);
     frame(state);
     EXPECT_TRUE(state.document.unsaved.asking);
     EXPECT_EQ(state.model.scene, open);

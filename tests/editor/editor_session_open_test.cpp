@@ -11,7 +11,6 @@
 #include "core/scratch_folder.h"
 #include "editor_test_support.h"
 #include "interaction/shortcuts.h"
-#include "interaction/transform.h"
 #include "job_waiting.h"
 #include "jobs/session_read.h"
 #include "model/app_state.h"
@@ -260,17 +259,7 @@ TEST(EditorSessionOpen, AGoodSessionIsAppliedAsItsFileSays) {
 // it and keeps the document, its history and its views exactly. Before, the read session replaced them unasked.
 TEST(EditorSessionOpen, AChangeWhileTheSessionIsReadAsksAgainBeforeItIsApplied) {
   const SessionFiles files;
-  struct Change {
-    std::string name;
-    std::function<void(AppState&)> make;
-  };
-  const std::vector<Change> changes = {{"an edit", [](AppState& s) { grab(s); }},
-                                       {"an undo", [](AppState& s) { undo(s); }},
-                                       {"an undo and its redo", [](AppState& s) {
-                                          undo(s);
-                                          redo(s);
-                                        }}};
-  for (const Change& change : changes) {
+  for (const Meanwhile& change : changesMeanwhile()) {
     for (const UnsavedChoice answer : {UnsavedChoice::DontSave, UnsavedChoice::Cancel}) {
       SCOPED_TRACE(change.name + (answer == UnsavedChoice::Cancel ? ", Cancel" : ", Don't save"));
       SteeredSessionReader steered;
@@ -304,30 +293,14 @@ TEST(EditorSessionOpen, AChangeWhileTheSessionIsReadAsksAgainBeforeItIsApplied) 
 // commit that changed nothing meanwhile; and after an edit that was saved meanwhile (nothing is lost: it is on disk).
 TEST(EditorSessionOpen, WithoutAChangeWhileTheSessionIsReadItIsAppliedUnasked) {
   const SessionFiles files;
-  struct Case {
-    std::string name;
-    bool edited = false;                       // the document is unsaved when the read begins
-    std::function<void(AppState&)> meanwhile;  // what the user does while the file is read
-  };
   const std::string mine = files.dir / "mine.json";
-  const std::vector<Case> cases = {
-      {"clean", false, [](AppState&) {}},
-      {"unsaved, answered Don't save", true, [](AppState& s) { EXPECT_FALSE(commitEdit(s, "Grab")); }},
-      {"an edit saved meanwhile", true, [&mine](AppState& s) {
-         grab(s);
-         ASSERT_TRUE(saveSessionFile(s, mine));
-       }}};
-  for (const Case& c : cases) {
+  for (const Meanwhile& c : noChangeMeanwhile(mine)) {
     SCOPED_TRACE(c.name);
     SteeredSessionReader steered;
     AppState state;
-    if (c.edited) {
-      openEditedDemo(state);
-    } else {
-      openDemoScene(state, 2);
-    }
+    openDocumentFor(state, c);
     startOpening(state, files.session, steered);
-    c.meanwhile(state);
+    c.make(state);
     finishReading(state, steered);
     EXPECT_FALSE(state.document.unsaved.asking) << "asked again";
     framesUntilSettled(state);
@@ -406,23 +379,12 @@ TEST(EditorSessionOpen, AFinishedReadWaitsForAnOpenQuestionAndAMovingHandle) {
     AppState state;
     openEditedDemo(state);
     startOpening(state, files.session, steered);
-    const Eigen::MatrixXd original = state.document.pose;
-    state.input.mouse.mode = Interaction::Mode::Modal;
-    state.input.mouse.transform =
-        beginTransform(TransformKind::Grab, {1}, original, Eigen::Vector2d(10, 10), Eigen::Vector2d(100, 100));
-    Eigen::MatrixXd moved = original;
-    moved(1, 0) += 0.125;
-    setPose(state, moved);
+    const Eigen::MatrixXd original = beginGrab(state);
+    const Eigen::MatrixXd moved = state.document.pose;
     finishReading(state, steered);
     expectReadWaiting(state);
     EXPECT_EQ(state.document.pose, moved);
-    if (confirmed) {
-      EXPECT_TRUE(commitEdit(state, "Grab"));  // Enter (confirmTransform)
-    } else {
-      setPose(state, original);  // Esc (cancelTransform)
-    }
-    state.input.mouse.transform.reset();
-    state.input.mouse.mode = Interaction::Mode::Idle;
+    endGrab(state, original, confirmed);
     framesUntilSettled(state);
     EXPECT_EQ(state.document.unsaved.asking.has_value(), confirmed);
     EXPECT_EQ(sessionApplied(state, files.session), !confirmed);
@@ -433,15 +395,10 @@ TEST(EditorSessionOpen, AFinishedReadWaitsForAnOpenQuestionAndAMovingHandle) {
     AppState state;
     openEditedDemo(state);
     startOpening(state, files.session, steered);
-    state.input.widgetActive = true;
-    DeformParams params = state.document.params;
-    params.nu = 0.125;
-    setParams(state, params);
+    holdNuSlider(state);
     finishReading(state, steered);
     expectReadWaiting(state);
-    EXPECT_EQ(state.document.params.nu, 0.125);
-    EXPECT_TRUE(commitEdit(state, "nu"));  // released (IsItemDeactivatedAfterEdit)
-    state.input.widgetActive = false;
+    releaseNuSlider(state);
     framesUntilSettled(state);
     EXPECT_TRUE(state.document.unsaved.asking);
     EXPECT_FALSE(sessionApplied(state, files.session));

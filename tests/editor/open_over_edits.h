@@ -7,11 +7,13 @@
 
 #include <atomic>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "editor_test_support.h"
+#include "interaction/transform.h"
 #include "jobs/thread_budget.h"
 #include "model/app_state.h"
 #include "model/pose_keys.h"
@@ -38,6 +40,81 @@ inline void grab(AppState& state) {
   pose(1, 0) += 0.125;
   setPose(state, pose);
   ASSERT_TRUE(commitEdit(state, "Grab"));
+}
+
+// Live edits under way, not committed yet: G on vertex 1 moving the cage by 0.125 in x (returns the pose before it),
+// and the nu slider held at 0.125. Their ends: Enter commits the move or Esc puts the pose back; the slider's release
+// commits its value (IsItemDeactivatedAfterEdit).
+inline Eigen::MatrixXd beginGrab(AppState& state) {
+  const Eigen::MatrixXd original = state.document.pose;
+  state.input.mouse.mode = Interaction::Mode::Modal;
+  state.input.mouse.transform =
+      beginTransform(TransformKind::Grab, {1}, original, Eigen::Vector2d(10, 10), Eigen::Vector2d(100, 100));
+  Eigen::MatrixXd moved = original;
+  moved(1, 0) += 0.125;
+  setPose(state, moved);
+  return original;
+}
+
+inline void endGrab(AppState& state, const Eigen::MatrixXd& original, bool confirmed) {
+  if (confirmed) {
+    EXPECT_TRUE(commitEdit(state, "Grab"));  // Enter (confirmTransform)
+  } else {
+    setPose(state, original);  // Esc (cancelTransform)
+  }
+  state.input.mouse.transform.reset();
+  state.input.mouse.mode = Interaction::Mode::Idle;
+}
+
+inline void holdNuSlider(AppState& state) {
+  state.input.widgetActive = true;
+  DeformParams params = state.document.params;
+  params.nu = 0.125;
+  setParams(state, params);
+}
+
+inline void releaseNuSlider(AppState& state) {
+  EXPECT_EQ(state.document.params.nu, 0.125) << "the slider's value was replaced under the user's hand";
+  EXPECT_TRUE(commitEdit(state, "nu"));
+  state.input.widgetActive = false;
+}
+
+// What the user does to the open document while another one opens.
+struct Meanwhile {
+  std::string name;
+  std::function<void(AppState&)> make;
+  bool edited = false;  // (unchanged only) the document is unsaved when the open begins: openEditedDemo
+};
+
+// Changes to ask about again: an edit, an undo, an undo and its redo (the state the user agreed to discard may be
+// back, but its redo step is the user's work).
+inline std::vector<Meanwhile> changesMeanwhile() {
+  return {{"an edit", [](AppState& s) { grab(s); }},
+          {"an undo", [](AppState& s) { undo(s); }},
+          {"an undo and its redo", [](AppState& s) {
+             undo(s);
+             redo(s);
+           }}};
+}
+
+// No change to ask about: over a clean document; over an unsaved one whose user answered Don't save before (what was
+// unsaved then was asked about), with a commit that changed nothing; an edit saved meanwhile (to `saved`: on disk).
+inline std::vector<Meanwhile> noChangeMeanwhile(const std::string& saved) {
+  return {{"clean", [](AppState&) {}, false},
+          {"unsaved, answered Don't save", [](AppState& s) { EXPECT_FALSE(commitEdit(s, "Grab")); }, true},
+          {"an edit saved meanwhile", [saved](AppState& s) {
+             grab(s);
+             ASSERT_TRUE(saveSessionFile(s, saved));
+           }, true}};
+}
+
+// The document `meanwhile` starts from: edited (openEditedDemo) or the 2D demo as opened.
+inline void openDocumentFor(AppState& state, const Meanwhile& meanwhile) {
+  if (meanwhile.edited) {
+    openEditedDemo(state);
+  } else {
+    openDemoScene(state, 2);
+  }
 }
 
 // What a cancelled or failed open must leave as it was: the scene, its deformers, the document and its history, the
