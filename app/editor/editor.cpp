@@ -216,6 +216,7 @@ void frame(GLFWwindow* window, AppState& state, Renderer& renderer, std::string&
   }
   pollExport(state);
   pollPosedCage(state);
+  state.input.widgetActive = ImGui::IsAnyItemActive();  // as the last frame left it: a slider still held
   pollSessionRead(state);
   if (!state.files.droppedPaths.empty()) {
     std::vector<std::string> dropped;

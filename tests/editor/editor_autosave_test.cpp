@@ -10,6 +10,7 @@
 #include <string>
 
 #include "base/errors.h"
+#include "core/scratch_folder.h"
 #include "editor_options.h"
 #include "engine/session.h"
 #include "job_waiting.h"
@@ -27,18 +28,10 @@ namespace fs = std::filesystem;
 // A fresh config folder, removed at the end of the test.
 class ConfigDir {
  public:
-  ConfigDir() {
-    std::string pattern = (fs::temp_directory_path() / "somicage-autosave-test-XXXXXX").string();
-    root_ = ::mkdtemp(pattern.data());
-  }
-  ~ConfigDir() {
-    std::error_code ignored;
-    fs::remove_all(root_, ignored);
-  }
-  AutosavePaths paths() const { return autosavePaths(root_.c_str(), nullptr); }
+  AutosavePaths paths() const { return autosavePaths(root_.path().c_str(), nullptr); }
 
  private:
-  fs::path root_;
+  test::ScratchFolder root_;
 };
 
 Session demoSession(double x) {

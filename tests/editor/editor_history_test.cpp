@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <limits>
@@ -94,6 +95,41 @@ TEST(EditorHistory, NoChangeIsNoStepAndANewStepDropsRedo) {
   EXPECT_FALSE(h.canRedo());
   EXPECT_EQ(h.size(), 2u);
   EXPECT_EQ(h.step(1).name, "c");
+}
+
+// The revision changes with each change of the current state (a commit that adds a step, undo, redo, a jump to
+// another step, a reset; undo and redo back are two changes) and with nothing else (a commit of the same state, a
+// jump to the current step, saving, reading).
+TEST(EditorHistory, TheRevisionCountsTheChangesOfTheCurrentState) {
+  History h;
+  std::uint64_t seen = h.revision();
+  const auto changed = [&h, &seen] {
+    const bool moved = h.revision() != seen;
+    seen = h.revision();
+    return moved;
+  };
+  h.reset(doc(0), "Original", true);
+  EXPECT_TRUE(changed());
+  EXPECT_FALSE(h.commit("nothing", doc(0)));
+  h.markSaved();
+  h.jumpTo(h.cursor());
+  (void)h.current();
+  EXPECT_FALSE(changed());
+  h.commit("a", doc(1));
+  EXPECT_TRUE(changed());
+  h.undo();
+  EXPECT_TRUE(changed());
+  h.redo();
+  EXPECT_TRUE(changed());
+  h.jumpTo(0);
+  EXPECT_TRUE(changed());
+  History capped(2);
+  capped.reset(doc(0), "Original", true);
+  for (int i = 1; i < 4; ++i) {
+    const std::uint64_t before = capped.revision();
+    capped.commit("move", doc(i));  // the oldest step goes too
+    EXPECT_NE(capped.revision(), before) << i;
+  }
 }
 
 TEST(EditorHistory, CapacityDropsTheOldestStep) {

@@ -3,7 +3,6 @@
 // the library and the keys (version 1 sessions still load, with neither). File > Export animation runs one frame
 // per editor frame, matches the core export and leaves nothing when cancelled.
 #include <gtest/gtest.h>
-#include <stdlib.h>
 
 #include <algorithm>
 #include <atomic>
@@ -17,6 +16,7 @@
 #include "animation/animation_export.h"
 #include "animation/normal_transform.h"
 #include "base/errors.h"
+#include "core/scratch_folder.h"
 #include "deform/jacobian.h"
 #include "engine/session.h"
 #include "io/mesh_document.h"
@@ -267,8 +267,6 @@ namespace {
 class EditorAnimationExport : public ::testing::Test {
  protected:
   void SetUp() override {
-    std::string pattern = (std::filesystem::temp_directory_path() / "somicage-export-XXXXXX").string();
-    folder = ::mkdtemp(pattern.data());
     std::ofstream(folder / "cage.obj")
         << "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\nv -1 -1 1\nv 1 -1 1\nv 1 1 1\n"
            "v -1 1 1\nf 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
@@ -290,10 +288,6 @@ class EditorAnimationExport : public ::testing::Test {
     keyCurrentPose(state);
     posed = state.document.pose;
   }
-  void TearDown() override {
-    std::error_code ignored;
-    std::filesystem::remove_all(folder, ignored);
-  }
   // Runs the hooks the way the frame loop does until the job ends (or `frames` editor frames passed).
   void runFrames(int frames) {
     for (int k = 0; k < frames && state.animation.exportJob; ++k) {
@@ -303,7 +297,8 @@ class EditorAnimationExport : public ::testing::Test {
     }
   }
 
-  std::filesystem::path folder;
+  const test::ScratchFolder scratch;  // removed after `state` has ended its jobs
+  const std::filesystem::path folder = scratch.path();
   AppState state;
   Eigen::MatrixXd posed;
 };

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -14,6 +15,7 @@
 #include "core/scratch_folder.h"
 #include "editor_test_support.h"
 #include "interaction/shortcuts.h"
+#include "interaction/transform.h"
 #include "job_waiting.h"
 #include "jobs/session_read.h"
 #include "jobs/thread_budget.h"
@@ -127,6 +129,41 @@ void framesUntilSettled(AppState& state) {
   });
 }
 
+// Opens the session as File > Open session does: asked first over unsaved changes (answered Don't save), then read
+// by `steered`, which holds the read until released. Returns once the reader runs.
+void startOpening(AppState& state, const std::string& session, SteeredSessionReader& steered) {
+  guardUnsaved(state, "open session s.json",
+               [session, read = steered.reader()](AppState& s) { loadSessionFile(s, session, read); });
+  if (state.document.unsaved.asking) answerUnsaved(state, UnsavedChoice::DontSave);
+  waitUntil([&steered] { return steered.entered.load(); });
+}
+
+// Releases the reader, waits until the file is read and runs one frame: the frame that takes the read session.
+void finishReading(AppState& state, SteeredSessionReader& steered) {
+  steered.released = true;
+  waitUntilDone(state.jobs.session);
+  frame(state);
+}
+
+// One edit of the open document as the user makes it: a vertex moved, committed as "Grab".
+void grab(AppState& state) {
+  Eigen::MatrixXd pose = state.document.pose;
+  pose(1, 0) += 0.125;
+  setPose(state, pose);
+  ASSERT_TRUE(commitEdit(state, "Grab"));
+}
+
+// The finished read is there, untaken: nothing of the session was applied or started (its scene's load).
+void expectReadWaiting(const AppState& state) {
+  EXPECT_TRUE(state.jobs.session.ready()) << "the read session was taken";
+  EXPECT_FALSE(state.loadingScene());
+}
+
+// The session's own method and file, against the demo's (Somigliana, no file): was it applied?
+bool sessionApplied(const AppState& state, const std::string& session) {
+  return methodName(state.document.method) == "green" && state.document.path == session;
+}
+
 // Every core of the machine's budget, held by the test: a job started meanwhile waits for its cores.
 struct HeldCores {
   ThreadBudget::Lease lease;
@@ -164,6 +201,9 @@ TEST(EditorSessionOpen, TheFrameLoopRunsWhileTheSessionIsRead) {
   EXPECT_EQ(methodName(state.document.method), "somigliana") << "the session is not applied before it is read";
   EXPECT_FALSE(steered.timedOut) << "something waited for the reader";
   steered.released = true;
+  framesUntilSettled(state);
+  ASSERT_TRUE(state.document.unsaved.asking) << "the edits made meanwhile are not discarded without asking";
+  answerUnsaved(state, UnsavedChoice::DontSave);
   framesUntilSettled(state);
   ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
   EXPECT_EQ(methodName(state.document.method), "green");
@@ -287,4 +327,177 @@ TEST(EditorSessionOpen, AGoodSessionIsAppliedAsItsFileSays) {
   EXPECT_EQ(state.document.history.size(), 1u);
   EXPECT_EQ(state.files.recent.entries().front(), RecentEntry::sessionFile(files.session));
   EXPECT_EQ(state.status.message.rfind("loaded ", 0), 0u) << state.status.message;
+}
+
+// (e) The user was asked before the read began; a change of the document while the file is read (an edit, an undo,
+// an undo and its redo: the state the user agreed to discard may be back, but its redo step is the user's work) makes
+// the finished read ask again, and nothing is applied until the answer: Don't save applies the session, Cancel drops
+// it and keeps the document, its history and its views exactly. Before, the read session replaced them unasked.
+TEST(EditorSessionOpen, AChangeWhileTheSessionIsReadAsksAgainBeforeItIsApplied) {
+  const SessionFiles files;
+  struct Change {
+    std::string name;
+    std::function<void(AppState&)> make;
+  };
+  const std::vector<Change> changes = {{"an edit", [](AppState& s) { grab(s); }},
+                                       {"an undo", [](AppState& s) { undo(s); }},
+                                       {"an undo and its redo", [](AppState& s) {
+                                          undo(s);
+                                          redo(s);
+                                        }}};
+  for (const Change& change : changes) {
+    for (const UnsavedChoice answer : {UnsavedChoice::DontSave, UnsavedChoice::Cancel}) {
+      SCOPED_TRACE(change.name + (answer == UnsavedChoice::Cancel ? ", Cancel" : ", Don't save"));
+      SteeredSessionReader steered;
+      AppState state;
+      openEditedDemo(state);
+      startOpening(state, files.session, steered);
+      change.make(state);
+      const Kept kept = keep(state);
+      finishReading(state, steered);
+      framesUntilSettled(state);
+      ASSERT_TRUE(state.document.unsaved.asking) << "the finished read asks";
+      EXPECT_EQ(state.document.unsaved.asking->what, "open session s.json");
+      expectKept(state, kept);  // nothing applied while it asks
+      answerUnsaved(state, answer);
+      framesUntilSettled(state);
+      ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+      EXPECT_FALSE(state.document.unsaved.asking);
+      if (answer == UnsavedChoice::Cancel) {
+        EXPECT_EQ(state.status.message, "cancelled: open session s.json");
+        expectKept(state, kept);
+      } else {
+        EXPECT_TRUE(sessionApplied(state, files.session));
+        EXPECT_FALSE(hasUnsavedChanges(state));
+      }
+    }
+  }
+}
+
+// (f) Without a change while the file is read, the session is applied at once, unasked: over a clean document, over
+// an unsaved one whose user answered Don't save before the read (what was unsaved then was asked about), with a
+// commit that changed nothing meanwhile; and after an edit that was saved meanwhile (nothing is lost: it is on disk).
+TEST(EditorSessionOpen, WithoutAChangeWhileTheSessionIsReadItIsAppliedUnasked) {
+  const SessionFiles files;
+  struct Case {
+    std::string name;
+    bool edited = false;                       // the document is unsaved when the read begins
+    std::function<void(AppState&)> meanwhile;  // what the user does while the file is read
+  };
+  const std::string mine = files.dir / "mine.json";
+  const std::vector<Case> cases = {
+      {"clean", false, [](AppState&) {}},
+      {"unsaved, answered Don't save", true, [](AppState& s) { EXPECT_FALSE(commitEdit(s, "Grab")); }},
+      {"an edit saved meanwhile", true, [&mine](AppState& s) {
+         grab(s);
+         ASSERT_TRUE(saveSessionFile(s, mine));
+       }}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    SteeredSessionReader steered;
+    AppState state;
+    if (c.edited) {
+      openEditedDemo(state);
+    } else {
+      openDemoScene(state, 2);
+    }
+    startOpening(state, files.session, steered);
+    c.meanwhile(state);
+    finishReading(state, steered);
+    EXPECT_FALSE(state.document.unsaved.asking) << "asked again";
+    framesUntilSettled(state);
+    ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+    EXPECT_TRUE(sessionApplied(state, files.session));
+  }
+}
+
+// (g) Save, when the document has a file: the document with the edit made during the read is written to its file
+// first (read back: the edited pose, not the session's), then the session is applied.
+TEST(EditorSessionOpen, SaveWritesTheDocumentWithTheEditThenAppliesTheSession) {
+  const SessionFiles files;
+  const std::string mine = files.dir / "mine.json";
+  SteeredSessionReader steered;
+  AppState state;
+  openDemoScene(state, 2);
+  ASSERT_TRUE(saveSessionFile(state, mine));
+  startOpening(state, files.session, steered);
+  grab(state);
+  const Eigen::MatrixXd edited = state.document.pose;
+  finishReading(state, steered);
+  ASSERT_TRUE(state.document.unsaved.asking);
+  answerUnsaved(state, UnsavedChoice::Save);
+  EXPECT_EQ(loadSession(mine).pose, edited) << "the edit made during the read is saved";
+  framesUntilSettled(state);
+  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+  EXPECT_TRUE(sessionApplied(state, files.session));
+  EXPECT_FALSE(hasUnsavedChanges(state));
+}
+
+// (h) A finished read waits while another question is open (Ctrl+Q meanwhile: the quit question stays, not replaced
+// by the session's) and during a live edit: a handle moving the cage (G: its edit, once confirmed, asks; an Esc'd
+// transform changes nothing, so the session then comes unasked) and a slider held (nu: committed on release, asks).
+TEST(EditorSessionOpen, AFinishedReadWaitsForAnOpenQuestionAndAMovingHandle) {
+  const SessionFiles files;
+  {
+    SCOPED_TRACE("quit asked meanwhile");
+    SteeredSessionReader steered;
+    AppState state;
+    openEditedDemo(state);
+    startOpening(state, files.session, steered);
+    requestQuit(state);
+    finishReading(state, steered);
+    ASSERT_TRUE(state.document.unsaved.asking);
+    EXPECT_EQ(state.document.unsaved.asking->what, "quit");
+    expectReadWaiting(state);
+    answerUnsaved(state, UnsavedChoice::Cancel);
+    framesUntilSettled(state);
+    EXPECT_FALSE(state.document.quitRequested);
+    EXPECT_TRUE(sessionApplied(state, files.session));
+  }
+  for (const bool confirmed : {true, false}) {
+    SCOPED_TRACE(confirmed ? "G confirmed" : "G cancelled");
+    SteeredSessionReader steered;
+    AppState state;
+    openEditedDemo(state);
+    startOpening(state, files.session, steered);
+    const Eigen::MatrixXd original = state.document.pose;
+    state.input.mouse.mode = Interaction::Mode::Modal;
+    state.input.mouse.transform =
+        beginTransform(TransformKind::Grab, {1}, original, Eigen::Vector2d(10, 10), Eigen::Vector2d(100, 100));
+    Eigen::MatrixXd moved = original;
+    moved(1, 0) += 0.125;
+    setPose(state, moved);
+    finishReading(state, steered);
+    expectReadWaiting(state);
+    EXPECT_EQ(state.document.pose, moved);
+    if (confirmed) {
+      EXPECT_TRUE(commitEdit(state, "Grab"));  // Enter (confirmTransform)
+    } else {
+      setPose(state, original);  // Esc (cancelTransform)
+    }
+    state.input.mouse.transform.reset();
+    state.input.mouse.mode = Interaction::Mode::Idle;
+    framesUntilSettled(state);
+    EXPECT_EQ(state.document.unsaved.asking.has_value(), confirmed);
+    EXPECT_EQ(sessionApplied(state, files.session), !confirmed);
+  }
+  {
+    SCOPED_TRACE("nu slider held");
+    SteeredSessionReader steered;
+    AppState state;
+    openEditedDemo(state);
+    startOpening(state, files.session, steered);
+    state.input.widgetActive = true;
+    DeformParams params = state.document.params;
+    params.nu = 0.125;
+    setParams(state, params);
+    finishReading(state, steered);
+    expectReadWaiting(state);
+    EXPECT_EQ(state.document.params.nu, 0.125);
+    EXPECT_TRUE(commitEdit(state, "nu"));  // released (IsItemDeactivatedAfterEdit)
+    state.input.widgetActive = false;
+    framesUntilSettled(state);
+    EXPECT_TRUE(state.document.unsaved.asking);
+    EXPECT_FALSE(sessionApplied(state, files.session));
+  }
 }

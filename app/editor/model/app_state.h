@@ -129,6 +129,9 @@ struct InputState {
   Selection selection;
   ElementMode elementMode = ElementMode::Vertex;  // what a click picks (1 / 2 / 3)
   Interaction mouse;
+  // A panel's widget is held (a slider dragged, a field typed in; the frame loop sets it from ImGui before it polls
+  // the jobs): its live edit is committed only when it lets go.
+  bool widgetActive = false;
 };
 
 // A scene load in flight: what to apply when its scene arrives (showLoadedScene). Present from the request until its
@@ -153,6 +156,7 @@ struct JobsState {
   ExportWorker exporter;        // File > Export deformed mesh / animation (export_jobs.h)
   BackgroundJob<PosedCageLoad> posedCage;  // File > Load posed cage, a dropped posed cage: read here, never on the UI
   BackgroundJob<SessionRead> session;      // a session file being opened: read and parsed here (session_read.h)
+  std::uint64_t sessionFrom = 0;           // the document's History::revision() when that read began
   std::optional<PendingLoad> load;
 };
 
@@ -312,7 +316,10 @@ bool saveSessionFile(AppState& state, const std::string& path);  // marks the do
 // Starts reading the session file on JobsState::session (superseding one being read; `read`: a test's reader) and
 // returns; pollSessionRead applies it on the UI thread once read (as applySession), or reports why it could not be read
 // (the InputError: file, line, what is wrong). A cancel (Esc, the panel's Cancel) or an error leaves the document as
-// it was.
+// it was. The caller has asked about unsaved changes (guardUnsaved); if the document changed while the file was read
+// (a commit, undo, redo or jump) and is unsaved, the read session waits for the same question again (Save / Don't
+// save apply it, Cancel drops it), and a finished read is not taken while a question is shown or a live edit (a
+// handle, G / R / S, a held widget) is under way.
 void loadSessionFile(AppState& state, const std::string& path, SessionReader read = readSessionFile);
 bool pollSessionRead(AppState& state);  // the frame loop's: true when a read session was applied
 

@@ -2,6 +2,7 @@
 #include <exception>
 #include <filesystem>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -172,25 +173,18 @@ bool saveSessionFile(AppState& state, const std::string& path) {
 void loadSessionFile(AppState& state, const std::string& path, SessionReader read) {
   state.jobs.session.start(
       [path, read = std::move(read)](JobContext& context) { return readSessionOnJob(path, read, context); }, 1);
+  state.jobs.sessionFrom = state.document.history.revision();  // what the user agreed to discard
   state.status.message = "reading session " + path;
 }
 
-bool pollSessionRead(AppState& state) {
-  std::optional<SessionRead> read = state.jobs.session.poll();
-  if (!read) return false;
-  const std::string& path = read->path;
-  if (read->cancelled) {
-    state.status.message = "opening session " + path + " cancelled";
-    return false;
-  }
-  if (!read->session) {
-    state.status.errors.push_back(read->error);
-    return false;
-  }
+namespace {
+
+// Applies a session read from `path` (applySession): the document becomes the session's, opened clean.
+bool openReadSession(AppState& state, const std::string& path, const Session& session) {
   try {
     PendingLoad load;
     load.documentPath = path;
-    applySession(state, *read->session, std::move(load));
+    applySession(state, session, std::move(load));
     if (!state.loadingScene()) {  // the same scene: applied at once, as an edit
       state.document.path = path;
       state.document.history.markSaved();
@@ -202,6 +196,36 @@ bool pollSessionRead(AppState& state) {
     state.status.errors.push_back(e.what());
     return false;
   }
+}
+
+}  // namespace
+
+bool pollSessionRead(AppState& state) {
+  // A finished read waits while another question is open (it would replace it) and while a live edit is under way
+  // (a handle or G / R / S moving the cage, a slider held: committed when it ends, it then counts as a change below).
+  if (state.document.unsaved.asking || state.document.unsaved.afterSave || state.input.mouse.transform ||
+      state.input.widgetActive)
+    return false;
+  std::optional<SessionRead> read = state.jobs.session.poll();
+  if (!read) return false;
+  const std::string& path = read->path;
+  if (read->cancelled) {
+    state.status.message = "opening session " + path + " cancelled";
+    return false;
+  }
+  if (!read->session) {
+    state.status.errors.push_back(read->error);
+    return false;
+  }
+  // The user was asked before the read began; edits, undo or redo since then were not part of that answer.
+  if (state.document.history.revision() == state.jobs.sessionFrom || !hasUnsavedChanges(state))
+    return openReadSession(state, path, *read->session);
+  guardUnsaved(state, "open session " + std::filesystem::path(path).filename().string(),
+               [path, session = std::make_shared<const Session>(std::move(*read->session))](AppState& s) {
+                 openReadSession(s, path, *session);
+               });
+  state.status.message = "session " + path + " read: the document changed meanwhile";
+  return false;
 }
 
 // ---- dropped and recent files ----

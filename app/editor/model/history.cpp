@@ -10,6 +10,7 @@ void History::reset(Document original, std::string name, bool clean) {
   cursor_ = 0;
   saved_.reset();
   if (clean) saved_ = 0;
+  ++revision_;
 }
 
 bool History::commit(const std::string& name, Document after) {
@@ -22,6 +23,7 @@ bool History::commit(const std::string& name, Document after) {
   if (saved_ && *saved_ > cursor_) saved_.reset();
   steps_.push_back({name, std::move(after)});
   ++cursor_;
+  ++revision_;
   if (steps_.size() > capacity_) {
     steps_.erase(steps_.begin());
     --cursor_;
@@ -30,9 +32,16 @@ bool History::commit(const std::string& name, Document after) {
   return true;
 }
 
-const Document& History::undo() { return steps_[--cursor_].state; }
-const Document& History::redo() { return steps_[++cursor_].state; }
+const Document& History::undo() {
+  ++revision_;
+  return steps_[--cursor_].state;
+}
+const Document& History::redo() {
+  ++revision_;
+  return steps_[++cursor_].state;
+}
 const Document& History::jumpTo(std::size_t index) {
+  if (index != cursor_) ++revision_;
   cursor_ = index;
   return steps_[cursor_].state;
 }

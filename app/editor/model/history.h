@@ -5,9 +5,13 @@
 //
 // The history also knows which step was last saved, so "unsaved changes" is "the cursor is not on the saved
 // step" (undoing back to the saved state makes the document clean again, as in Blender and most editors).
+//
+// Its revision counts the changes of the current state (each commit, undo, redo, jump or reset), so that work begun
+// at one state can tell whether the user changed the document since (a session being read: pollSessionRead).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -47,6 +51,9 @@ class History {
   std::size_t cursor() const { return cursor_; }
   const HistoryStep& step(std::size_t index) const { return steps_[index]; }
   const Document& current() const { return steps_[cursor_].state; }
+  // Bumps whenever the current state changes: a commit that adds a step, undo, redo, a jump, a reset. An undo and
+  // its redo are two changes (the state is the same again, but the step undone could have been another's redo).
+  std::uint64_t revision() const { return revision_; }
 
   // The current step is what is on disk now.
   void markSaved() { saved_ = cursor_; }
@@ -59,6 +66,7 @@ class History {
   std::vector<HistoryStep> steps_;
   std::size_t cursor_ = 0;
   std::optional<std::size_t> saved_;  // none: the saved state is no step of this history
+  std::uint64_t revision_ = 0;
 };
 
 }  // namespace somicage::editor

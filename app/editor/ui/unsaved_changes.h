@@ -1,7 +1,7 @@
 // "Save changes before ...?" Actions that would discard the document (quit, close the window, New, Open, a
-// demo, a session, a recent or dropped file) go through guardUnsaved: with no unsaved changes they run at once;
-// otherwise the editor asks Save / Don't save / Cancel (drawn by panels.cpp) and answerUnsaved carries out the
-// answer. Save writes the session to its file, or opens the Save session dialog first and runs the action once
+// demo, a session, a recent or dropped file, and a session whose file was read while the document changed:
+// pollSessionRead) go through guardUnsaved: with no unsaved changes they run at once; otherwise the editor asks
+// Save / Don't save / Cancel (drawn by panels.cpp) and answerUnsaved carries out the answer. Save writes the session to its file, or opens the Save session dialog first and runs the action once
 // that save succeeded. The quit action only sets quitRequested: the frame loop removes the autosave after it ends,
 // i.e. only after the user's choice has been carried out, never on Cancel. Pure logic, no GL.
 #pragma once
