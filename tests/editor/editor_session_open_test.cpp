@@ -411,26 +411,47 @@ TEST(EditorSessionOpen, WithoutAChangeWhileTheSessionIsReadItIsAppliedUnasked) {
   }
 }
 
-// (g) Save, when the document has a file: the document with the edit made during the read is written to its file
-// first (read back: the edited pose, not the session's), then the session is applied.
+// (g) Save: the document with the edit made during the read is written first, to its file or (none yet) through the
+// Save session dialog, then the session is applied. A session of the scene shown (the 2D demo, Green, nu = 0.25) is
+// applied at once as an edit, so the order shows in the saved file, read back: the edited pose and Somigliana, not
+// the session's rest pose and Green.
 TEST(EditorSessionOpen, SaveWritesTheDocumentWithTheEditThenAppliesTheSession) {
-  const SessionFiles files;
-  const std::string mine = files.dir / "mine.json";
-  SteeredSessionReader steered;
-  AppState state;
-  openDemoScene(state, 2);
-  ASSERT_TRUE(saveSessionFile(state, mine));
-  startOpening(state, files.session, steered);
-  grab(state);
-  const Eigen::MatrixXd edited = state.document.pose;
-  finishReading(state, steered);
-  ASSERT_TRUE(state.document.unsaved.asking);
-  answerUnsaved(state, UnsavedChoice::Save);
-  EXPECT_EQ(loadSession(mine).pose, edited) << "the edit made during the read is saved";
-  framesUntilSettled(state);
-  ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
-  EXPECT_TRUE(sessionApplied(state, files.session));
-  EXPECT_FALSE(hasUnsavedChanges(state));
+  const test::ScratchFolder dir;
+  const std::string session = dir / "demo.json", mine = dir / "mine.json";
+  for (const bool hasFile : {true, false}) {
+    SCOPED_TRACE(hasFile ? "the document has a file" : "the Save session dialog");
+    SteeredSessionReader steered;
+    AppState state;
+    openDemoScene(state, 2);
+    Session demo = makeSession(state);
+    demo.method = parseMethod("green");
+    demo.params.nu = 0.25;
+    saveSession(session, demo);
+    if (hasFile) {
+      ASSERT_TRUE(saveSessionFile(state, mine));
+    }
+    startOpening(state, session, steered);
+    grab(state);
+    const Eigen::MatrixXd edited = state.document.pose;
+    finishReading(state, steered);
+    ASSERT_TRUE(state.document.unsaved.asking);
+    answerUnsaved(state, UnsavedChoice::Save);
+    if (!hasFile) {  // the dialog is open; its OK saves, then runs the action
+      EXPECT_TRUE(state.document.unsaved.afterSave);
+      EXPECT_FALSE(sessionApplied(state, session));
+      ASSERT_TRUE(saveSessionFile(state, mine));
+      sessionDialogFinished(state, true);
+    }
+    const Session saved = loadSession(mine);
+    EXPECT_EQ(saved.pose, edited) << "the edit made during the read is saved, before the session is applied";
+    EXPECT_EQ(methodName(saved.method), "somigliana");
+    framesUntilSettled(state);
+    ASSERT_TRUE(state.status.errors.empty()) << state.status.errors.front();
+    EXPECT_TRUE(sessionApplied(state, session));
+    EXPECT_EQ(state.document.pose, demo.pose);
+    EXPECT_EQ(state.document.params.nu, 0.25);
+    EXPECT_FALSE(hasUnsavedChanges(state));
+  }
 }
 
 // (h) A finished read waits while another question is open (Ctrl+Q meanwhile: the quit question stays, not replaced
