@@ -8,6 +8,7 @@
 #include "base/errors.h"
 #include "base/point_blocks.h"
 #include "base/prefault.h"
+#include "base/simd_pack.h"
 #include "coordinates/coordinate_gradients.h"
 #include "coordinates/somigliana_coordinates.h"
 #include "coordinates/somigliana_row_kernels.h"
@@ -104,6 +105,7 @@ const double* writeMainColumns(const CoordinateLayout& layout, const GradientRow
   return in;
 }
 
+#if SOMICAGE_SIMD_PACKS
 // A whole pack's gradient rows into float matrices, which are three times the size of C and written once: the
 // lanes' per-vertex sums and tails made here in double, every row then streamed out by the kernels' writer
 // (somigliana_row_kernels.h: whole cache lines without reading them first; twice as fast as ordinary stores).
@@ -127,6 +129,7 @@ void streamGradientGroup(const CoordinateLayout& layout, const GradientRowGroup&
         gradients[a].row(group.first + l).setZero();
   }
 }
+#endif
 
 // A group's gradient rows d(row of C)/dx_a (coordinate_gradients.h) into the gradient matrices, as
 // writeIntegralColumns writes C's rows, with the lanes innermost: the packs' interleaved rows are read once, in
@@ -136,10 +139,12 @@ template <typename Scalar>
 void writeGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& group,
                         const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<Scalar>>& gradients) {
   const bool contiguous = group.laneStride == 1;
+#if SOMICAGE_SIMD_PACKS  // else no kernel copies: groups of one point
   if constexpr (std::is_same_v<Scalar, float>) {
     if (contiguous && group.count == somiglianaRowKernels().lanes && layout.tailColumns <= tailColumnCount(3))
       return streamGradientGroup(layout, group, regions, gradients);
   }
+#endif
   for (std::size_t a = 0; a < gradients.size(); ++a) {
     Scalar* out[kMaxGroupLanes] = {};
     for (int l = 0; l < group.count; ++l) out[l] = gradients[a].row(group.first + l).data();
