@@ -42,8 +42,7 @@ Eigen::MatrixXd assembleVertexCoordinate(const double* t, int dim, double nu) {
 }
 
 CoordinateLayout somiglianaLayout(int dim, int numVertices, int numFaces) {
-  return {numVertices, numFaces, vertexTermCount(dim), faceTermCount(dim),
-          vertexTermCount(dim) + affineTermCount(dim) + dim + 1, affineTermCount(dim)};
+  return {numVertices, numFaces, vertexTermCount(dim), faceTermCount(dim), tailColumnCount(dim), affineTermCount(dim)};
 }
 
 void gatherVertexTerms(const CoordinateLayout& layout, const double* row, int i, double* terms) {

@@ -34,6 +34,9 @@ constexpr int faceTermCount(int dim) { return 1 + dim; }
 // output a and pair bc in B's order (3D: xx, yy, zz, xy, xz, yz; 2D: xx, yy, xy), output-major. 18 (3D) or 6 (2D).
 constexpr int affineTermCount(int dim) { return dim * dim * (dim + 1) / 2; }
 
+// Numbers per point after the vertex and face blocks of C: [per-vertex sums | affine terms | x | 1].
+constexpr int tailColumnCount(int dim) { return vertexTermCount(dim) + affineTermCount(dim) + dim + 1; }
+
 struct NuCoefficients {
   double alpha, beta, k1, k2;
 };

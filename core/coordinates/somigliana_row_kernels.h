@@ -26,6 +26,12 @@ struct SomiglianaRowKernels {
   // tables[j] = makeGradientFrame(faces[j].frame) (triangle_gradients_kernel.h), made once per cage.
   void (*gradientRows)(const PortableFace* faces, const PortableGradientFrame* tables, int numFaces, int numVertices,
                        const double* x, double* rows);
+  // The lanes' rows of such a buffer as `lanes` consecutive rows of a float matrix, `columns` floats each from `out`:
+  // entry c < packedColumns of lane l from in[c * entryStride + l], the rest from tail[l * (columns - packedColumns) +
+  // c - packedColumns]. Every whole cache line goes out with a non-temporal store: a matrix written once and much
+  // larger than the caches (the gradients') would otherwise be read into the cache before each line is written.
+  void (*streamFloatRows)(const double* in, long entryStride, int packedColumns, const double* tail, int columns,
+                          float* out);
 };
 
 // The copy for `isa`, or nullptr where this build has none or the CPU does not run it (kernelIsaAvailable). Only

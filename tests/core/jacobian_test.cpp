@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <memory>
 
@@ -144,6 +145,37 @@ TEST(Jacobian, MarksPointsThatFollowTheExteriorRule) {
   EXPECT_TRUE(J.row(0).allFinite());
   EXPECT_TRUE(J.row(1).array().isNaN().all());
   EXPECT_LE((positions - deformer->deform(posed, DeformParams{})).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// Float storage (the editor's and the CLI's): the gradient matrices are written in whole packs of points by the
+// kernels' streaming writer (somigliana_row_kernels.h), a part pack by the plain one. J agrees with the double
+// matrices' to float rounding of the gradients' entries, and a point outside the cage in the middle of a pack still
+// has an undefined J: 21 points, so at least two whole packs and a part pack.
+TEST(Jacobian, FloatStoredGradientsAgreeWithDoubleOnesToFloatRounding) {
+  const JacobianSetup s = setupFor(3);
+  Eigen::MatrixXd points = test::randomBallPoints(21, 0.55, 7);
+  points.row(5) << 2.0, 0.0, 0.0;  // outside
+  PrecomputeOptions floats;
+  floats.floatStorage = true;
+  const auto doubleDeformer = makeDeformer(methods::somigliana(), s.cage, points);
+  const auto floatDeformer = makeDeformer(methods::somigliana(), s.cage, points, floats);
+  const DeformationGradients doubles(*doubleDeformer, points), singles(*floatDeformer, points);
+  for (const DeformParams& params : parameterSets(methods::somigliana())) {
+    Eigen::MatrixXd positions, J, floatPositions, floatJ;
+    doubles.evaluate(s.posed, params, positions, J);
+    singles.evaluate(s.posed, params, floatPositions, floatJ);
+    for (int p = 0; p < points.rows(); ++p) {
+      ASSERT_EQ(doubles.defined(p), p != 5);
+      ASSERT_EQ(singles.defined(p), p != 5);
+      if (p == 5) {
+        EXPECT_TRUE(floatJ.row(p).array().isNaN().all());
+        continue;
+      }
+      // float's 6e-8 of entries of about 1 (the coordinates' gradients in a cage of diameter 2), summed over the row
+      EXPECT_LE((floatJ.row(p) - J.row(p)).cwiseAbs().maxCoeff(), 1e-5 * std::max(1.0, J.row(p).cwiseAbs().maxCoeff()))
+          << "point " << p;
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

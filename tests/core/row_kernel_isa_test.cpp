@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -128,6 +130,43 @@ TEST(RowKernelIsa, EveryCopyAgreesWithTheScalarClosedFormAndWithTheOthers) {
           fused = std::max(fused, relativeDifference(copy.gradients[a], rows[1].gradients[a]));
         EXPECT_LE(fused, 1e-13) << name << " against " << kernelIsaName(copies[1]);
         RecordProperty("against_" + std::string(kernelIsaName(copies[1])) + "_" + name, scientific(fused));
+      }
+    }
+  }
+}
+
+// streamFloatRows (the gradient matrices' writer) against its definition, out[l * columns + c] = in[c * stride + l]
+// (c < packed) or tail[l * (columns - packed) + c - packed], in floats: every copy, for rows narrower and wider than
+// a cache line, starts at every float offset within a line, and the floats just before and after the span untouched.
+TEST(RowKernelIsa, EveryCopyStreamsItsRowsExactlyWhereTheyBelong) {
+#if !SOMICAGE_SIMD_PACKS
+  GTEST_SKIP() << "no SIMD packs in this build: no copies";
+#endif
+  for (KernelIsa isa : copiesThisCpuRuns()) {
+    const SomiglianaRowKernels& kernels = *somiglianaRowKernelsFor(isa);
+    const int lanes = kernels.lanes;
+    const long stride = 3L * lanes;  // the gradient rows' interleaving
+    for (const auto& [packed, columns] : {std::pair{3, 5}, {15, 17}, {16, 16}, {40, 72}, {866, 898}}) {
+      const PackBuffer in = makePackBuffer(static_cast<std::size_t>(stride) * packed);
+      for (long k = 0; k < stride * packed; ++k) in[k] = 1 + 0.5 * static_cast<double>(k);  // exact in float
+      std::vector<double> tail(static_cast<std::size_t>(lanes * (columns - packed)));
+      for (std::size_t k = 0; k < tail.size(); ++k) tail[k] = -1.0 - static_cast<double>(k);
+      const float guard = 12345.f;
+      for (int offset = 0; offset < 16; ++offset) {
+        std::vector<float> storage(static_cast<std::size_t>(lanes * columns + 48), guard);
+        float* const lineStart = storage.data() + (16 - reinterpret_cast<std::uintptr_t>(storage.data()) % 64 / 4);
+        float* const out = lineStart + offset;
+        kernels.streamFloatRows(in.get(), stride, packed, tail.data(), columns, out);
+        int wrong = 0;
+        for (int l = 0; l < lanes; ++l)
+          for (int c = 0; c < columns; ++c) {
+            const double want =
+                c < packed ? in[c * stride + l] : tail[static_cast<std::size_t>(l * (columns - packed) + c - packed)];
+            wrong += out[l * columns + c] != static_cast<float>(want);
+          }
+        EXPECT_EQ(wrong, 0) << kernelIsaName(isa) << " " << packed << "/" << columns << " offset " << offset;
+        EXPECT_EQ(out[-1], guard) << kernelIsaName(isa) << " offset " << offset;
+        EXPECT_EQ(out[lanes * columns], guard) << kernelIsaName(isa) << " offset " << offset;
       }
     }
   }
