@@ -32,6 +32,8 @@ struct SomiglianaRowKernels {
   // larger than the caches (the gradients') would otherwise be read into the cache before each line is written.
   void (*streamFloatRows)(const double* in, long entryStride, int packedColumns, const double* tail, int columns,
                           float* out);
+  // sums[l] = the sum of lane l's entries k < count of such a buffer (in[k * entryStride + l]), added in order.
+  void (*sumEntries)(const double* in, long entryStride, int count, double* sums);
 };
 
 // The copy for `isa`, or nullptr where this build has none or the CPU does not run it (kernelIsaAvailable). Only

@@ -139,10 +139,16 @@ void streamFloatRows(const double* in, long entryStride, int packedColumns, cons
   _mm_sfence();  // the streamed lines are visible to other threads before the caller goes on
 }
 
+void sumEntries(const double* in, long entryStride, int count, double* sums) {
+  simd::Pack sum = 0.0;
+  for (int k = 0; k < count; ++k) sum += *reinterpret_cast<const simd::Pack*>(in + k * entryStride);
+  for (int l = 0; l < simd::kLanes; ++l) sums[l] = sum.v[l];
+}
+
 }  // namespace
 
 extern const SomiglianaRowKernels kSomiglianaRowKernels;
-const SomiglianaRowKernels kSomiglianaRowKernels = {simd::kLanes, rows, gradientRows, streamFloatRows};
+const SomiglianaRowKernels kSomiglianaRowKernels = {simd::kLanes, rows, gradientRows, streamFloatRows, sumEntries};
 
 SOMICAGE_ISA_END
 }  // namespace somicage

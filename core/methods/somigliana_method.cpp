@@ -111,19 +111,22 @@ const double* writeMainColumns(const CoordinateLayout& layout, const GradientRow
 // (somigliana_row_kernels.h: whole cache lines without reading them first; twice as fast as ordinary stores).
 void streamGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& group,
                          const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<float>>& gradients) {
+  const SomiglianaRowKernels& kernels = somiglianaRowKernels();
   const int lanes = group.count;
   const std::ptrdiff_t stride = group.entryStride;
   double tails[kMaxGroupLanes * tailColumnCount(3)];  // the packs' rows are 3D ones
   for (std::size_t a = 0; a < gradients.size(); ++a) {
     const double* in = group.rows[a];
-    double sums[kMaxGroupLanes][vertexTermCount(3)] = {};
-    for (int t = 0; t < layout.vertexTerms; ++t)  // in vertex order, as sumVertexTerms
-      for (int i = 0; i < layout.numVertices; ++i)
-        for (int l = 0; l < lanes; ++l) sums[l][t] += in[layout.vertexColumn(i, t) * stride + l];
+    double sums[kMaxGroupLanes][vertexTermCount(3)];
+    for (int t = 0; t < layout.vertexTerms; ++t) {  // in vertex order, as sumVertexTerms
+      double termSums[kMaxGroupLanes];
+      kernels.sumEntries(in + layout.vertexColumn(0, t) * stride, stride, layout.numVertices, termSums);
+      for (int l = 0; l < lanes; ++l) sums[l][t] = termSums[l];
+    }
     for (int l = 0; l < lanes; ++l)
       writeTailColumns(layout, sums[l], in + layout.mainColumns() * stride + l, stride, tails + l * layout.tailColumns);
-    somiglianaRowKernels().streamFloatRows(in, stride, layout.mainColumns(), tails, layout.columns(),
-                                           gradients[a].row(group.first).data());
+    kernels.streamFloatRows(in, stride, layout.mainColumns(), tails, layout.columns(),
+                            gradients[a].row(group.first).data());
     for (int l = 0; l < lanes; ++l)
       if (regions[static_cast<std::size_t>(group.first + l)] != PointRegion::Inside)
         gradients[a].row(group.first + l).setZero();

@@ -135,7 +135,7 @@ TEST(RowKernelIsa, EveryCopyAgreesWithTheScalarClosedFormAndWithTheOthers) {
   }
 }
 
-// streamFloatRows (the gradient matrices' writer) against its definition, out[l * columns + c] = in[c * stride + l]
+// streamFloatRows (the gradient matrices' writer) and sumEntries against their definitions, out[l * columns + c] = in[c * stride + l]
 // (c < packed) or tail[l * (columns - packed) + c - packed], in floats: every copy, for rows narrower and wider than
 // a cache line, starts at every float offset within a line, and the floats just before and after the span untouched.
 TEST(RowKernelIsa, EveryCopyStreamsItsRowsExactlyWhereTheyBelong) {
@@ -149,6 +149,13 @@ TEST(RowKernelIsa, EveryCopyStreamsItsRowsExactlyWhereTheyBelong) {
     for (const auto& [packed, columns] : {std::pair{3, 5}, {15, 17}, {16, 16}, {40, 72}, {866, 898}}) {
       const PackBuffer in = makePackBuffer(static_cast<std::size_t>(stride) * packed);
       for (long k = 0; k < stride * packed; ++k) in[k] = 1 + 0.5 * static_cast<double>(k);  // exact in float
+      double sums[kMaxGroupLanes];  // sumEntries: the lanes' sums, here of exact halves, so exact
+      kernels.sumEntries(in.get(), stride, packed, sums);
+      for (int l = 0; l < lanes; ++l) {
+        double want = 0;
+        for (int c = 0; c < packed; ++c) want += in[c * stride + l];
+        EXPECT_EQ(sums[l], want) << kernelIsaName(isa) << " lane " << l;
+      }
       std::vector<double> tail(static_cast<std::size_t>(lanes * (columns - packed)));
       for (std::size_t k = 0; k < tail.size(); ++k) tail[k] = -1.0 - static_cast<double>(k);
       const float guard = 12345.f;
