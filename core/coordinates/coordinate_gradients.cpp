@@ -85,15 +85,6 @@ void forEachGradientRow(const Eigen::MatrixXd& points, int numFaces, int threads
       });
 }
 
-std::vector<TriangleFrame> cageFrames(const Cage& cage) {
-  std::vector<TriangleFrame> frames;
-  frames.reserve(cage.numFaces());
-  for (int j = 0; j < cage.numFaces(); ++j)
-    frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
-                                       cage.vertices.row(cage.faces(j, 2))));
-  return frames;
-}
-
 // Calls perFace(j, integrals) for every non-degenerate face of a 3D cage (PortableTriangleIntegralsOf) or every
 // edge of non-zero length of a 2D one (EdgeIntegralsOf), with the point (or pack of points) as dual numbers.
 template <int Dim, typename Scalar, typename PerFace>

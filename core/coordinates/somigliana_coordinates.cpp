@@ -110,6 +110,15 @@ void addVertexTerms(const EdgeIntegrals& I, const int ends[2], const CoordinateL
   }
 }
 
+std::vector<TriangleFrame> cageFrames(const Cage& cage) {
+  std::vector<TriangleFrame> frames;
+  frames.reserve(cage.numFaces());
+  for (int j = 0; j < cage.numFaces(); ++j)
+    frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
+                                       cage.vertices.row(cage.faces(j, 2))));
+  return frames;
+}
+
 std::vector<PortableFace> portableFaces(const Cage& cage, const std::vector<TriangleFrame>& frames) {
   std::vector<PortableFace> faces(frames.size());
   for (std::size_t j = 0; j < frames.size(); ++j) {
@@ -152,30 +161,37 @@ void accumulateEdge(const EdgeIntegrals& I, const Eigen::Vector2d& n, const int 
 // 30 KB for a 100-face cage in four lanes) stay in L1 while its faces are summed; the results are the scalar closed
 // form's to a few units of rounding (simd_math.h), independent of the thread count.
 void integrateSomiglianaPacks(const Cage& cage, const Eigen::MatrixXd& points, const std::vector<TriangleFrame>& frames,
-                              int threads, const ProgressCallback& progress, const CoordinateRowSink& sink) {
+                              int threads, const ProgressCallback& progress, const CoordinateGroupSink& sink) {
   const std::vector<PortableFace> faces = portableFaces(cage, frames);
   const SomiglianaRowKernels& kernels = somiglianaRowKernels();
   const int numPoints = static_cast<int>(points.rows()), lanes = kernels.lanes;
   const int columns = somiglianaLayout(3, cage.numVertices(), cage.numFaces()).integralColumns();
-  struct Buffers {
-    PackBuffer packed;  // entry k of lane l at k * lanes + l
-    std::vector<double> row;
-  };
   forEachPointGroup(
       points, lanes, cage.numFaces(), threads, progress,
-      [&] { return Buffers{makePackBuffer(static_cast<std::size_t>(columns) * lanes), std::vector<double>(columns)}; },
-      [&](Buffers& buffers, int first, const double* x) {
+      [&] { return makePackBuffer(static_cast<std::size_t>(columns) * lanes); },
+      [&](PackBuffer& packed, int first, const double* x) {
         double winding[kMaxGroupLanes];
-        kernels.rows(faces.data(), cage.numFaces(), cage.numVertices(), x, buffers.packed.get(), winding);
-        for (int l = 0; l < lanes && first + l < numPoints; ++l) {
-          for (int k = 0; k < columns; ++k) buffers.row[k] = buffers.packed[static_cast<std::size_t>(k) * lanes + l];
-          sink(first + l, buffers.row.data(), winding[l]);
-        }
+        kernels.rows(faces.data(), cage.numFaces(), cage.numVertices(), x, packed.get(), winding);
+        sink(CoordinateRowGroup{first, std::min(lanes, numPoints - first), lanes, packed.get(), winding});
       });
 }
 #endif
 
 }  // namespace
+
+bool integrateSomiglianaCoordinateGroups(const Cage& cage, const Eigen::MatrixXd& points,
+                                         const IntegrationOptions& options, const ProgressCallback& progress,
+                                         const CoordinateGroupSink& sink) {
+#if SOMICAGE_SIMD_PACKS
+  if (cage.dim() != 3 || options.rule == IntegrationOptions::Rule::Gauss || options.scalarKernel) return false;
+  assertCageAndPoints(cage, points);
+  integrateSomiglianaPacks(cage, points, cageFrames(cage), options.threads, progress, sink);
+  return true;
+#else
+  (void)cage, (void)points, (void)options, (void)progress, (void)sink;
+  return false;
+#endif
+}
 
 void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
                                     const ProgressCallback& progress, const CoordinateRowSink& sink) {
@@ -186,18 +202,16 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
   const int numPoints = static_cast<int>(points.rows());
   const CoordinateLayout layout = somiglianaLayout(dim, cage.numVertices(), cage.numFaces());
   const int columns = layout.integralColumns();
-  std::vector<TriangleFrame> frames;
-  if (dim == 3) {
-    frames.reserve(cage.numFaces());
-    for (int j = 0; j < cage.numFaces(); ++j)
-      frames.push_back(makeTriangleFrame(cage.vertices.row(cage.faces(j, 0)), cage.vertices.row(cage.faces(j, 1)),
-                                         cage.vertices.row(cage.faces(j, 2))));
-  }
+  const std::vector<TriangleFrame> frames = dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
   const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
-#if SOMICAGE_SIMD_PACKS
-  if (dim == 3 && !gauss && !options.scalarKernel)
-    return integrateSomiglianaPacks(cage, points, frames, options.threads, progress, sink);
-#endif
+  const auto eachRow = [columns, &sink](const CoordinateRowGroup& group) {  // a group's rows one point at a time
+    std::vector<double> row(static_cast<std::size_t>(columns));
+    for (int l = 0; l < group.count; ++l) {
+      for (int k = 0; k < columns; ++k) row[static_cast<std::size_t>(k)] = group.rows[k * group.lanes + l];
+      sink(group.first + l, row.data(), group.winding[l]);
+    }
+  };
+  if (integrateSomiglianaCoordinateGroups(cage, points, options, progress, eachRow)) return;
   auto rowBuffer = [columns] { return std::vector<double>(columns); };
   forEachPointInBlocks(numPoints, cage.numFaces(), options.threads, progress, rowBuffer,
                        [&](std::vector<double>& buffer, int p) {

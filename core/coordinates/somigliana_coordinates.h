@@ -82,6 +82,9 @@ void addVertexTerms(const TriangleIntegrals& integrals, const Eigen::Vector3d& n
                     const CoordinateLayout& layout, double* row);
 void addVertexTerms(const EdgeIntegrals& integrals, const int ends[2], const CoordinateLayout& layout, double* row);
 
+// The frames of a 3D cage's faces (makeTriangleFrame), one per face.
+std::vector<TriangleFrame> cageFrames(const Cage& cage);
+
 // The faces of a 3D cage as the row kernels take them (cuda/somigliana_row_portable.h), from its frames (one per face).
 std::vector<PortableFace> portableFaces(const Cage& cage, const std::vector<TriangleFrame>& frames);
 
@@ -95,6 +98,23 @@ SomiglianaCoordinates computeSomiglianaCoordinates(const Cage& cage, const Eigen
 // instead of storing them (so a deformer can build its own storage without a second copy of the coordinates).
 void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& options,
                                     const ProgressCallback& progress, const CoordinateRowSink& sink);
+
+// A group of points' rows where the CPU's pack kernel left them (somigliana_row_kernels.h): entry k of point first + l
+// (l < count) at rows[k * lanes + l], its winding number at winding[l]; lanes from count on repeat the last point.
+struct CoordinateRowGroup {
+  int first = 0, count = 0, lanes = 0;
+  const double* rows = nullptr;
+  const double* winding = nullptr;
+};
+// Called from worker threads, once per group; the buffers are reused after it returns.
+using CoordinateGroupSink = std::function<void(const CoordinateRowGroup& group)>;
+
+// integrateSomiglianaCoordinates for a writer that takes a group of points at once, as the kernel left them: a 3D
+// cage's closed form in SIMD packs. Elsewhere (2D, the Gauss rule, scalarKernel, a build without packs) it calls
+// nothing and returns false.
+bool integrateSomiglianaCoordinateGroups(const Cage& cage, const Eigen::MatrixXd& points,
+                                         const IntegrationOptions& options, const ProgressCallback& progress,
+                                         const CoordinateGroupSink& sink);
 
 // Partition-of-unity residual of each point: the largest entry of |sum_i T_i(x) - I| at nu = 0 (#P).
 Eigen::VectorXd partitionOfUnityResidual(const SomiglianaCoordinates& coords);

@@ -187,23 +187,31 @@ void fillCoordinateGradients(const Cage& cage, const Eigen::MatrixXd& points, co
   });
 }
 
+// A point's region from the per-vertex sums of its integrals (their partition-of-unity residual into `residual`) and
+// whether they are all finite; reliable integrals of a point inside are used, the rest follow the exterior rule.
+PointRegion classifyRow(const double* sums, double winding, bool finite, bool exactIntegrals, int dim,
+                        double& residual) {
+  residual = unityResidualOfSums(sums, dim);
+  // The Gauss baseline misses Eq. 9 by up to 1e-1 near the cage (docs/engine.md): only exact integrals are held
+  // to kUnreliableResidual.
+  const bool reliable = finite && (!exactIntegrals || residual <= kUnreliableResidual);
+  return classifyPoint(winding, reliable);
+}
+
 // Writes a point's row of C in the storage type: its integrals (already in the layout of C) and their per-vertex
 // sums where they are reliable, else the similarity row [0 | x | 1] (exterior_points.h). Returns the point's region
 // and its partition-of-unity residual. Rows are independent, so this runs on the integration's worker threads.
-// The one writer of C's rows, whichever integrator (CPU or device) produced them.
+// The one writer of C's rows, whichever integrator (CPU or device) produced them, but for whole packs of float rows
+// (writeFrameGroup).
 template <typename Scalar>
 PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::MatrixXd& points, int p,
                           const CoordinateLayout& layout, bool exactIntegrals, Scalar* row, double& residual) {
   const int dim = static_cast<int>(points.cols()), main = layout.integralColumns(), columns = layout.columns();
   double sums[vertexTermCount(3)] = {0};
   sumVertexTerms(layout, integrals, sums);
-  residual = unityResidualOfSums(sums, dim);
   // NaN and infinity survive a sum: one vectorised reduction checks the whole row (7x cheaper than allFinite).
   const bool finite = std::isfinite(Eigen::Map<const Eigen::ArrayXd>(integrals, main).sum());
-  // The Gauss baseline misses Eq. 9 by up to 1e-1 near the cage (docs/engine.md): only exact integrals are held
-  // to kUnreliableResidual.
-  const bool reliable = finite && (!exactIntegrals || residual <= kUnreliableResidual);
-  const PointRegion region = classifyPoint(winding, reliable);
+  const PointRegion region = classifyRow(sums, winding, finite, exactIntegrals, dim, residual);
   if (region != PointRegion::Inside) {
     writeSimilarityRow(points, p, row, columns);
     return region;
@@ -212,22 +220,84 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
   return region;
 }
 
+#if SOMICAGE_SIMD_PACKS
+// writeFrameGroup for a whole pack into float storage: the lanes' sums added in packs, then the lanes' rows, which are
+// contiguous, written in whole cache lines past the cache (the kernels' streamFloatRows, as the gradients' matrices):
+// C is written once and is larger than the caches.
+void streamFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& points, const CoordinateLayout& layout,
+                      bool exactIntegrals, const SomiglianaRowKernels& kernels, CoordinateMatrix<float>& C,
+                      PrecomputeDiagnostics& diagnostics) {
+  const int lanes = group.lanes;
+  double sums[kMaxGroupLanes][vertexTermCount(3)], all[kMaxGroupLanes], tails[kMaxGroupLanes * tailColumnCount(3)];
+  for (int t = 0; t < layout.vertexTerms; ++t) {  // in vertex order, as sumVertexTerms
+    double termSums[kMaxGroupLanes];
+    kernels.sumEntries(group.rows + layout.vertexColumn(0, t) * lanes, lanes, layout.numVertices, termSums);
+    for (int l = 0; l < lanes; ++l) sums[l][t] = termSums[l];
+  }
+  kernels.sumEntries(group.rows, lanes, layout.integralColumns(), all);  // NaN and infinity survive a sum
+  PointRegion regions[kMaxGroupLanes];
+  for (int l = 0; l < lanes; ++l) {
+    const int p = group.first + l;
+    diagnostics.winding(p) = group.winding[l];
+    regions[l] = classifyRow(sums[l], group.winding[l], std::isfinite(all[l]), exactIntegrals, 3,
+                             diagnostics.unityResidual(p));
+    diagnostics.regions[static_cast<std::size_t>(p)] = regions[l];
+    writeTailColumns(layout, sums[l], group.rows + layout.mainColumns() * lanes + l, lanes,
+                     tails + l * layout.tailColumns);
+  }
+  kernels.streamFloatRows(group.rows, lanes, layout.mainColumns(), tails, layout.columns(),
+                          C.row(group.first).data());
+  for (int l = 0; l < lanes; ++l)
+    if (regions[l] != PointRegion::Inside)
+      writeSimilarityRow(points, group.first + l, C.row(group.first + l).data(), layout.columns());
+}
+#endif
+
+// A group of points' rows (integrateSomiglianaCoordinateGroups) into C and the diagnostics, as writeFrameRow does
+// point by point: a whole pack into float storage streamed (above), else the rows one by one through writeRow.
+template <typename Scalar>
+void writeFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& points, const CoordinateLayout& layout,
+                     bool exactIntegrals, CoordinateMatrix<Scalar>& C, PrecomputeDiagnostics& diagnostics,
+                     const CoordinateRowSink& writeRow) {
+  const int lanes = group.lanes;
+#if SOMICAGE_SIMD_PACKS
+  const SomiglianaRowKernels& kernels = somiglianaRowKernels();
+  if constexpr (std::is_same_v<Scalar, float>) {
+    if (group.count == lanes && lanes == kernels.lanes && layout.tailColumns <= tailColumnCount(3))
+      return streamFrameGroup(group, points, layout, exactIntegrals, kernels, C, diagnostics);
+  }
+#endif
+  std::vector<double> row(static_cast<std::size_t>(layout.integralColumns()));
+  for (int l = 0; l < group.count; ++l) {
+    for (std::size_t k = 0; k < row.size(); ++k) row[k] = group.rows[k * lanes + l];
+    writeRow(group.first + l, row.data(), group.winding[l]);
+  }
+}
+
 // Fills C (#P + 2 #E rows) in its storage type: the points' rows, then for every exterior point its proxy's row
 // (the proxy's own integrals) and its anchor [0 | x_in | 1] (frame_evaluation.h). Rows go straight into C: no
 // second, double-precision copy of the coordinates; adding the exterior rows reallocates in place.
+// The CPU's rows come in groups (writeFrameGroup); a device's (`device`, when given) one point at a time.
 template <typename Scalar>
 void fillFrameCoordinates(const Cage& cage, const Eigen::MatrixXd& points, const IntegrationOptions& integration,
-                          const RowIntegrator& integrate, const ProgressCallback& progress,
+                          const RowIntegrator& device, const ProgressCallback& progress,
                           const CoordinateLayout& layout, CoordinateMatrix<Scalar>& C,
                           std::vector<ExteriorBlend>& blends, PrecomputeDiagnostics& diagnostics) {
   const int numPoints = static_cast<int>(points.rows()), columns = layout.columns();
   const bool exact = integration.rule == IntegrationOptions::Rule::ClosedForm;
+  const RowIntegrator integrate = device ? device : integrateSomiglianaCoordinates;
   C.resize(numPoints, columns);
-  integrate(cage, points, integration, progress, [&](int p, const double* row, double w) {
+  prefaultForWriting(C.data(), static_cast<std::size_t>(C.size()) * sizeof(Scalar), integration.threads);
+  const CoordinateRowSink writeRow = [&](int p, const double* row, double w) {
     diagnostics.winding(p) = w;
     diagnostics.regions[static_cast<std::size_t>(p)] =
         writeFrameRow(row, w, points, p, layout, exact, C.row(p).data(), diagnostics.unityResidual(p));
-  });
+  };
+  const auto writeGroup = [&](const CoordinateRowGroup& group) {
+    writeFrameGroup(group, points, layout, exact, C, diagnostics, writeRow);
+  };
+  if (device || !integrateSomiglianaCoordinateGroups(cage, points, integration, progress, writeGroup))
+    integrate(cage, points, integration, progress, writeRow);
   ExteriorPlan plan = planExteriorPoints(cage, points, diagnostics.regions, integration.threads);
   if (plan.blends.empty()) return;
   C.conservativeResize(numPoints + 2 * static_cast<Eigen::Index>(plan.blends.size()), columns);
@@ -416,7 +486,6 @@ std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const E
                                                    const PrecomputeOptions& options, const ProgressCallback& progress) {
   IntegrationOptions integration = options.integration;
   if (integration.threads == 0) integration.threads = options.threads;
-  const RowIntegrator integrate = options.rowIntegrator ? options.rowIntegrator : integrateSomiglianaCoordinates;
   const int numPoints = static_cast<int>(points.rows());
   const CoordinateLayout layout = somiglianaLayout(restCage.dim(), restCage.numVertices(), restCage.numFaces());
   PrecomputeDiagnostics diagnostics{Eigen::VectorXd(numPoints), Eigen::VectorXd(numPoints),
@@ -424,19 +493,20 @@ std::unique_ptr<CageDeformer> precomputeSomigliana(const Cage& restCage, const E
   FrameCoordinates frame;
   frame.mainColumns = layout.mainColumns();
   if (options.floatStorage)
-    fillFrameCoordinates(restCage, points, integration, integrate, progress, layout, frame.floats, frame.exteriorBlends,
-                         diagnostics);
+    fillFrameCoordinates(restCage, points, integration, options.rowIntegrator, progress, layout, frame.floats,
+                         frame.exteriorBlends, diagnostics);
   else
-    fillFrameCoordinates(restCage, points, integration, integrate, progress, layout, frame.doubles,
+    fillFrameCoordinates(restCage, points, integration, options.rowIntegrator, progress, layout, frame.doubles,
                          frame.exteriorBlends, diagnostics);
   return std::make_unique<SomiglianaDeformer>(restCage, std::move(frame), std::move(diagnostics), options.threads,
                                               integration);
 }
 
 // Rows go straight into C; the diagnostics keep a winding number, a residual and a region per point; each thread
-// has a row buffer of the main block.
+// has a group's rows (a pack buffer: kMaxGroupLanes rows of the integrals) and, where it writes them one by one, a row.
 std::size_t somiglianaWorkingBytes(const CoordinateLayout& layout, int, std::size_t points, bool, int threads) {
-  return static_cast<std::size_t>(threads) * static_cast<std::size_t>(layout.integralColumns()) * sizeof(double) +
+  return static_cast<std::size_t>(threads) * (kMaxGroupLanes + 1) * static_cast<std::size_t>(layout.integralColumns()) *
+             sizeof(double) +
          points * (2 * sizeof(double) + sizeof(PointRegion));
 }
 

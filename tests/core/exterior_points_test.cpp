@@ -207,6 +207,27 @@ TEST_P(ExteriorPointsTest, FloatStorageMatchesDouble) {
   EXPECT_LT((exact - rounded).rowwise().norm().maxCoeff(), 1e-5 * cageDiameter(posed));
 }
 
+// Float storage of a 3D cage's Somigliana rows is streamed in whole packs of points (somigliana_method.cpp:
+// streamFrameGroup) and the rest written point by point; double storage is written point by point (writeFrameRow).
+// The float C is the double C rounded, entry by entry, exterior rows and proxies included, with the same diagnostics:
+// 101 points, a third of them outside, so exterior lanes inside whole packs and a part pack at the end.
+TEST(ExteriorPoints, SomiglianaFloatRowsAreTheDoubleRowsRounded) {
+  const Cage cage = testCage(3);
+  const Eigen::MatrixXd points = test::randomBoxPoints(101, 3, -1.2, 1.2, 11);
+  PrecomputeOptions floats;
+  floats.floatStorage = true;
+  const auto exact = makeDeformer(methods::somigliana(), cage, points);
+  const auto rounded = makeDeformer(methods::somigliana(), cage, points, floats);
+  const FrameCoordinates &C = exact->frameCoordinates(), &F = rounded->frameCoordinates();
+  ASSERT_EQ(F.floats.rows(), C.doubles.rows());
+  ASSERT_EQ(F.floats.cols(), C.doubles.cols());
+  EXPECT_EQ((F.floats.array() != C.doubles.cast<float>().array()).count(), 0);
+  EXPECT_GT(exact->diagnostics().exteriorCount(), 10);
+  EXPECT_EQ(rounded->diagnostics().regions, exact->diagnostics().regions);
+  EXPECT_EQ(rounded->diagnostics().winding, exact->diagnostics().winding);
+  EXPECT_EQ(rounded->diagnostics().unityResidual, exact->diagnostics().unityResidual);
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, ExteriorPointsTest,
                          ::testing::Values(Case{"somigliana3d", 3, methods::somigliana()},
                                            Case{"somigliana2d", 2, methods::somigliana()},
