@@ -44,8 +44,8 @@ TEST(CliMemory, RefusesAPrecomputeThatDoesNotFit) {
 
 TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
   ScratchDir dir;
-  const MemoryLimit limit("50000");  // the ~8 kB needed fit in 85% of it, and take more than 10%
-  const RunResult r = runSomicage(cubeDeformArgs(dir.file("out.obj")));
+  const MemoryLimit limit("50000");  // the ~28 kB needed on two threads fit in 85% of it, and take more than 10%
+  const RunResult r = runSomicage(cubeDeformArgs(dir.file("out.obj"), {"--threads", "2"}));
   EXPECT_EQ(r.exitCode, 0) << r;
   // 5 points by 142 columns (8 vertices, 12 faces) in double; the rest depends on the thread count.
   EXPECT_NE(r.err.find("somicage deform: estimated memory: 6 kB of coordinates, "), std::string::npos) << r;
@@ -54,19 +54,21 @@ TEST(CliMemory, ABigPrecomputeAnnouncesItsEstimate) {
   EXPECT_TRUE(fs::exists(dir.file("out.obj")));
 }
 
-// analyze checks the deformation gradients too (3 more matrices the size of C): at a limit where deform's ~8 kB
-// fit, analyze's ~27 kB do not, and it is refused before its precompute with the same message.
+// analyze checks the deformation gradients too (3 more matrices the size of C): at a limit where deform's ~28 kB
+// fit, analyze's ~49 kB do not, and it is refused before its precompute with the same message. Two threads: each
+// thread's working memory (a pack of rows) is counted.
 TEST(CliMemory, AnalyzeCountsTheGradients) {
   ScratchDir dir;
-  const MemoryLimit limit("30000");
-  const RunResult deform = runSomicage(cubeDeformArgs(dir.file("out.obj")));
+  const MemoryLimit limit("40000");
+  const RunResult deform = runSomicage(cubeDeformArgs(dir.file("out.obj"), {"--threads", "2"}));
   EXPECT_EQ(deform.exitCode, 0) << deform;
   const RunResult analyze = runSomicage({"analyze", "--cage", dataFile("cube_cage.obj"), "--posed",
-                                         dataFile("cube_cage.obj"), "--mesh", dataFile("pyramid_mesh.obj")});
+                                         dataFile("cube_cage.obj"), "--mesh", dataFile("pyramid_mesh.obj"),
+                                         "--threads", "2"});
   EXPECT_EQ(analyze.exitCode, 2) << analyze;
   EXPECT_EQ(analyze.errLines(), 1) << analyze;
   for (const char* part : {"somicage analyze: ", "pyramid_mesh.obj: the coordinates of 5 points need",
-                           "but only 30 kB are free", "decimate the mesh"})
+                           "but only 40 kB are free", "decimate the mesh"})
     EXPECT_NE(analyze.err.find(part), std::string::npos) << part << "\n" << analyze;
   EXPECT_EQ(analyze.err.find("store the coordinates in float"), std::string::npos) << "no such option: " << analyze;
 }

@@ -123,12 +123,13 @@ TEST(StrictOption, CleanRunsStayZeroAndOtherCodesAreKept) {
 }
 
 // The memory estimate is printed when the precompute takes 10% of the free memory or more: with the free memory set
-// to 20 kB (SOMICAGE_MEMORY_LIMIT_BYTES) the pyramid's few coordinates pass the 10% but still fit.
+// to 40 kB (SOMICAGE_MEMORY_LIMIT_BYTES) the pyramid's few coordinates pass the 10% but still fit (28 kB in all on two
+// threads, each with a pack of rows).
 TEST(QuietOption, SilencesTheEstimateAndSummaryButKeepsWarnings) {
   ScratchDir dir;
-  ASSERT_EQ(::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "20000", 1), 0);
-  const RunResult loud = runSomicage(cubeDeformArgs(dir.file("out.obj")));
-  const RunResult quiet = runSomicage(cubeDeformArgs(dir.file("out.obj"), {"--quiet"}));
+  ASSERT_EQ(::setenv("SOMICAGE_MEMORY_LIMIT_BYTES", "40000", 1), 0);
+  const RunResult loud = runSomicage(cubeDeformArgs(dir.file("out.obj"), {"--threads", "2"}));
+  const RunResult quiet = runSomicage(cubeDeformArgs(dir.file("out.obj"), {"--quiet", "--threads", "2"}));
   ::unsetenv("SOMICAGE_MEMORY_LIMIT_BYTES");
   ASSERT_EQ(loud.exitCode, 0) << loud;
   EXPECT_NE(loud.err.find("somicage deform: estimated memory:"), std::string::npos) << loud;
