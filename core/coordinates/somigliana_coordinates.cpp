@@ -197,13 +197,8 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
                                     const ProgressCallback& progress, const CoordinateRowSink& sink) {
   const int dim = cage.dim();
   assertCageAndPoints(cage, points);
-
-  const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
-  const int numPoints = static_cast<int>(points.rows());
   const CoordinateLayout layout = somiglianaLayout(dim, cage.numVertices(), cage.numFaces());
   const int columns = layout.integralColumns();
-  const std::vector<TriangleFrame> frames = dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
-  const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
   const auto eachRow = [columns, &sink](const CoordinateRowGroup& group) {  // a group's rows one point at a time
     std::vector<double> row(static_cast<std::size_t>(columns));
     for (int l = 0; l < group.count; ++l) {
@@ -212,6 +207,11 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
     }
   };
   if (integrateSomiglianaCoordinateGroups(cage, points, options, progress, eachRow)) return;
+
+  const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);
+  const int numPoints = static_cast<int>(points.rows());
+  const std::vector<TriangleFrame> frames = dim == 3 ? cageFrames(cage) : std::vector<TriangleFrame>();
+  const bool gauss = options.rule == IntegrationOptions::Rule::Gauss;
   auto rowBuffer = [columns] { return std::vector<double>(columns); };
   forEachPointInBlocks(numPoints, cage.numFaces(), options.threads, progress, rowBuffer,
                        [&](std::vector<double>& buffer, int p) {

@@ -106,6 +106,16 @@ const double* writeMainColumns(const CoordinateLayout& layout, const GradientRow
 }
 
 #if SOMICAGE_SIMD_PACKS
+// sumVertexTerms for each lane of a pack's rows (entry k of lane l at in[k * stride + l]), added by the kernel copy.
+void sumVertexTermsOfPack(const SomiglianaRowKernels& kernels, const CoordinateLayout& layout, const double* in,
+                          std::ptrdiff_t stride, double (*sums)[vertexTermCount(3)]) {
+  for (int t = 0; t < layout.vertexTerms; ++t) {  // in vertex order, as sumVertexTerms
+    double termSums[kMaxGroupLanes];
+    kernels.sumEntries(in + layout.vertexColumn(0, t) * stride, stride, layout.numVertices, termSums);
+    for (int l = 0; l < kernels.lanes; ++l) sums[l][t] = termSums[l];
+  }
+}
+
 // A whole pack's gradient rows into float matrices, which are three times the size of C and written once: the
 // lanes' per-vertex sums and tails made here in double, every row then streamed out by the kernels' writer
 // (somigliana_row_kernels.h: whole cache lines without reading them first; twice as fast as ordinary stores).
@@ -118,11 +128,7 @@ void streamGradientGroup(const CoordinateLayout& layout, const GradientRowGroup&
   for (std::size_t a = 0; a < gradients.size(); ++a) {
     const double* in = group.rows[a];
     double sums[kMaxGroupLanes][vertexTermCount(3)];
-    for (int t = 0; t < layout.vertexTerms; ++t) {  // in vertex order, as sumVertexTerms
-      double termSums[kMaxGroupLanes];
-      kernels.sumEntries(in + layout.vertexColumn(0, t) * stride, stride, layout.numVertices, termSums);
-      for (int l = 0; l < lanes; ++l) sums[l][t] = termSums[l];
-    }
+    sumVertexTermsOfPack(kernels, layout, in, stride, sums);
     for (int l = 0; l < lanes; ++l)
       writeTailColumns(layout, sums[l], in + layout.mainColumns() * stride + l, stride, tails + l * layout.tailColumns);
     kernels.streamFloatRows(in, stride, layout.mainColumns(), tails, layout.columns(),
@@ -229,11 +235,7 @@ void streamFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& po
                       PrecomputeDiagnostics& diagnostics) {
   const int lanes = group.lanes;
   double sums[kMaxGroupLanes][vertexTermCount(3)], all[kMaxGroupLanes], tails[kMaxGroupLanes * tailColumnCount(3)];
-  for (int t = 0; t < layout.vertexTerms; ++t) {  // in vertex order, as sumVertexTerms
-    double termSums[kMaxGroupLanes];
-    kernels.sumEntries(group.rows + layout.vertexColumn(0, t) * lanes, lanes, layout.numVertices, termSums);
-    for (int l = 0; l < lanes; ++l) sums[l][t] = termSums[l];
-  }
+  sumVertexTermsOfPack(kernels, layout, group.rows, lanes, sums);
   kernels.sumEntries(group.rows, lanes, layout.integralColumns(), all);  // NaN and infinity survive a sum
   PointRegion regions[kMaxGroupLanes];
   for (int l = 0; l < lanes; ++l) {
