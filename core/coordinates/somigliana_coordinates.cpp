@@ -179,6 +179,14 @@ void integrateSomiglianaPacks(const Cage& cage, const Eigen::MatrixXd& points, c
 
 }  // namespace
 
+void forEachRowOfGroup(const CoordinateRowGroup& group, int columns, const CoordinateRowSink& sink) {
+  std::vector<double> row(static_cast<std::size_t>(columns));
+  for (int l = 0; l < group.count; ++l) {
+    for (int k = 0; k < columns; ++k) row[static_cast<std::size_t>(k)] = group.rows[k * group.lanes + l];
+    sink(group.first + l, row.data(), group.winding[l]);
+  }
+}
+
 bool integrateSomiglianaCoordinateGroups(const Cage& cage, const Eigen::MatrixXd& points,
                                          const IntegrationOptions& options, const ProgressCallback& progress,
                                          const CoordinateGroupSink& sink) {
@@ -199,13 +207,7 @@ void integrateSomiglianaCoordinates(const Cage& cage, const Eigen::MatrixXd& poi
   assertCageAndPoints(cage, points);
   const CoordinateLayout layout = somiglianaLayout(dim, cage.numVertices(), cage.numFaces());
   const int columns = layout.integralColumns();
-  const auto eachRow = [columns, &sink](const CoordinateRowGroup& group) {  // a group's rows one point at a time
-    std::vector<double> row(static_cast<std::size_t>(columns));
-    for (int l = 0; l < group.count; ++l) {
-      for (int k = 0; k < columns; ++k) row[static_cast<std::size_t>(k)] = group.rows[k * group.lanes + l];
-      sink(group.first + l, row.data(), group.winding[l]);
-    }
-  };
+  const auto eachRow = [columns, &sink](const CoordinateRowGroup& group) { forEachRowOfGroup(group, columns, sink); };
   if (integrateSomiglianaCoordinateGroups(cage, points, options, progress, eachRow)) return;
 
   const Eigen::MatrixXd normals = faceNormals(cage, cage.vertices);

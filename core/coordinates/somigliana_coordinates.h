@@ -109,6 +109,10 @@ struct CoordinateRowGroup {
 // Called from worker threads, once per group; the buffers are reused after it returns.
 using CoordinateGroupSink = std::function<void(const CoordinateRowGroup& group)>;
 
+// Hands a group's rows to a row sink one point at a time (each row contiguous: a copy of the group's), for writers
+// that take rows one by one.
+void forEachRowOfGroup(const CoordinateRowGroup& group, int columns, const CoordinateRowSink& sink);
+
 // integrateSomiglianaCoordinates for a writer that takes a group of points at once, as the kernel left them: a 3D
 // cage's closed form in SIMD packs. Elsewhere (2D, the Gauss rule, scalarKernel, a build without packs) it calls
 // nothing and returns false.

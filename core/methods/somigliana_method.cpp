@@ -116,24 +116,27 @@ void sumVertexTermsOfPack(const SomiglianaRowKernels& kernels, const CoordinateL
   }
 }
 
-// A whole pack's gradient rows into float matrices, which are three times the size of C and written once: the
-// lanes' per-vertex sums and tails made here in double, every row then streamed out by the kernels' writer
-// (somigliana_row_kernels.h: whole cache lines without reading them first; twice as fast as ordinary stores).
+// A whole pack's rows in the layout of C (entry k of lane l at in[k * stride + l], the lanes' per-vertex sums in
+// `sums`) as the pack's consecutive float rows from `out`: the tails made here in double, every row then streamed out
+// by the kernels' writer (somigliana_row_kernels.h: whole cache lines without reading them first).
+void streamPackRows(const SomiglianaRowKernels& kernels, const CoordinateLayout& layout, const double* in,
+                    std::ptrdiff_t stride, const double (*sums)[vertexTermCount(3)], float* out) {
+  double tails[kMaxGroupLanes * tailColumnCount(3)];  // the packs' rows are 3D ones
+  for (int l = 0; l < kernels.lanes; ++l)
+    writeTailColumns(layout, sums[l], in + layout.mainColumns() * stride + l, stride, tails + l * layout.tailColumns);
+  kernels.streamFloatRows(in, stride, layout.mainColumns(), tails, layout.columns(), out);
+}
+
+// A whole pack's gradient rows into float matrices, which are three times the size of C and written once
+// (streamPackRows).
 void streamGradientGroup(const CoordinateLayout& layout, const GradientRowGroup& group,
                          const std::vector<PointRegion>& regions, std::vector<CoordinateMatrix<float>>& gradients) {
   const SomiglianaRowKernels& kernels = somiglianaRowKernels();
-  const int lanes = group.count;
-  const std::ptrdiff_t stride = group.entryStride;
-  double tails[kMaxGroupLanes * tailColumnCount(3)];  // the packs' rows are 3D ones
   for (std::size_t a = 0; a < gradients.size(); ++a) {
-    const double* in = group.rows[a];
     double sums[kMaxGroupLanes][vertexTermCount(3)];
-    sumVertexTermsOfPack(kernels, layout, in, stride, sums);
-    for (int l = 0; l < lanes; ++l)
-      writeTailColumns(layout, sums[l], in + layout.mainColumns() * stride + l, stride, tails + l * layout.tailColumns);
-    kernels.streamFloatRows(in, stride, layout.mainColumns(), tails, layout.columns(),
-                            gradients[a].row(group.first).data());
-    for (int l = 0; l < lanes; ++l)
+    sumVertexTermsOfPack(kernels, layout, group.rows[a], group.entryStride, sums);
+    streamPackRows(kernels, layout, group.rows[a], group.entryStride, sums, gradients[a].row(group.first).data());
+    for (int l = 0; l < group.count; ++l)
       if (regions[static_cast<std::size_t>(group.first + l)] != PointRegion::Inside)
         gradients[a].row(group.first + l).setZero();
   }
@@ -227,14 +230,13 @@ PointRegion writeFrameRow(const double* integrals, double winding, const Eigen::
 }
 
 #if SOMICAGE_SIMD_PACKS
-// writeFrameGroup for a whole pack into float storage: the lanes' sums added in packs, then the lanes' rows, which are
-// contiguous, written in whole cache lines past the cache (the kernels' streamFloatRows, as the gradients' matrices):
-// C is written once and is larger than the caches.
+// writeFrameGroup for a whole pack into float storage: the lanes classified from their sums (added in packs), then
+// their rows streamed (streamPackRows): C is written once and is larger than the caches.
 void streamFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& points, const CoordinateLayout& layout,
                       bool exactIntegrals, const SomiglianaRowKernels& kernels, CoordinateMatrix<float>& C,
                       PrecomputeDiagnostics& diagnostics) {
   const int lanes = group.lanes;
-  double sums[kMaxGroupLanes][vertexTermCount(3)], all[kMaxGroupLanes], tails[kMaxGroupLanes * tailColumnCount(3)];
+  double sums[kMaxGroupLanes][vertexTermCount(3)], all[kMaxGroupLanes];
   sumVertexTermsOfPack(kernels, layout, group.rows, lanes, sums);
   kernels.sumEntries(group.rows, lanes, layout.integralColumns(), all);  // NaN and infinity survive a sum
   PointRegion regions[kMaxGroupLanes];
@@ -244,11 +246,8 @@ void streamFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& po
     regions[l] = classifyRow(sums[l], group.winding[l], std::isfinite(all[l]), exactIntegrals, 3,
                              diagnostics.unityResidual(p));
     diagnostics.regions[static_cast<std::size_t>(p)] = regions[l];
-    writeTailColumns(layout, sums[l], group.rows + layout.mainColumns() * lanes + l, lanes,
-                     tails + l * layout.tailColumns);
   }
-  kernels.streamFloatRows(group.rows, lanes, layout.mainColumns(), tails, layout.columns(),
-                          C.row(group.first).data());
+  streamPackRows(kernels, layout, group.rows, lanes, sums, C.row(group.first).data());
   for (int l = 0; l < lanes; ++l)
     if (regions[l] != PointRegion::Inside)
       writeSimilarityRow(points, group.first + l, C.row(group.first + l).data(), layout.columns());
@@ -261,19 +260,14 @@ template <typename Scalar>
 void writeFrameGroup(const CoordinateRowGroup& group, const Eigen::MatrixXd& points, const CoordinateLayout& layout,
                      bool exactIntegrals, CoordinateMatrix<Scalar>& C, PrecomputeDiagnostics& diagnostics,
                      const CoordinateRowSink& writeRow) {
-  const int lanes = group.lanes;
 #if SOMICAGE_SIMD_PACKS
   const SomiglianaRowKernels& kernels = somiglianaRowKernels();
   if constexpr (std::is_same_v<Scalar, float>) {
-    if (group.count == lanes && lanes == kernels.lanes && layout.tailColumns <= tailColumnCount(3))
+    if (group.count == group.lanes && group.lanes == kernels.lanes && layout.tailColumns <= tailColumnCount(3))
       return streamFrameGroup(group, points, layout, exactIntegrals, kernels, C, diagnostics);
   }
 #endif
-  std::vector<double> row(static_cast<std::size_t>(layout.integralColumns()));
-  for (int l = 0; l < group.count; ++l) {
-    for (std::size_t k = 0; k < row.size(); ++k) row[k] = group.rows[k * lanes + l];
-    writeRow(group.first + l, row.data(), group.winding[l]);
-  }
+  forEachRowOfGroup(group, layout.integralColumns(), writeRow);
 }
 
 // Fills C (#P + 2 #E rows) in its storage type: the points' rows, then for every exterior point its proxy's row
